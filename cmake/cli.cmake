@@ -1,0 +1,1 @@
+# riser_sim_cli (see src/cli)

@@ -1,0 +1,28 @@
+# ROS-free core: Eigen + yaml-cpp only.
+add_library(riser_sim_core
+  src/core/line_properties.cpp
+  src/core/model.cpp
+  src/core/top_motion.cpp
+  src/core/forces/gravity.cpp
+  src/core/forces/axial_spring.cpp
+  src/core/forces/bending_spring.cpp
+  src/core/absolute_formulation.cpp
+  src/core/integrator.cpp
+  src/core/simulator.cpp
+  src/core/statics.cpp
+  src/core/scene.cpp
+  src/core/scene_yaml.cpp
+)
+target_include_directories(riser_sim_core PUBLIC include ${EIGEN3_INCLUDE_DIR})
+target_link_libraries(riser_sim_core PUBLIC yaml-cpp)
+target_compile_options(riser_sim_core PRIVATE -O3)
+
+if(CATKIN_ENABLE_TESTING)
+  file(GLOB RISER_SIM_CORE_TESTS ${CMAKE_CURRENT_SOURCE_DIR}/test/core/test_*.cpp)
+  foreach(test_src ${RISER_SIM_CORE_TESTS})
+    get_filename_component(test_name ${test_src} NAME_WE)
+    catkin_add_gtest(${test_name} ${test_src} WORKING_DIRECTORY ${CMAKE_CURRENT_SOURCE_DIR})
+    target_link_libraries(${test_name} riser_sim_core)
+    target_compile_definitions(${test_name} PRIVATE RISER_SIM_SOURCE_DIR="${CMAKE_CURRENT_SOURCE_DIR}")
+  endforeach()
+endif()

@@ -1,0 +1,10 @@
+# Package messages and services (filled in by the node).
+file(GLOB RISER_SIM_MSGS RELATIVE ${CMAKE_CURRENT_SOURCE_DIR}/msg ${CMAKE_CURRENT_SOURCE_DIR}/msg/*.msg)
+file(GLOB RISER_SIM_SRVS RELATIVE ${CMAKE_CURRENT_SOURCE_DIR}/srv ${CMAKE_CURRENT_SOURCE_DIR}/srv/*.srv)
+if(RISER_SIM_MSGS)
+  add_message_files(FILES ${RISER_SIM_MSGS})
+endif()
+if(RISER_SIM_SRVS)
+  add_service_files(FILES ${RISER_SIM_SRVS})
+endif()
+generate_messages(DEPENDENCIES std_msgs geometry_msgs)

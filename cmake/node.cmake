@@ -1,0 +1,1 @@
+# riser_sim_node (see src/node)

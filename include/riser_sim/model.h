@@ -1,0 +1,84 @@
+// Immutable RFEM discretisation (paper section 2): n segments, n+1 rigid finite elements (rfe),
+// rfe 0 and rfe n half-length, each rfe split into parts (1) and (2) by a longitudinal spring.
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "riser_sim/line_properties.h"
+#include "riser_sim/types.h"
+
+namespace riser_sim {
+
+class ForceTerm;
+
+// One rigid part of an rfe: centre of mass at distance s0 + kappa*Δ from A_i along the rfe.
+struct RigidPart {
+  double mass = 0.0;     // [kg]
+  double inertia = 0.0;  // about its own centre of mass [kg m^2]
+  double s0 = 0.0;       // [m]
+  double kappa = 0.0;    // 0: part (1) moves with A_i; 1: part (2), beyond the spring
+};
+
+struct Rfe {
+  double length = 0.0;       // l_i, unstretched [m]
+  double length1 = 0.0;      // l_i^(1) [m]
+  double length2 = 0.0;      // l_i^(2) [m]
+  double axial_stiffness = 0.0;  // c_i^l = EA / l_i [N/m]
+  double axial_damping = 0.0;    // c_EA / l_i [N s/m]
+  double s_begin = 0.0;          // arc length of A_i from the top, unstretched [m]
+  RigidPart part[3];             // parts (1), (2) and, on rfe n only, the end mass
+  int num_parts = 2;
+};
+
+enum class BottomBoundary { kFree, kPinned };
+
+struct ModelOptions {
+  bool bending = true;            // bending springs c = EI/d between neighbouring rfes
+  bool axial_flexibility = true;  // false: inextensible line, Δ_i ≡ 0
+};
+
+class Model {
+ public:
+  Model(double length, int segments, const LineProperties& props, const ModelOptions& options, double end_mass,
+        double gravity);
+  Model(const Model&) = delete;
+  Model& operator=(const Model&) = delete;
+
+  int segments() const { return n_; }           // n
+  int bodies() const { return n_ + 1; }         // rfes 0..n
+  int dofs() const { return kDofPerBody * (n_ + 1); }
+  double length() const { return length_; }      // L [m]
+  double segmentLength() const { return d_; }    // d = L/n [m]
+  const Rfe& rfe(int i) const { return rfe_[i]; }
+  const LineProperties& line() const { return props_; }
+  const ModelOptions& options() const { return options_; }
+  double endMass() const { return end_mass_; }   // m_s [kg]
+  double gravity() const { return gravity_; }    // g [m/s^2], acting along -y
+  double bendingStiffness() const { return options_.bending ? props_.EI / d_ : 0.0; }  // c^b [N m/rad]
+  double bendingDamping() const { return options_.bending ? props_.bending_damping / d_ : 0.0; }
+  double totalMass() const;  // line + end mass [kg]
+
+  // Bottom end condition (pinned: the end of rfe n is held at a fixed point).
+  BottomBoundary bottom() const { return bottom_; }
+  const Vec2& bottomPoint() const { return bottom_point_; }
+  void setBottom(BottomBoundary b, const Vec2& p) { bottom_ = b; bottom_point_ = p; }
+
+  // Force terms the scene asked for; only these are evaluated.
+  void addTerm(std::unique_ptr<ForceTerm> term);
+  const std::vector<std::unique_ptr<ForceTerm>>& terms() const { return terms_; }
+  const ForceTerm* findTerm(const std::string& name) const;
+
+ private:
+  int n_;
+  double length_, d_;
+  LineProperties props_;
+  ModelOptions options_;
+  double end_mass_, gravity_;
+  std::vector<Rfe> rfe_;
+  BottomBoundary bottom_ = BottomBoundary::kFree;
+  Vec2 bottom_point_ = Vec2::Zero();
+  std::vector<std::unique_ptr<ForceTerm>> terms_;
+};
+
+}  // namespace riser_sim

@@ -1,0 +1,56 @@
+// A scene: everything a run needs, as plain data (loaded from YAML by scene_yaml.h, or built in code).
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "riser_sim/line_properties.h"
+#include "riser_sim/model.h"
+#include "riser_sim/simulator.h"
+#include "riser_sim/statics.h"
+#include "riser_sim/top_motion.h"
+
+namespace riser_sim {
+
+struct TopMotionSpec {
+  std::string type = "fixed";  // fixed | sinusoid | velocity_profile | external
+  Vec2 position = Vec2::Zero();   // top.position: A_0 at t = 0 (centre of a sinusoid) [m]
+  Vec2 amplitude = Vec2::Zero();  // sinusoid [m]
+  double period = 1.0;            // sinusoid [s]
+  double phase = 0.0;             // sinusoid [rad]
+  std::vector<VelocityProfileMotion::Knot> knots;  // velocity_profile: (t [s], v [m/s])
+};
+
+struct InitialSpec {
+  std::string type = "hanging";  // hanging | displaced | between_points | straight
+  double end_dx = 0.0;           // displaced: x_end - x_top [m]
+  double angle = -M_PI / 2;      // straight: φ [rad] (-π/2 = hanging straight down)
+  double tolerance = 1e-9;       // statics: residual relative to the line's weight
+};
+
+struct Scene {
+  std::string name;
+  double length = 0.0;   // line.length [m]
+  int elements = 0;      // line.elements: n segments (n + 1 rfes)
+  LineProperties line;
+  ModelOptions options;
+  double end_mass = 0.0;  // line.end_mass [kg]
+  double gravity = 9.81;  // environment.gravity [m/s^2]
+  TopMotionSpec top;
+  BottomBoundary bottom = BottomBoundary::kFree;
+  Vec2 bottom_point = Vec2::Zero();
+  InitialSpec initial;
+  SolverSettings solver;
+  double duration = 20.0;  // run.duration [s] (CLI default)
+};
+
+std::shared_ptr<Model> buildModel(const Scene& scene);
+std::unique_ptr<TopMotion> buildTopMotion(const TopMotionSpec& spec);
+// Static problem for the scene's initial state (top at the motion's position at t = 0).
+StaticsProblem staticsProblem(const Scene& scene);
+
+// Model, top motion, static initial state: ready to step. Throws std::runtime_error when the
+// statics do not converge.
+std::unique_ptr<Simulator> buildSimulator(const Scene& scene, StaticsResult* statics = nullptr);
+
+}  // namespace riser_sim

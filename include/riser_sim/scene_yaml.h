@@ -1,0 +1,31 @@
+// Scene files (YAML): the same format for the CLI and for the node's private parameters.
+// Every error names the offending key path (e.g. "line.outer_diameter").
+#pragma once
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <yaml-cpp/yaml.h>
+
+#include "riser_sim/scene.h"
+
+namespace riser_sim {
+
+class SceneError : public std::runtime_error {
+ public:
+  SceneError(const std::string& key, const std::string& what)
+      : std::runtime_error(key.empty() ? what : key + ": " + what), key_(key) {}
+  const std::string& key() const { return key_; }
+
+ private:
+  std::string key_;
+};
+
+// Parses and validates a scene. Throws SceneError.
+Scene parseScene(const YAML::Node& root);
+// Reads FILE, applies "key.path=value" overrides (value parsed as YAML), parses. Throws SceneError.
+Scene loadSceneFile(const std::string& path, const std::vector<std::string>& overrides = {});
+// Applies one "key.path=value" override to a YAML tree. Throws SceneError.
+void applyOverride(YAML::Node& root, const std::string& assignment);
+
+}  // namespace riser_sim

@@ -1,0 +1,18 @@
+#!/usr/bin/env bash
+# Installs the Debian packages riser_sim needs (ROS 1 from Debian itself); skips when all are present.
+set -euo pipefail
+PKGS=(build-essential cmake catkin ros-core-dev libroscpp-dev librostest-dev python3-rostest rosbash
+  libtf2-ros-dev libvisualization-msgs-dev libgeometry-msgs-dev libnav-msgs-dev libstd-srvs-dev
+  ros-std-srvs libdiagnostic-msgs-dev ros-diagnostic-msgs ros-message-generation ros-message-runtime
+  libeigen3-dev libyaml-cpp-dev libgtest-dev googletest python3-rosbag python3-matplotlib python3-numpy
+  python3-yaml)
+if [ "${RISER_SIM_GUI_DEPS:-0}" = 1 ]; then PKGS+=(rviz xvfb xauth ffmpeg); fi
+missing=()
+for p in "${PKGS[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then exit 0; fi
+echo "installing: ${missing[*]}"
+SUDO=""; [ "$(id -u)" = 0 ] || SUDO=sudo
+$SUDO apt-get update -qq
+DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y --no-install-recommends "${missing[@]}"
