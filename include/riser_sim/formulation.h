@@ -30,6 +30,8 @@ class Formulation {
   virtual const Reactions& reactions() const = 0;
   // Largest violation of the joint constraints for state y [m].
   virtual double constraintError(const VecX& y, const PointMotion& top) const = 0;
+  // Kinematics of the last derivative() call.
+  virtual const Kinematics& lastKinematics() const = 0;
   // Kinetic energy of the line (with every term's inertia) for state y [J].
   virtual double kineticEnergy(double t, const VecX& y) = 0;
 };

@@ -1,0 +1,16 @@
+// Longitudinal spring-damper inside each rfe (paper eq. 3, 5.2 with its missing ½ restored):
+// V = ½ c^l Δ², force N = c^l Δ + c_d Δ' acting on Δ.
+#pragma once
+#include "riser_sim/force_term.h"
+
+namespace riser_sim {
+
+class AxialSpring : public ForceTerm {
+ public:
+  std::string name() const override { return "axial_spring"; }
+  void addForces(const Model& model, const Kinematics& kin, double t, VecX& Q) const override;
+  double potentialEnergy(const Model& model, const Kinematics& kin) const override;
+  double power(const Model& model, const Kinematics& kin, double t) const override;
+};
+
+}  // namespace riser_sim

@@ -1,0 +1,31 @@
+#include "riser_sim/integrator.h"
+
+#include <stdexcept>
+
+namespace riser_sim {
+
+void Rk4::reset(int n) {
+  k1_.setZero(n);
+  k2_.setZero(n);
+  k3_.setZero(n);
+  k4_.setZero(n);
+  tmp_.setZero(n);
+}
+
+void Rk4::step(OdeSystem& sys, double t, VecX& y, double h) {
+  sys.rhs(t, y, k1_);
+  tmp_ = y + 0.5 * h * k1_;
+  sys.rhs(t + 0.5 * h, tmp_, k2_);
+  tmp_ = y + 0.5 * h * k2_;
+  sys.rhs(t + 0.5 * h, tmp_, k3_);
+  tmp_ = y + h * k3_;
+  sys.rhs(t + h, tmp_, k4_);
+  y += (h / 6.0) * (k1_ + 2.0 * k2_ + 2.0 * k3_ + k4_);
+}
+
+std::unique_ptr<Integrator> makeIntegrator(const std::string& name) {
+  if (name == "rk4") return std::make_unique<Rk4>();
+  throw std::invalid_argument("solver.integrator: unknown integrator '" + name + "' (accepted: rk4)");
+}
+
+}  // namespace riser_sim

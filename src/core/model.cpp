@@ -1,0 +1,49 @@
+#include "riser_sim/model.h"
+
+#include <stdexcept>
+
+#include "riser_sim/force_term.h"
+
+namespace riser_sim {
+
+Model::Model(double length, int segments, const LineProperties& props, const ModelOptions& options,
+             double end_mass, double gravity)
+    : n_(segments), length_(length), d_(length / segments), props_(props), options_(options),
+      end_mass_(end_mass), gravity_(gravity) {
+  if (segments < 1) throw std::invalid_argument("line.elements: must be >= 1");
+  if (!(length > 0.0)) throw std::invalid_argument("line.length: must be > 0");
+  if (!(props.mass_per_length > 0.0)) throw std::invalid_argument("line.mass_per_length: must be > 0");
+  rfe_.resize(n_ + 1);
+  double s = 0.0;
+  for (int i = 0; i <= n_; ++i) {
+    Rfe& r = rfe_[i];
+    r.length = (i == 0 || i == n_) ? 0.5 * d_ : d_;  // half-length end elements (paper Fig. 1)
+    r.length1 = 0.5 * r.length;
+    r.length2 = r.length - r.length1;
+    r.axial_stiffness = props.EA / r.length;  // paper eq. 3
+    r.axial_damping = props.axial_damping / r.length;
+    r.s_begin = s;
+    s += r.length;
+    const double m1 = props.mass_per_length * r.length1, m2 = props.mass_per_length * r.length2;
+    // Thin-rod parts: centre of part (1) at l1/2; part (2) at l1 + Δ + l2/2 (paper eq. 16).
+    r.part[0] = RigidPart{m1, m1 * r.length1 * r.length1 / 12.0, 0.5 * r.length1, 0.0};
+    r.part[1] = RigidPart{m2, m2 * r.length2 * r.length2 / 12.0, r.length1 + 0.5 * r.length2, 1.0};
+    r.num_parts = 2;
+    if (i == n_ && end_mass > 0.0) {
+      r.part[2] = RigidPart{end_mass, 0.0, r.length, 1.0};  // point mass m_s at the free end
+      r.num_parts = 3;
+    }
+  }
+}
+
+double Model::totalMass() const { return props_.mass_per_length * length_ + end_mass_; }
+
+void Model::addTerm(std::unique_ptr<ForceTerm> term) { terms_.push_back(std::move(term)); }
+
+const ForceTerm* Model::findTerm(const std::string& name) const {
+  for (const auto& t : terms_)
+    if (t->name() == name) return t.get();
+  return nullptr;
+}
+
+}  // namespace riser_sim

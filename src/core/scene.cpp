@@ -1,0 +1,69 @@
+#include "riser_sim/scene.h"
+
+#include <stdexcept>
+
+#include "riser_sim/forces/axial_spring.h"
+#include "riser_sim/forces/bending_spring.h"
+#include "riser_sim/forces/gravity.h"
+
+namespace riser_sim {
+
+std::shared_ptr<Model> buildModel(const Scene& scene) {
+  auto model = std::make_shared<Model>(scene.length, scene.elements, scene.line, scene.options, scene.end_mass,
+                                       scene.gravity);
+  model->setBottom(scene.bottom, scene.bottom_point);
+  // Only the terms the scene needs are built (a term that is off costs nothing).
+  if (scene.gravity != 0.0) model->addTerm(std::make_unique<Gravity>());
+  if (scene.options.axial_flexibility) model->addTerm(std::make_unique<AxialSpring>());
+  if (scene.options.bending && (scene.line.EI > 0.0 || scene.line.bending_damping > 0.0))
+    model->addTerm(std::make_unique<BendingSpring>());
+  return model;
+}
+
+std::unique_ptr<TopMotion> buildTopMotion(const TopMotionSpec& spec) {
+  if (spec.type == "fixed" || spec.type == "external") return std::make_unique<FixedMotion>(spec.position);
+  if (spec.type == "sinusoid") {
+    if (!(spec.period > 0.0)) throw std::invalid_argument("top.motion.period: must be > 0");
+    return std::make_unique<SinusoidMotion>(spec.position, spec.amplitude, spec.period, spec.phase);
+  }
+  if (spec.type == "velocity_profile") return std::make_unique<VelocityProfileMotion>(spec.position, spec.knots);
+  throw std::invalid_argument("top.motion.type: unknown motion '" + spec.type +
+                              "' (accepted: fixed, sinusoid, velocity_profile, external)");
+}
+
+StaticsProblem staticsProblem(const Scene& scene) {
+  StaticsProblem p;
+  p.top = buildTopMotion(scene.top)->at(0.0).p;
+  p.tolerance = scene.initial.tolerance;
+  if (scene.initial.type == "displaced") {
+    p.kind = StaticsProblem::Kind::kEndDisplaced;
+    p.end_dx = scene.initial.end_dx;
+  } else if (scene.initial.type == "between_points") {
+    p.kind = StaticsProblem::Kind::kBetweenPoints;
+    p.end_point = scene.bottom_point;
+  } else {
+    p.kind = StaticsProblem::Kind::kHanging;
+  }
+  return p;
+}
+
+std::unique_ptr<Simulator> buildSimulator(const Scene& scene, StaticsResult* statics) {
+  std::shared_ptr<Model> model = buildModel(scene);
+  auto sim = std::make_unique<Simulator>(model, buildTopMotion(scene.top), scene.solver);
+  const StaticsProblem problem = staticsProblem(scene);
+  StaticsResult st;
+  if (scene.initial.type == "straight") {
+    st.converged = true;
+    st.kin = straightLine(*model, problem.top, scene.initial.angle);
+    st.message = "straight initial state (not an equilibrium)";
+  } else {
+    st = solveStatics(*model, problem, 0.0);
+    if (!st.converged) throw std::runtime_error("initial: " + st.message);
+  }
+  // A pinned bottom that the statics did not place is held where the initial state puts it.
+  sim->setInitialState(st.kin, 0.0);
+  if (statics) *statics = st;
+  return sim;
+}
+
+}  // namespace riser_sim

@@ -1,0 +1,144 @@
+#include "riser_sim/simulator.h"
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include "riser_sim/absolute_formulation.h"
+#include "riser_sim/force_term.h"
+
+namespace riser_sim {
+
+namespace {
+std::unique_ptr<Formulation> makeFormulation(const Model& model, const SolverSettings& s) {
+  if (s.formulation == "absolute") return std::make_unique<AbsoluteFormulation>(model, s.stabilization);
+  throw std::invalid_argument("solver.formulation: unknown formulation '" + s.formulation +
+                              "' (accepted: absolute)");
+}
+}  // namespace
+
+Simulator::Simulator(std::shared_ptr<const Model> model, std::unique_ptr<TopMotion> top,
+                     const SolverSettings& settings)
+    : model_(std::move(model)), top_(std::move(top)), settings_(settings) {
+  if (!(settings_.dt > 0.0) || !std::isfinite(settings_.dt)) throw std::invalid_argument("solver.dt: must be > 0");
+  formulation_ = makeFormulation(*model_, settings_);
+  integrator_ = makeIntegrator(settings_.integrator);
+  const int n = 2 * formulation_->positionSize() + 1;
+  y_.setZero(n);
+  dy_.setZero(n);
+  integrator_->reset(n);
+  kin_.resize(model_->bodies());
+  const int nb = model_->bodies();
+  out_.points.resize(nb + 1);
+  out_.angles.resize(nb);
+  out_.elongations.resize(nb);
+  out_.axial_force.resize(nb);
+  out_.arc_length.resize(nb);
+  out_.bending_moment.resize(nb - 1);
+  energy_scale_ = std::max(model_->totalMass() * model_->gravity() * model_->length(), 1e-12);
+}
+
+Simulator::~Simulator() = default;
+
+void Simulator::setInitialState(const Kinematics& kin, double t0) {
+  t_ = t0;
+  steps_ = 0;
+  reason_.clear();
+  y_.setZero();
+  formulation_->packState(kin, y_);
+  e0_ = totalEnergy();
+  max_constraint_error_ = constraintError();
+}
+
+void Simulator::rhs(double t, const VecX& y, VecX& dy) {
+  const PointMotion top = top_->at(t);
+  formulation_->derivative(t, y, top, dy);
+  // dW/dt: power of the top motion (force on rfe 0 at A_0 is -λ_0) and of the non-conservative terms.
+  const Kinematics& kin = formulation_->lastKinematics();
+  double power = -formulation_->reactions().top.dot(top.v);
+  for (const auto& term : model_->terms()) power += term->power(*model_, kin, t);
+  dy[dy.size() - 1] = power;
+}
+
+bool Simulator::step() {
+  if (diverged()) return false;
+  integrator_->step(*this, t_, y_, settings_.dt);
+  ++steps_;
+  t_ += settings_.dt;
+  checkDivergence();
+  return !diverged();
+}
+
+bool Simulator::advanceTo(double t_end) {
+  while (t_ < t_end - 0.5 * settings_.dt)
+    if (!step()) return false;
+  return true;
+}
+
+void Simulator::checkDivergence() {
+  std::ostringstream why;
+  if (!y_.allFinite()) {
+    why << "state is not finite (NaN/Inf) at t = " << t_ << " s";
+  } else {
+    const double err = constraintError();
+    max_constraint_error_ = std::max(max_constraint_error_, err);
+    const double limit = settings_.max_constraint_error * model_->segmentLength();
+    if (err > limit)
+      why << "joint constraint error " << err << " m exceeds " << limit << " m (" << settings_.max_constraint_error
+          << " d) at t = " << t_ << " s";
+  }
+  const std::string s = why.str();
+  if (!s.empty()) reason_ = s + "; reduce solver.dt (now " + std::to_string(settings_.dt) + " s)";
+}
+
+double Simulator::constraintError() const { return formulation_->constraintError(y_, top_->at(t_)); }
+
+double Simulator::potentialEnergy(const Kinematics& kin) const {
+  double v = 0.0;
+  for (const auto& term : model_->terms()) v += term->potentialEnergy(*model_, kin);
+  return v;
+}
+
+double Simulator::totalEnergy() {
+  formulation_->kinematics(y_, kin_);
+  return formulation_->kineticEnergy(t_, y_) + potentialEnergy(kin_);
+}
+
+double Simulator::energyDrift() { return (totalEnergy() - e0_ - work()) / std::max(std::abs(e0_), energy_scale_); }
+
+const LineOutputs& Simulator::outputs() {
+  const int nb = model_->bodies();
+  formulation_->derivative(t_, y_, top_->at(t_), dy_);
+  formulation_->kinematics(y_, kin_);
+  const Reactions& re = formulation_->reactions();
+  out_.t = t_;
+  double tmax = 0.0;
+  for (int i = 0; i < nb; ++i) {
+    const BodyKinematics& b = kin_[i];
+    const Rfe& r = model_->rfe(i);
+    out_.points[i] = b.A;
+    out_.angles[i] = b.phi;
+    out_.elongations[i] = b.delta;
+    out_.arc_length[i] = r.s_begin + 0.5 * r.length;
+    out_.axial_force[i] = model_->options().axial_flexibility
+                              ? r.axial_stiffness * b.delta + r.axial_damping * b.delta_dot
+                              : re.joint[i].dot(b.e());  // tension at A_i from the joint reaction
+    tmax = std::max(tmax, out_.axial_force[i]);
+  }
+  out_.points[nb] = kin_[nb - 1].end();
+  for (int i = 1; i < nb; ++i)
+    out_.bending_moment[i - 1] = model_->bendingStiffness() * (kin_[i].phi - kin_[i - 1].phi) +
+                                 model_->bendingDamping() * (kin_[i].phi_dot - kin_[i - 1].phi_dot);
+  out_.top_force = re.top;
+  out_.bottom_force = re.bottom;
+  out_.top_tension = re.top.norm();
+  out_.bottom_tension = out_.axial_force[nb - 1];
+  out_.max_tension = tmax;
+  out_.kinetic_energy = formulation_->kineticEnergy(t_, y_);
+  out_.potential_energy = potentialEnergy(kin_);
+  out_.work_in = work();
+  out_.constraint_error = constraintError();
+  return out_;
+}
+
+}  // namespace riser_sim

@@ -1,0 +1,214 @@
+#include "riser_sim/statics.h"
+
+#include <Eigen/Dense>
+#include <cmath>
+#include <sstream>
+
+#include "riser_sim/force_term.h"
+
+namespace riser_sim {
+
+namespace {
+
+// Unknowns: per rfe (Δ_i if axial) and φ_i, then the end-force unknowns of the problem.
+class StaticResidual {
+ public:
+  StaticResidual(const Model& m, const StaticsProblem& p, double t) : model_(m), prob_(p), t_(t) {
+    axial_ = m.options().axial_flexibility;
+    per_ = axial_ ? 2 : 1;
+    extra_ = p.kind == StaticsProblem::Kind::kHanging ? 0 : (p.kind == StaticsProblem::Kind::kEndDisplaced ? 1 : 2);
+    kin_.resize(m.bodies());
+    Q_.setZero(m.dofs());
+    weight_ = std::max(m.totalMass() * std::abs(m.gravity()), 1e-9);
+  }
+  int size() const { return per_ * model_.bodies() + extra_; }
+
+  void toKinematics(const VecX& x, Kinematics& kin) const {
+    Vec2 A = prob_.top;
+    for (int i = 0; i < model_.bodies(); ++i) {
+      BodyKinematics& b = kin[i];
+      b.A = A;
+      b.A_dot.setZero();
+      b.delta = axial_ ? x[per_ * i] : 0.0;
+      b.phi = x[per_ * i + per_ - 1];
+      b.delta_dot = b.phi_dot = 0.0;
+      b.c = std::cos(b.phi);
+      b.s = std::sin(b.phi);
+      b.len = model_.rfe(i).length + b.delta;
+      A = b.end();
+    }
+  }
+  void fromKinematics(const Kinematics& kin, VecX& x) const {
+    for (int i = 0; i < model_.bodies(); ++i) {
+      if (axial_) x[per_ * i] = kin[i].delta;
+      x[per_ * i + per_ - 1] = kin[i].phi;
+    }
+  }
+  Vec2 endForce(const VecX& x) const {
+    const int o = per_ * model_.bodies();
+    if (extra_ == 1) return Vec2(x[o], 0.0);
+    if (extra_ == 2) return Vec2(x[o], x[o + 1]);
+    return Vec2::Zero();
+  }
+
+  // Scaled residual: generalised forces in independent coordinates / weight (moments / weight·L),
+  // geometric end conditions / L.
+  void operator()(const VecX& x, VecX& r) {
+    toKinematics(x, kin_);
+    Q_.setZero();
+    for (const auto& term : model_.terms()) term->addForces(model_, kin_, t_, Q_);
+    const int nb = model_.bodies();
+    Q_.segment<4>(4 * (nb - 1)) += pointForce(kin_[nb - 1], model_.rfe(nb - 1).length, 1.0, endForce(x));
+    Vec2 below = Vec2::Zero();  // net force on the rfes beyond rfe i
+    const double L = model_.length();
+    for (int i = nb - 1; i >= 0; --i) {
+      const BodyKinematics& b = kin_[i];
+      const Vec4 q = Q_.segment<4>(4 * i);
+      if (axial_) r[per_ * i] = (q[kDelta] + b.e().dot(below)) / weight_;
+      r[per_ * i + per_ - 1] = (q[kPhi] + b.len * b.nrm().dot(below)) / (weight_ * L);
+      below += q.head<2>();
+    }
+    const int o = per_ * nb;
+    const Vec2 end = kin_[nb - 1].end();
+    if (extra_ == 1) r[o] = (end.x() - prob_.top.x() - prob_.end_dx) / L;
+    if (extra_ == 2) r.segment<2>(o) = (end - prob_.end_point) / L;
+  }
+
+  const Model& model_;
+  const StaticsProblem& prob_;
+  double t_;
+  bool axial_;
+  int per_, extra_;
+  Kinematics kin_;
+  VecX Q_;
+  double weight_;
+};
+
+// Damped Newton with a forward-difference Jacobian; Levenberg-Marquardt step when Newton stalls.
+bool newton(StaticResidual& F, VecX& x, const StaticsProblem& p, int& iters, double& res) {
+  const int n = F.size();
+  VecX r(n), r1(n), x1(n);
+  MatX J(n, n);
+  F(x, r);
+  res = r.lpNorm<Eigen::Infinity>();
+  for (iters = 0; iters < p.max_iterations && res > p.tolerance; ++iters) {
+    for (int j = 0; j < n; ++j) {
+      const double typical = j < F.per_ * F.model_.bodies() ? 1e-3 : F.weight_;
+      const double h = 1e-7 * std::max(std::abs(x[j]), typical);
+      x1 = x;
+      x1[j] += h;
+      F(x1, r1);
+      J.col(j) = (r1 - r) / h;
+    }
+    VecX dx = J.partialPivLu().solve(-r);
+    double alpha = 1.0, res1 = INFINITY;
+    for (int k = 0; k < 12; ++k, alpha *= 0.5) {
+      x1 = x + alpha * dx;
+      F(x1, r1);
+      res1 = r1.norm();
+      if (std::isfinite(res1) && res1 < (1.0 - 1e-4 * alpha) * r.norm()) break;
+    }
+    if (!(res1 < r.norm())) {  // Levenberg-Marquardt fallback
+      const MatX JtJ = J.transpose() * J;
+      const VecX g = J.transpose() * r;
+      double mu = 1e-6 * JtJ.diagonal().maxCoeff();
+      for (int k = 0; k < 20; ++k, mu *= 10.0) {
+        MatX A = JtJ;
+        A.diagonal() += mu * (JtJ.diagonal().array() + 1e-30).matrix();
+        x1 = x - A.ldlt().solve(g);
+        F(x1, r1);
+        res1 = r1.norm();
+        if (std::isfinite(res1) && res1 < r.norm()) break;
+      }
+      if (!(res1 < r.norm())) return false;
+    }
+    x = x1;
+    r = r1;
+    res = r.lpNorm<Eigen::Infinity>();
+  }
+  return res <= p.tolerance;
+}
+
+}  // namespace
+
+Kinematics straightLine(const Model& model, const Vec2& top, double phi) {
+  Kinematics kin(model.bodies());
+  Vec2 A = top;
+  for (int i = 0; i < model.bodies(); ++i) {
+    BodyKinematics& b = kin[i];
+    b.A = A;
+    b.phi = phi;
+    b.c = std::cos(phi);
+    b.s = std::sin(phi);
+    b.len = model.rfe(i).length;
+    A = b.end();
+  }
+  return kin;
+}
+
+StaticsResult solveStatics(const Model& model, const StaticsProblem& problem, double t) {
+  StaticResidual F(model, problem, t);
+  const int nb = model.bodies();
+  const double L = model.length();
+  VecX x = VecX::Zero(F.size());
+  Kinematics guess;
+  using Kind = StaticsProblem::Kind;
+  if (problem.kind == Kind::kHanging) {
+    guess = straightLine(model, problem.top, -M_PI / 2);
+  } else if (problem.kind == Kind::kEndDisplaced) {
+    const double dx = problem.end_dx;
+    if (std::abs(dx) >= L) {
+      StaticsResult res;
+      res.message = "initial.end_dx: |end_dx| must be < line.length for a displaced initial state";
+      return res;
+    }
+    guess = straightLine(model, problem.top, std::atan2(-std::sqrt(L * L - dx * dx), dx));
+    const double w = (model.endMass() + 0.5 * model.line().mass_per_length * L) * model.gravity();
+    x[F.per_ * nb] = w * dx / std::sqrt(L * L - dx * dx);
+  } else {  // between points: straight chord, or a V of two straight halves when slack
+    const Vec2 chord = problem.end_point - problem.top;
+    const double c = chord.norm();
+    guess = straightLine(model, problem.top, std::atan2(chord.y(), chord.x()));
+    if (c < L) {
+      const Vec2 mid = problem.top + 0.5 * chord;
+      Vec2 down = perp(chord / std::max(c, 1e-12));
+      if (down.y() > 0) down = -down;
+      const Vec2 vertex = mid + std::sqrt(0.25 * L * L - 0.25 * c * c) * down;
+      double s = 0.0;
+      for (int i = 0; i < nb; ++i) {
+        const Vec2 d = (s + 0.5 * model.rfe(i).length < 0.5 * L) ? Vec2(vertex - problem.top)
+                                                                   : Vec2(problem.end_point - vertex);
+        guess[i].phi = std::atan2(d.y(), d.x());
+        s += model.rfe(i).length;
+      }
+    }
+  }
+  F.fromKinematics(guess, x);
+  StaticsResult res;
+  bool ok = newton(F, x, problem, res.iterations, res.residual);
+  if (!ok && problem.kind == Kind::kEndDisplaced) {  // continuation in the end offset
+    StaticsProblem step = problem;
+    StaticResidual Fs(model, step, t);
+    VecX xs = VecX::Zero(Fs.size());
+    Fs.fromKinematics(straightLine(model, problem.top, -M_PI / 2), xs);
+    int it = 0;
+    ok = true;
+    for (int k = 1; k <= 20 && ok; ++k) {
+      step.end_dx = problem.end_dx * k / 20.0;
+      ok = newton(Fs, xs, step, it, res.residual);
+      res.iterations += it;
+    }
+    x = xs;
+  }
+  res.converged = ok;
+  res.kin.resize(nb);
+  F.toKinematics(x, res.kin);
+  res.end_force = F.endForce(x);
+  std::ostringstream msg;
+  msg << (ok ? "statics converged" : "statics did not converge") << " in " << res.iterations
+      << " iterations, residual " << res.residual << " (tolerance " << problem.tolerance << ")";
+  res.message = msg.str();
+  return res;
+}
+
+}  // namespace riser_sim
