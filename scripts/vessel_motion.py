@@ -1,0 +1,193 @@
+#!/usr/bin/python3
+"""Scripted vessel motion: publishes vessel/pose (geometry_msgs/PoseStamped) for riser_sim_node.
+
+Position of the vessel reference point in the world frame (z up), t [s] of ROS time since start:
+  p(t) = origin + e(t) * [surge(t), 0, heave(t)] + transit(t) + noise
+  surge(t) = surge/amplitude * cos(2 pi t / surge/period + surge/phase)   (paper: x_0 = 10 cos(2 pi t / 27))
+  heave(t) = heave/amplitude * cos(2 pi t / heave/period + heave/phase)
+  e(t)     = fade-in envelope 0.5 (1 - cos(pi t / fade_in)) for t < fade_in, 1 after (no jump at t = 0)
+  transit  = integral of a trapezoidal velocity: transit/velocity [vx, vy, vz] held over
+             [transit/start, transit/start + transit/duration], ramped over transit/ramp_time at each end
+Pitch (rotation about world y): pitch/amplitude [deg] * e(t) * cos(2 pi t / pitch/period + pitch/phase).
+Jitter (optional): jitter/position [m] Gaussian noise per axis, jitter/timing [0..1) relative spread of the
+publish period, jitter/seed.
+Uses ROS time throughout, so it follows /clock under /use_sim_time. With ~duration > 0 it exits after that
+many seconds of motion (mark it required in a launch file to end the whole launch).
+"""
+import math
+import random
+
+import rospy
+from geometry_msgs.msg import PoseStamped
+from visualization_msgs.msg import Marker
+
+
+def _param(name, default, check=None, what=""):
+    value = rospy.get_param("~" + name, default)
+    try:
+        if isinstance(default, list):
+            value = [float(v) for v in value]
+            if len(value) != len(default):
+                raise ValueError
+        elif isinstance(default, bool):
+            value = bool(value)
+        elif isinstance(default, (int, float)):
+            value = float(value)
+    except (TypeError, ValueError):
+        raise ValueError("~%s: expected %s, got %r" % (name, type(default).__name__ + (
+            "[%d]" % len(default) if isinstance(default, list) else ""), value))
+    if isinstance(value, float) and not math.isfinite(value):
+        raise ValueError("~%s: must be finite, got %r" % (name, value))
+    if check is not None and not check(value):
+        raise ValueError("~%s: %s, got %r" % (name, what, value))
+    return value
+
+
+class Oscillation(object):
+    """a cos(2 pi t / period + phase) and its derivative."""
+
+    def __init__(self, prefix, amplitude, period):
+        self.amplitude = _param(prefix + "/amplitude", amplitude)
+        self.period = _param(prefix + "/period", period, lambda v: v > 0, "must be > 0")
+        self.phase = _param(prefix + "/phase", 0.0)
+
+    def at(self, t):
+        return self.amplitude * math.cos(2.0 * math.pi * t / self.period + self.phase)
+
+
+class Transit(object):
+    """Displacement of a trapezoidal velocity profile (exact integral, piecewise quadratic)."""
+
+    def __init__(self):
+        self.velocity = _param("transit/velocity", [0.0, 0.0, 0.0])
+        self.start = _param("transit/start", 0.0)
+        self.duration = _param("transit/duration", 0.0, lambda v: v >= 0, "must be >= 0")
+        self.ramp = _param("transit/ramp_time", 2.0, lambda v: v >= 0, "must be >= 0")
+        self.ramp = min(self.ramp, 0.5 * self.duration)
+
+    def _distance(self, t):
+        """Distance covered at unit cruise speed after time t since the start of the window."""
+        T, r = self.duration, self.ramp
+        t = min(max(t, 0.0), T)
+        if r <= 0.0:
+            return t
+        if t <= r:  # accelerating
+            return 0.5 * t * t / r
+        if t <= T - r:  # cruising
+            return 0.5 * r + (t - r)
+        u = T - t  # decelerating: full window minus what is left
+        return (T - r) - 0.5 * u * u / r
+
+    def at(self, t):
+        s = self._distance(t - self.start)
+        return [v * s for v in self.velocity]
+
+
+class VesselMotion(object):
+    def __init__(self):
+        self.rate = _param("rate", 50.0, lambda v: v > 0, "must be > 0")
+        self.frame_id = rospy.get_param("~frame_id", "world")
+        self.origin = _param("origin", [0.0, 0.0, 0.0])
+        self.fade_in = _param("fade_in", 5.0, lambda v: v >= 0, "must be >= 0")
+        self.duration = _param("duration", 0.0, lambda v: v >= 0, "must be >= 0 (0 = run forever)")
+        self.surge = Oscillation("surge", 10.0, 27.0)
+        self.heave = Oscillation("heave", 0.0, 10.0)
+        self.pitch = Oscillation("pitch", 0.0, 10.0)
+        self.transit = Transit()
+        self.jitter_position = _param("jitter/position", 0.0, lambda v: v >= 0, "must be >= 0")
+        self.jitter_timing = _param("jitter/timing", 0.0, lambda v: 0 <= v < 1, "must be in [0, 1)")
+        self.rng = random.Random(int(rospy.get_param("~jitter/seed", 1)))
+        self.publish_marker = _param("marker", True)
+        self.pub = rospy.Publisher("vessel/pose", PoseStamped, queue_size=10)
+        self.marker_pub = rospy.Publisher("vessel/marker", Marker, queue_size=2, latch=True) \
+            if self.publish_marker else None
+
+    def envelope(self, t):
+        if self.fade_in <= 0.0 or t >= self.fade_in:
+            return 1.0
+        return 0.5 * (1.0 - math.cos(math.pi * max(t, 0.0) / self.fade_in))
+
+    def pose(self, t):
+        """(x, y, z, pitch [rad]) at time t since start, without jitter."""
+        e = self.envelope(t)
+        shift = self.transit.at(t)
+        x = self.origin[0] + e * self.surge.at(t) + shift[0]
+        y = self.origin[1] + shift[1]
+        z = self.origin[2] + e * self.heave.at(t) + shift[2]
+        return x, y, z, math.radians(e * self.pitch.at(t))
+
+    def message(self, stamp, t):
+        x, y, z, pitch = self.pose(t)
+        if self.jitter_position > 0.0:
+            x += self.rng.gauss(0.0, self.jitter_position)
+            y += self.rng.gauss(0.0, self.jitter_position)
+            z += self.rng.gauss(0.0, self.jitter_position)
+        msg = PoseStamped()
+        msg.header.stamp = stamp
+        msg.header.frame_id = self.frame_id
+        msg.pose.position.x, msg.pose.position.y, msg.pose.position.z = x, y, z
+        # Rotation about world y by the pitch angle.
+        msg.pose.orientation.y = math.sin(0.5 * pitch)
+        msg.pose.orientation.w = math.cos(0.5 * pitch)
+        return msg
+
+    def marker(self, pose_msg):
+        m = Marker()
+        m.header = pose_msg.header
+        m.ns, m.id, m.type, m.action = "vessel", 0, Marker.CUBE, Marker.ADD
+        m.pose = pose_msg.pose
+        m.pose.position.z += 1.5  # hull mostly above the hang-off point
+        m.scale.x, m.scale.y, m.scale.z = 24.0, 8.0, 4.0
+        m.color.r, m.color.g, m.color.b, m.color.a = 0.55, 0.6, 0.65, 0.8
+        m.frame_locked = False
+        return m
+
+    def next_period(self):
+        period = 1.0 / self.rate
+        if self.jitter_timing > 0.0:
+            period *= 1.0 + self.jitter_timing * self.rng.uniform(-1.0, 1.0)
+        return rospy.Duration.from_sec(period)
+
+    def run(self):
+        # Under /use_sim_time the clock reads 0 until /clock arrives: wait for a real time base.
+        while not rospy.is_shutdown() and rospy.Time.now().is_zero():
+            rospy.sleep(0.01)
+        start = rospy.Time.now()
+        rospy.loginfo("vessel_motion: surge %.2f m / %.1f s, heave %.2f m / %.1f s, pitch %.2f deg, "
+                      "transit %s m/s for %.1f s from t=%.1f s, %.0f Hz%s",
+                      self.surge.amplitude, self.surge.period, self.heave.amplitude, self.heave.period,
+                      self.pitch.amplitude, self.transit.velocity, self.transit.duration,
+                      self.transit.start, self.rate,
+                      ", duration %.1f s" % self.duration if self.duration > 0 else "")
+        wake = start
+        while not rospy.is_shutdown():
+            now = rospy.Time.now()
+            t = (now - start).to_sec()
+            if self.duration > 0.0 and t >= self.duration:
+                rospy.loginfo("vessel_motion: %.1f s done", t)
+                break
+            msg = self.message(now, t)
+            self.pub.publish(msg)
+            if self.marker_pub is not None:
+                self.marker_pub.publish(self.marker(msg))
+            wake = max(wake + self.next_period(), now)
+            try:
+                rospy.sleep(wake - rospy.Time.now())
+            except rospy.ROSInterruptException:
+                break
+            except rospy.ROSTimeMovedBackwardsException:  # sim clock restarted (e.g. bag loop)
+                start = wake = rospy.Time.now()
+
+
+def main():
+    rospy.init_node("vessel_motion")
+    try:
+        node = VesselMotion()
+    except ValueError as e:
+        rospy.logfatal("vessel_motion: %s", e)
+        raise SystemExit(2)
+    node.run()
+
+
+if __name__ == "__main__":
+    main()
