@@ -1,1 +1,19 @@
-# riser_sim_cli (see src/cli)
+# riser_sim_cli (see src/cli): offline runs of a scene file, no roscore needed.
+# Lands in devel/lib/riser_sim so that `rosrun riser_sim riser_sim_cli` finds it.
+add_executable(riser_sim_cli
+  src/cli/main.cpp
+  src/cli/cli_options.cpp
+  src/cli/run_output.cpp
+)
+target_link_libraries(riser_sim_cli riser_sim_core)
+target_compile_options(riser_sim_cli PRIVATE -O3)
+set_target_properties(riser_sim_cli PROPERTIES
+  RUNTIME_OUTPUT_DIRECTORY ${CATKIN_DEVEL_PREFIX}/${CATKIN_PACKAGE_BIN_DESTINATION})
+install(TARGETS riser_sim_cli RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
+
+# test/core/test_cli.cpp (made a gtest by cmake/core.cmake's glob) runs the built binary.
+if(CATKIN_ENABLE_TESTING AND TARGET test_cli)
+  target_compile_definitions(test_cli PRIVATE
+    RISER_SIM_CLI_BINARY="${CATKIN_DEVEL_PREFIX}/${CATKIN_PACKAGE_BIN_DESTINATION}/riser_sim_cli")
+  add_dependencies(test_cli riser_sim_cli)
+endif()

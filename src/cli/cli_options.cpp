@@ -1,0 +1,87 @@
+#include "cli_options.h"
+
+#include <cmath>
+#include <cstdlib>
+
+namespace riser_sim {
+namespace cli {
+
+namespace {
+
+double positiveSeconds(const std::string& option, const std::string& text) {
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end != '\0' || !std::isfinite(v) || !(v > 0.0))
+    throw UsageError(option + ": expected a number of seconds > 0, got '" + text + "'");
+  return v;
+}
+
+}  // namespace
+
+std::string usage() {
+  return "usage: riser_sim_cli --scene FILE [options]\n"
+         "Runs a scene offline (no roscore) and reports the motion of the line.\n"
+         "\n"
+         "  --scene FILE        scene file (YAML, keys in docs/scene_keys.md)      [required]\n"
+         "  --set KEY=VALUE     override a scene key, VALUE parsed as YAML, e.g.\n"
+         "                      --set line.elements=40 --set top.position=[1,2]   [repeatable]\n"
+         "  --duration S        simulated time [s] (default: run.duration)\n"
+         "  --csv FILE          time series every --output-dt seconds: t,x_top,y_top,x_end,y_end,\n"
+         "                      tension_top,tension_max,energy,work,energy_drift,constraint_error\n"
+         "  --output-dt S       CSV row interval [s] (default 0.1)\n"
+         "  --summary           print one JSON line with the results at the end (stdout)\n"
+         "  --quiet             no progress text on stderr\n"
+         "  --help              this text\n"
+         "\n"
+         "exit codes: 0 ok, 2 bad input, 3 diverged or initial statics failed\n";
+}
+
+CliOptions parseOptions(int argc, char** argv) {
+  CliOptions o;
+  for (int i = 1; i < argc; ++i) {
+    std::string arg = argv[i], value;
+    bool has_value = false;
+    const size_t eq = arg.find('=');
+    if (arg.rfind("--", 0) == 0 && eq != std::string::npos) {
+      value = arg.substr(eq + 1);
+      arg = arg.substr(0, eq);
+      has_value = true;
+    }
+    const auto takeValue = [&]() -> std::string {
+      if (has_value) return value;
+      if (i + 1 >= argc) throw UsageError(arg + ": missing value");
+      return argv[++i];
+    };
+    const auto noValue = [&]() {
+      if (has_value) throw UsageError(arg + ": takes no value");
+    };
+    if (arg == "--help" || arg == "-h") {
+      noValue();
+      o.help = true;
+    } else if (arg == "--scene") {
+      o.scene = takeValue();
+    } else if (arg == "--set") {
+      o.overrides.push_back(takeValue());
+    } else if (arg == "--duration") {
+      o.duration = positiveSeconds(arg, takeValue());
+    } else if (arg == "--csv") {
+      o.csv = takeValue();
+      if (o.csv.empty()) throw UsageError("--csv: empty file name");
+    } else if (arg == "--output-dt") {
+      o.output_dt = positiveSeconds(arg, takeValue());
+    } else if (arg == "--summary") {
+      noValue();
+      o.summary = true;
+    } else if (arg == "--quiet" || arg == "-q") {
+      noValue();
+      o.quiet = true;
+    } else {
+      throw UsageError("unknown option '" + std::string(argv[i]) + "' (see --help)");
+    }
+  }
+  if (!o.help && o.scene.empty()) throw UsageError("--scene FILE is required (see --help)");
+  return o;
+}
+
+}  // namespace cli
+}  // namespace riser_sim

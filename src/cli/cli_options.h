@@ -1,0 +1,32 @@
+// Command line of riser_sim_cli.
+#pragma once
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace riser_sim {
+namespace cli {
+
+struct CliOptions {
+  std::string scene;                   // --scene FILE (required)
+  std::vector<std::string> overrides;  // --set key.path=value, in order
+  double duration = -1.0;              // --duration S [s]; < 0: run.duration from the scene
+  std::string csv;                     // --csv FILE; empty: no time series
+  double output_dt = 0.1;              // --output-dt S [s]: CSV row interval
+  bool summary = false;                // --summary: one JSON line on stdout at the end
+  bool quiet = false;                  // --quiet: no progress text on stderr
+  bool help = false;                   // --help
+};
+
+// Bad command line (exit code 2).
+class UsageError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Accepts "--opt VALUE" and "--opt=VALUE". Throws UsageError.
+CliOptions parseOptions(int argc, char** argv);
+std::string usage();
+
+}  // namespace cli
+}  // namespace riser_sim

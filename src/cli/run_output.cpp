@@ -1,0 +1,86 @@
+#include "run_output.h"
+
+#include <cmath>
+
+namespace riser_sim {
+namespace cli {
+
+Sample takeSample(Simulator& sim) {
+  const LineOutputs& out = sim.outputs();
+  Sample s;
+  s.t = out.t;
+  s.x_top = out.points.front().x();
+  s.y_top = out.points.front().y();
+  s.x_end = out.points.back().x();
+  s.y_end = out.points.back().y();
+  s.tension_top = out.top_tension;
+  s.tension_max = out.max_tension;
+  s.energy = out.kinetic_energy + out.potential_energy;
+  s.work = out.work_in;
+  s.energy_drift = sim.energyDrift();
+  s.constraint_error = out.constraint_error;
+  return s;
+}
+
+bool allFinite(const Sample& s) {
+  for (double v : {s.t, s.x_top, s.y_top, s.x_end, s.y_end, s.tension_top, s.tension_max, s.energy, s.work,
+                   s.energy_drift, s.constraint_error})
+    if (!std::isfinite(v)) return false;
+  return true;
+}
+
+const char* csvHeader() {
+  return "t,x_top,y_top,x_end,y_end,tension_top,tension_max,energy,work,energy_drift,constraint_error";
+}
+
+void writeCsvRow(std::FILE* f, const Sample& s) {
+  std::fprintf(f, "%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", s.t, s.x_top, s.y_top, s.x_end,
+               s.y_end, s.tension_top, s.tension_max, s.energy, s.work, s.energy_drift, s.constraint_error);
+}
+
+std::string jsonString(const std::string& s) {
+  std::string out = "\"";
+  for (const char c : s) {
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += c;
+    } else if (static_cast<unsigned char>(c) < 0x20) {
+      char buf[8];
+      std::snprintf(buf, sizeof(buf), "\\u%04x", c);
+      out += buf;
+    } else {
+      out += c;
+    }
+  }
+  return out + "\"";
+}
+
+void JsonLine::addRaw(const std::string& key, const std::string& json) {
+  if (!body_.empty()) body_ += ",";
+  body_ += jsonString(key) + ":" + json;
+}
+
+JsonLine& JsonLine::add(const std::string& key, double v) {
+  char buf[32] = "null";
+  if (std::isfinite(v)) std::snprintf(buf, sizeof(buf), "%.9g", v);
+  addRaw(key, buf);
+  return *this;
+}
+
+JsonLine& JsonLine::add(const std::string& key, long v) {
+  addRaw(key, std::to_string(v));
+  return *this;
+}
+
+JsonLine& JsonLine::add(const std::string& key, bool v) {
+  addRaw(key, v ? "true" : "false");
+  return *this;
+}
+
+JsonLine& JsonLine::add(const std::string& key, const std::string& v) {
+  addRaw(key, jsonString(v));
+  return *this;
+}
+
+}  // namespace cli
+}  // namespace riser_sim

@@ -1,0 +1,50 @@
+// What riser_sim_cli writes: one sample of the run (a CSV row) and the JSON summary line.
+#pragma once
+#include <cstdio>
+#include <string>
+
+#include "riser_sim/simulator.h"
+
+namespace riser_sim {
+namespace cli {
+
+// One CSV row; the columns are csvHeader().
+struct Sample {
+  double t = 0.0;                   // [s]
+  double x_top = 0.0, y_top = 0.0;  // A_0 [m]
+  double x_end = 0.0, y_end = 0.0;  // end of rfe n (the end mass) [m]
+  double tension_top = 0.0;         // |force on the hang-off| [N]
+  double tension_max = 0.0;         // largest axial force along the line [N]
+  double energy = 0.0;              // T + V [J]
+  double work = 0.0;                // work fed in since t = 0 [J]
+  double energy_drift = 0.0;        // (E - E0 - W) / max(|E0|, m g L) [-]
+  double constraint_error = 0.0;    // largest joint gap [m]
+};
+
+Sample takeSample(Simulator& sim);
+bool allFinite(const Sample& s);
+
+const char* csvHeader();
+// Writes one row (%.9g). The caller checks allFinite() first: no NaN ever reaches the file.
+void writeCsvRow(std::FILE* f, const Sample& s);
+
+// Builds one line of JSON; non-finite numbers are written as null.
+class JsonLine {
+ public:
+  JsonLine& add(const std::string& key, double v);
+  JsonLine& add(const std::string& key, long v);
+  JsonLine& add(const std::string& key, int v) { return add(key, static_cast<long>(v)); }
+  JsonLine& add(const std::string& key, bool v);
+  JsonLine& add(const std::string& key, const std::string& v);
+  JsonLine& add(const std::string& key, const char* v) { return add(key, std::string(v)); }
+  std::string str() const { return "{" + body_ + "}"; }
+
+ private:
+  void addRaw(const std::string& key, const std::string& json);
+  std::string body_;
+};
+
+std::string jsonString(const std::string& s);
+
+}  // namespace cli
+}  // namespace riser_sim

@@ -1,0 +1,441 @@
+// Scene files: YAML tree -> riser_sim::Scene, one small parse function per section (see
+// kSections at the bottom; adding a section = one function + one table row). Every error is a
+// SceneError naming the full key path. The accepted keys are documented in docs/scene_keys.md.
+#include "riser_sim/scene_yaml.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "riser_sim/integrator.h"
+
+namespace riser_sim {
+namespace {
+
+constexpr double kDegToRad = M_PI / 180.0;
+
+// Keep in step with makeFormulation() in src/core/simulator.cpp (it has no public factory).
+const std::vector<std::string> kFormulations = {"absolute"};
+
+std::string join(const std::vector<std::string>& items) {
+  std::string out;
+  for (const auto& s : items) out += (out.empty() ? "" : ", ") + s;
+  return out;
+}
+
+std::string formatNumber(double v) {
+  std::ostringstream os;
+  os.precision(9);
+  os << v;
+  return os.str();
+}
+
+// "got ..." part of a type error.
+std::string describe(const YAML::Node& node) {
+  if (!node.IsDefined() || node.IsNull()) return "nothing (null)";
+  if (node.IsSequence()) return "a list of " + std::to_string(node.size()) + (node.size() == 1 ? " item" : " items");
+  if (node.IsMap()) return "a map";
+  return "'" + node.Scalar() + "'";
+}
+
+size_t editDistance(const std::string& a, const std::string& b) {
+  std::vector<size_t> row(b.size() + 1);
+  for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (size_t i = 1; i <= a.size(); ++i) {
+    size_t diag = row[0];
+    row[0] = i;
+    for (size_t j = 1; j <= b.size(); ++j) {
+      const size_t up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diag = up;
+    }
+  }
+  return row[b.size()];
+}
+
+std::string unknownKeyMessage(const std::string& key, const std::vector<std::string>& accepted) {
+  for (const auto& a : accepted)
+    if (editDistance(key, a) <= 2 && key.size() > 2) return "unknown key (did you mean '" + a + "'?)";
+  return "unknown key (accepted: " + join(accepted) + ")";
+}
+
+// ---- typed conversions of one node; `key` is its full path, used in every message ----
+
+double toNumber(const YAML::Node& node, const std::string& key) {
+  double v = 0.0;
+  if (!node.IsScalar() || !YAML::convert<double>::decode(node, v))
+    throw SceneError(key, "expected a number, got " + describe(node));
+  if (!std::isfinite(v)) throw SceneError(key, "must be a finite number, got " + describe(node));
+  return v;
+}
+
+int toInteger(const YAML::Node& node, const std::string& key) {
+  int v = 0;
+  if (!node.IsScalar() || !YAML::convert<int>::decode(node, v))
+    throw SceneError(key, "expected an integer, got " + describe(node));
+  return v;
+}
+
+bool toBool(const YAML::Node& node, const std::string& key) {
+  bool v = false;
+  if (!node.IsScalar() || !YAML::convert<bool>::decode(node, v))
+    throw SceneError(key, "expected true or false, got " + describe(node));
+  return v;
+}
+
+std::string toText(const YAML::Node& node, const std::string& key) {
+  if (!node.IsScalar()) throw SceneError(key, "expected a string, got " + describe(node));
+  return node.Scalar();
+}
+
+Vec2 toVec2(const YAML::Node& node, const std::string& key) {
+  if (!node.IsSequence() || node.size() != 2) throw SceneError(key, "expected [x, y], got " + describe(node));
+  return Vec2(toNumber(node[0], key + "[0]"), toNumber(node[1], key + "[1]"));
+}
+
+// ---- value checks ----
+
+void requirePositive(const std::string& key, double v) {
+  if (!(v > 0.0)) throw SceneError(key, "must be > 0, got " + formatNumber(v));
+}
+void requireNonNegative(const std::string& key, double v) {
+  if (!(v >= 0.0)) throw SceneError(key, "must be >= 0, got " + formatNumber(v));
+}
+
+// One map of the scene tree ("line", "top.motion", ...). Rejects keys it does not accept on
+// construction, so a typo is reported as such rather than as a missing key.
+class Section {
+ public:
+  Section(const YAML::Node& node, std::string path, std::vector<std::string> accepted)
+      : node_(node), path_(std::move(path)), accepted_(std::move(accepted)) {
+    if (!node_.IsDefined() || node_.IsNull()) return;  // absent or empty: every key takes its default
+    if (!node_.IsMap())
+      throw SceneError(path_, path_.empty() ? "a scene must be a map of sections, got " + describe(node_)
+                                            : "expected a map of keys, got " + describe(node_));
+    std::vector<std::string> seen;
+    for (const auto& kv : node_) {
+      if (!kv.first.IsScalar()) throw SceneError(path_, "keys must be plain names, got " + describe(kv.first));
+      const std::string k = kv.first.Scalar();
+      if (std::find(seen.begin(), seen.end(), k) != seen.end()) throw SceneError(key(k), "duplicate key");
+      seen.push_back(k);
+      if (std::find(accepted_.begin(), accepted_.end(), k) == accepted_.end())
+        throw SceneError(key(k), unknownKeyMessage(k, accepted_));
+    }
+  }
+
+  std::string key(const std::string& k) const { return path_.empty() ? k : path_ + "." + k; }
+  bool has(const std::string& k) const { return node_.IsMap() && node_[k].IsDefined(); }
+  YAML::Node at(const std::string& k) const {
+    if (!has(k)) throw SceneError(key(k), "missing required key");
+    return node_[k];
+  }
+  Section section(const std::string& k, std::vector<std::string> accepted) const {
+    return Section(has(k) ? node_[k] : YAML::Node(), key(k), std::move(accepted));
+  }
+
+  double number(const std::string& k) const { return toNumber(at(k), key(k)); }
+  double number(const std::string& k, double def) const { return has(k) ? number(k) : def; }
+  int integer(const std::string& k) const { return toInteger(at(k), key(k)); }
+  bool boolean(const std::string& k, bool def) const { return has(k) ? toBool(at(k), key(k)) : def; }
+  std::string text(const std::string& k, const std::string& def) const {
+    return has(k) ? toText(at(k), key(k)) : def;
+  }
+  Vec2 vec2(const std::string& k) const { return toVec2(at(k), key(k)); }
+  Vec2 vec2(const std::string& k, const Vec2& def) const { return has(k) ? vec2(k) : def; }
+  // A string from a fixed list.
+  std::string choice(const std::string& k, const std::string& def, const std::vector<std::string>& allowed) const {
+    const std::string v = text(k, def);
+    if (std::find(allowed.begin(), allowed.end(), v) == allowed.end())
+      throw SceneError(key(k), "unknown value '" + v + "' (accepted: " + join(allowed) + ")");
+    return v;
+  }
+
+ private:
+  YAML::Node node_;
+  std::string path_;
+  std::vector<std::string> accepted_;
+};
+
+// ---- sections ----
+
+void parseLine(const Section& root, Scene& s) {
+  if (!root.has("line")) throw SceneError("line", "missing required section (needs at least length, elements "
+                                                  "and the cross-section properties)");
+  const Section line = root.section(
+      "line", {"length", "elements", "outer_diameter", "inner_diameter", "youngs_modulus", "density", "EA", "EI",
+               "mass_per_length", "end_mass", "bending", "axial_flexibility", "axial_damping", "bending_damping"});
+  s.length = line.number("length");
+  requirePositive(line.key("length"), s.length);
+  s.elements = line.integer("elements");
+  if (s.elements < 1) throw SceneError(line.key("elements"), "must be >= 1, got " + std::to_string(s.elements));
+  s.options.bending = line.boolean("bending", true);
+  s.options.axial_flexibility = line.boolean("axial_flexibility", true);
+
+  // Cross-section: geometry + material, or EA / EI / mass_per_length directly (never both).
+  const bool geometry = line.has("youngs_modulus") || line.has("density");
+  std::string direct_key;
+  for (const char* k : {"EA", "EI", "mass_per_length"})
+    if (direct_key.empty() && line.has(k)) direct_key = k;
+  if (geometry && !direct_key.empty())
+    throw SceneError(line.key(direct_key),
+                     "cannot be combined with youngs_modulus/density: give either outer_diameter, inner_diameter, "
+                     "youngs_modulus and density, or EA, EI and mass_per_length");
+  if (!geometry && direct_key.empty()) {
+    if (line.has("outer_diameter")) line.at("youngs_modulus");  // throws "line.youngs_modulus: missing ..."
+    throw SceneError("line", "missing cross-section properties: give outer_diameter, youngs_modulus and density, "
+                             "or EA, EI and mass_per_length");
+  }
+
+  const double outer = line.number("outer_diameter", 0.0);
+  const double inner = line.number("inner_diameter", 0.0);
+  if (geometry || line.has("outer_diameter")) requirePositive(line.key("outer_diameter"), line.number("outer_diameter"));
+  requireNonNegative(line.key("inner_diameter"), inner);
+  if (line.has("inner_diameter") && !line.has("outer_diameter")) line.at("outer_diameter");
+  if (inner > 0.0 && !(inner < outer))
+    throw SceneError(line.key("inner_diameter"), "must be smaller than line.outer_diameter (" + formatNumber(outer) +
+                                                     " m), got " + formatNumber(inner));
+
+  if (geometry) {
+    const double E = line.number("youngs_modulus");
+    requirePositive(line.key("youngs_modulus"), E);
+    const double rho = line.number("density");
+    requirePositive(line.key("density"), rho);
+    s.line = LineProperties::fromGeometry(outer, inner, E, rho);
+  } else {
+    s.line = LineProperties();
+    s.line.outer_diameter = outer;
+    s.line.inner_diameter = inner;
+    s.line.mass_per_length = line.number("mass_per_length");
+    requirePositive(line.key("mass_per_length"), s.line.mass_per_length);
+    // EA is only needed by an extensible line, EI only with bending springs.
+    s.line.EA = s.options.axial_flexibility ? line.number("EA") : line.number("EA", 0.0);
+    if (s.options.axial_flexibility) requirePositive(line.key("EA"), s.line.EA);
+    requireNonNegative(line.key("EA"), s.line.EA);
+    s.line.EI = s.options.bending ? line.number("EI") : line.number("EI", 0.0);
+    requireNonNegative(line.key("EI"), s.line.EI);
+  }
+  s.line.axial_damping = line.number("axial_damping", 0.0);
+  requireNonNegative(line.key("axial_damping"), s.line.axial_damping);
+  s.line.bending_damping = line.number("bending_damping", 0.0);
+  requireNonNegative(line.key("bending_damping"), s.line.bending_damping);
+  s.end_mass = line.number("end_mass", 0.0);
+  requireNonNegative(line.key("end_mass"), s.end_mass);
+}
+
+void parseKnots(const Section& motion, TopMotionSpec& top) {
+  const std::string key = motion.key("knots");
+  const YAML::Node knots = motion.at("knots");
+  if (!knots.IsSequence() || knots.size() == 0)
+    throw SceneError(key, "expected a non-empty list of [t, [vx, vy]], got " + describe(knots));
+  top.knots.clear();
+  for (size_t i = 0; i < knots.size(); ++i) {
+    const std::string k = key + "[" + std::to_string(i) + "]";
+    const YAML::Node knot = knots[i];
+    if (!knot.IsSequence() || knot.size() != 2) throw SceneError(k, "expected [t, [vx, vy]], got " + describe(knot));
+    const double t = toNumber(knot[0], k + "[0]");
+    if (i > 0 && !(t > top.knots.back().t))
+      throw SceneError(k, "knot times must increase, got " + formatNumber(t) + " after " +
+                              formatNumber(top.knots.back().t));
+    top.knots.push_back({t, toVec2(knot[1], k + "[1]")});
+  }
+}
+
+void parseTop(const Section& root, Scene& s) {
+  const Section top = root.section("top", {"position", "motion"});
+  s.top = TopMotionSpec();
+  s.top.position = top.vec2("position", Vec2::Zero());
+  const Section motion = top.section("motion", {"type", "amplitude", "period", "phase", "knots"});
+  s.top.type = motion.choice("type", "fixed", {"fixed", "sinusoid", "velocity_profile", "external"});
+  // Keys of the other motion types are type-checked but ignored (so --set top.motion.type=... just works).
+  const bool sinusoid = s.top.type == "sinusoid";
+  s.top.amplitude = sinusoid ? motion.vec2("amplitude") : motion.vec2("amplitude", Vec2::Zero());
+  s.top.period = sinusoid ? motion.number("period") : motion.number("period", 1.0);
+  requirePositive(motion.key("period"), s.top.period);
+  s.top.phase = motion.number("phase", 0.0);
+  if (s.top.type == "velocity_profile" || motion.has("knots")) parseKnots(motion, s.top);
+}
+
+void parseBottom(const Section& root, Scene& s) {
+  const Section bottom = root.section("bottom", {"type", "position"});
+  const std::string type = bottom.choice("type", "free", {"free", "pinned"});
+  s.bottom = type == "pinned" ? BottomBoundary::kPinned : BottomBoundary::kFree;
+  s.bottom_point = s.bottom == BottomBoundary::kPinned ? bottom.vec2("position")
+                                                        : bottom.vec2("position", Vec2::Zero());
+}
+
+void parseInitial(const Section& root, Scene& s) {
+  const Section initial = root.section("initial", {"type", "end_dx", "angle", "tolerance"});
+  s.initial = InitialSpec();
+  s.initial.type = initial.choice("type", "hanging", {"hanging", "displaced", "between_points", "straight"});
+  s.initial.end_dx = s.initial.type == "displaced" ? initial.number("end_dx") : initial.number("end_dx", 0.0);
+  s.initial.angle = initial.number("angle", -90.0) * kDegToRad;
+  s.initial.tolerance = initial.number("tolerance", 1e-9);
+  requirePositive(initial.key("tolerance"), s.initial.tolerance);
+}
+
+void parseEnvironment(const Section& root, Scene& s) {
+  const Section env = root.section("environment", {"gravity"});
+  s.gravity = env.number("gravity", 9.81);
+  requireNonNegative(env.key("gravity"), s.gravity);
+}
+
+void parseSolver(const Section& root, Scene& s) {
+  const Section solver =
+      root.section("solver", {"dt", "integrator", "formulation", "stabilization", "max_constraint_error"});
+  const SolverSettings defaults;
+  s.solver = defaults;
+  s.solver.dt = solver.number("dt", defaults.dt);
+  requirePositive(solver.key("dt"), s.solver.dt);
+  s.solver.integrator = solver.text("integrator", defaults.integrator);
+  try {
+    makeIntegrator(s.solver.integrator);  // the core's list of integrators is the one that counts
+  } catch (const std::invalid_argument& e) {
+    std::string what = e.what();
+    const std::string prefix = solver.key("integrator") + ": ";
+    if (what.rfind(prefix, 0) == 0) what = what.substr(prefix.size());
+    throw SceneError(solver.key("integrator"), what);
+  }
+  s.solver.formulation = solver.choice("formulation", defaults.formulation, kFormulations);
+  s.solver.stabilization = solver.number("stabilization", defaults.stabilization);
+  requireNonNegative(solver.key("stabilization"), s.solver.stabilization);
+  s.solver.max_constraint_error = solver.number("max_constraint_error", defaults.max_constraint_error);
+  requirePositive(solver.key("max_constraint_error"), s.solver.max_constraint_error);
+}
+
+void parseRun(const Section& root, Scene& s) {
+  const Section run = root.section("run", {"duration"});
+  s.duration = run.number("duration", 20.0);
+  requirePositive(run.key("duration"), s.duration);
+}
+
+// Checks that need more than one section.
+void checkCombination(const Scene& s) {
+  const bool pinned = s.bottom == BottomBoundary::kPinned;
+  if (s.initial.type == "between_points" && !pinned)
+    throw SceneError("initial.type", "'between_points' needs bottom.type: pinned (bottom.position is the end point)");
+  if (pinned && s.initial.type != "between_points")
+    throw SceneError("bottom.type", "'pinned' needs initial.type: between_points (the initial state must end at "
+                                    "bottom.position), got initial.type '" + s.initial.type + "'");
+  if (s.initial.type == "displaced" && !(std::abs(s.initial.end_dx) < s.length))
+    throw SceneError("initial.end_dx", "must be smaller than line.length (" + formatNumber(s.length) +
+                                           " m) in magnitude, got " + formatNumber(s.initial.end_dx));
+  if (pinned && !s.options.axial_flexibility) {
+    const double span = (s.bottom_point - buildTopMotion(s.top)->at(0.0).p).norm();
+    if (span > s.length)
+      throw SceneError("bottom.position", "is " + formatNumber(span) + " m from the top at t = 0 but the line is " +
+                                              formatNumber(s.length) + " m long and inextensible");
+  }
+}
+
+using SectionParser = void (*)(const Section&, Scene&);
+struct SectionEntry {
+  const char* name;
+  SectionParser parse;
+};
+// Top-level sections, parsed in this order.
+const SectionEntry kSections[] = {
+    {"line", parseLine},   {"top", parseTop},           {"bottom", parseBottom}, {"initial", parseInitial},
+    {"environment", parseEnvironment}, {"solver", parseSolver}, {"run", parseRun},
+};
+
+// A copy of an override value without the parser's marks (they would point into the --set text).
+YAML::Node plainCopy(const YAML::Node& n) {
+  if (n.IsScalar()) return YAML::Node(n.Scalar());
+  if (n.IsSequence()) {
+    YAML::Node out(YAML::NodeType::Sequence);
+    for (const auto& item : n) out.push_back(plainCopy(item));
+    return out;
+  }
+  if (n.IsMap()) {
+    YAML::Node out(YAML::NodeType::Map);
+    for (const auto& kv : n) out[kv.first.Scalar()] = plainCopy(kv.second);
+    return out;
+  }
+  return YAML::Node(YAML::NodeType::Null);
+}
+
+std::string trim(const std::string& s) {
+  const size_t b = s.find_first_not_of(" \t");
+  if (b == std::string::npos) return "";
+  return s.substr(b, s.find_last_not_of(" \t") - b + 1);
+}
+
+}  // namespace
+
+Scene parseScene(const YAML::Node& node) {
+  std::vector<std::string> accepted = {"name"};
+  for (const auto& entry : kSections) accepted.push_back(entry.name);
+  const Section root(node, "", accepted);
+  Scene s;
+  s.name = root.text("name", "");
+  for (const auto& entry : kSections) entry.parse(root, s);
+  checkCombination(s);
+  return s;
+}
+
+void applyOverride(YAML::Node& root, const std::string& assignment) {
+  const size_t eq = assignment.find('=');
+  if (eq == std::string::npos)
+    throw SceneError("", "malformed override '" + assignment + "': expected key.path=value");
+  const std::string path = trim(assignment.substr(0, eq));
+  const std::string text = trim(assignment.substr(eq + 1));
+  std::vector<std::string> parts;
+  std::string part;
+  std::istringstream ps(path);
+  while (std::getline(ps, part, '.')) parts.push_back(part);
+  if (path.empty() || path.back() == '.') parts.push_back("");
+  for (const auto& p : parts)
+    if (p.empty() || p.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_") !=
+                         std::string::npos)
+      throw SceneError(path, "malformed override '" + assignment + "': expected key.path=value with keys made of "
+                                                                   "letters, digits and _");
+  if (text.empty()) throw SceneError(path, "override '" + assignment + "' has no value");
+  YAML::Node value;
+  try {
+    value = plainCopy(YAML::Load(text));
+  } catch (const YAML::Exception& e) {
+    throw SceneError(path, "cannot parse override value '" + text + "': " + e.msg);
+  }
+
+  if (!root.IsDefined() || root.IsNull()) root = YAML::Node(YAML::NodeType::Map);
+  if (!root.IsMap()) throw SceneError("", "cannot apply override '" + assignment + "': the scene is not a map");
+  YAML::Node cur = root;  // shares root's tree; moved down with reset() (operator= would overwrite)
+  std::string prefix;
+  for (size_t i = 0; i + 1 < parts.size(); ++i) {
+    prefix += (i ? "." : "") + parts[i];
+    YAML::Node next = cur[parts[i]];
+    if (!next.IsDefined() || next.IsNull()) {
+      cur[parts[i]] = YAML::Node(YAML::NodeType::Map);
+      next.reset(cur[parts[i]]);
+    } else if (!next.IsMap()) {
+      throw SceneError(prefix, "is a value, not a section: cannot set " + path);
+    }
+    cur.reset(next);
+  }
+  cur[parts.back()] = value;
+}
+
+Scene loadSceneFile(const std::string& path, const std::vector<std::string>& overrides) {
+  if (std::filesystem::is_directory(path)) throw SceneError("", "scene file '" + path + "' is a directory");
+  std::ifstream in(path);
+  if (!in) throw SceneError("", "cannot open scene file '" + path + "': " + std::strerror(errno));
+  YAML::Node root;
+  try {
+    root = YAML::Load(in);
+  } catch (const YAML::ParserException& e) {
+    throw SceneError("", path + ":" + std::to_string(e.mark.line + 1) + ":" + std::to_string(e.mark.column + 1) +
+                             ": YAML syntax error: " + e.msg);
+  } catch (const YAML::Exception& e) {
+    throw SceneError("", "cannot read scene file '" + path + "': " + e.msg);
+  }
+  for (const auto& o : overrides) applyOverride(root, o);
+  Scene s = parseScene(root);
+  if (s.name.empty()) s.name = std::filesystem::path(path).stem().string();
+  return s;
+}
+
+}  // namespace riser_sim
