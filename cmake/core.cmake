@@ -3,6 +3,7 @@ add_library(riser_sim_core
   src/core/line_properties.cpp
   src/core/model.cpp
   src/core/top_motion.cpp
+  src/core/external_motion.cpp
   src/core/forces/gravity.cpp
   src/core/forces/axial_spring.cpp
   src/core/forces/bending_spring.cpp
