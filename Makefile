@@ -21,5 +21,8 @@ sim: build
 bench: build
 	@$(SETUP); bench/run_all.sh
 
+demo:
+	@scripts/demo.sh
+
 clean:
 	rm -rf $(WS) out

@@ -11,6 +11,7 @@ Position of the vessel reference point in the world frame (z up), t [s] of ROS t
 Pitch (rotation about world y): pitch/amplitude [deg] * e(t) * cos(2 pi t / pitch/period + pitch/phase).
 Jitter (optional): jitter/position [m] Gaussian noise per axis, jitter/timing [0..1) relative spread of the
 publish period, jitter/seed.
+Also publishes vessel/markers (visualization_msgs/MarkerArray: hull box, sea backdrop) at ~marker_rate.
 Uses ROS time throughout, so it follows /clock under /use_sim_time. With ~duration > 0 it exits after that
 many seconds of motion (mark it required in a launch file to end the whole launch).
 """
@@ -19,7 +20,7 @@ import random
 
 import rospy
 from geometry_msgs.msg import PoseStamped
-from visualization_msgs.msg import Marker
+from visualization_msgs.msg import Marker, MarkerArray
 
 
 def _param(name, default, check=None, what=""):
@@ -97,10 +98,10 @@ class VesselMotion(object):
         self.jitter_position = _param("jitter/position", 0.0, lambda v: v >= 0, "must be >= 0")
         self.jitter_timing = _param("jitter/timing", 0.0, lambda v: 0 <= v < 1, "must be in [0, 1)")
         self.rng = random.Random(int(rospy.get_param("~jitter/seed", 1)))
-        self.publish_marker = _param("marker", True)
+        self.marker_rate = _param("marker_rate", 10.0, lambda v: v >= 0, "must be >= 0 (0 = no markers)")
         self.pub = rospy.Publisher("vessel/pose", PoseStamped, queue_size=10)
-        self.marker_pub = rospy.Publisher("vessel/marker", Marker, queue_size=2, latch=True) \
-            if self.publish_marker else None
+        self.marker_pub = rospy.Publisher("vessel/markers", MarkerArray, queue_size=2, latch=True) \
+            if self.marker_rate > 0 else None
 
     def envelope(self, t):
         if self.fade_in <= 0.0 or t >= self.fade_in:
@@ -131,16 +132,27 @@ class VesselMotion(object):
         msg.pose.orientation.w = math.cos(0.5 * pitch)
         return msg
 
-    def marker(self, pose_msg):
-        m = Marker()
-        m.header = pose_msg.header
-        m.ns, m.id, m.type, m.action = "vessel", 0, Marker.CUBE, Marker.ADD
-        m.pose = pose_msg.pose
-        m.pose.position.z += 1.5  # hull mostly above the hang-off point
-        m.scale.x, m.scale.y, m.scale.z = 24.0, 8.0, 4.0
-        m.color.r, m.color.g, m.color.b, m.color.a = 0.55, 0.6, 0.65, 0.8
-        m.frame_locked = False
-        return m
+    def markers(self, pose_msg):
+        """Hull (a box around the hang-off point) and a translucent sea behind the x-z plane."""
+        hull = Marker()
+        hull.header = pose_msg.header
+        hull.ns, hull.id, hull.type, hull.action = "vessel", 0, Marker.CUBE, Marker.ADD
+        hull.pose.orientation = pose_msg.pose.orientation
+        hull.pose.position.x = pose_msg.pose.position.x
+        hull.pose.position.y = pose_msg.pose.position.y
+        hull.pose.position.z = pose_msg.pose.position.z + 1.0  # 5 m draft, 5 m freeboard
+        hull.scale.x, hull.scale.y, hull.scale.z = 40.0, 12.0, 10.0
+        hull.color.r, hull.color.g, hull.color.b, hull.color.a = 0.75, 0.75, 0.78, 0.85
+        sea = Marker()
+        sea.header = pose_msg.header
+        sea.ns, sea.id, sea.type, sea.action = "sea", 0, Marker.CUBE, Marker.ADD
+        sea.pose.orientation.w = 1.0
+        sea.pose.position.x = self.origin[0]
+        sea.pose.position.y = self.origin[1] + 10.0  # behind the riser plane seen from -y
+        sea.pose.position.z = self.origin[2] - 150.0
+        sea.scale.x, sea.scale.y, sea.scale.z = 1000.0, 1.0, 300.0
+        sea.color.r, sea.color.g, sea.color.b, sea.color.a = 0.05, 0.3, 0.55, 0.5
+        return MarkerArray(markers=[hull, sea])
 
     def next_period(self):
         period = 1.0 / self.rate
@@ -160,6 +172,7 @@ class VesselMotion(object):
                       self.transit.start, self.rate,
                       ", duration %.1f s" % self.duration if self.duration > 0 else "")
         wake = start
+        last_marker = None
         while not rospy.is_shutdown():
             now = rospy.Time.now()
             t = (now - start).to_sec()
@@ -168,8 +181,10 @@ class VesselMotion(object):
                 break
             msg = self.message(now, t)
             self.pub.publish(msg)
-            if self.marker_pub is not None:
-                self.marker_pub.publish(self.marker(msg))
+            if self.marker_pub is not None and (last_marker is None or
+                                                (now - last_marker).to_sec() >= 1.0 / self.marker_rate):
+                self.marker_pub.publish(self.markers(msg))
+                last_marker = now
             wake = max(wake + self.next_period(), now)
             try:
                 rospy.sleep(wake - rospy.Time.now())
