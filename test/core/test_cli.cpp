@@ -1,0 +1,249 @@
+// riser_sim_cli end to end: runs the built binary (RISER_SIM_CLI_BINARY, set by cmake/cli.cmake)
+// and checks exit codes, error messages, the JSON summary and the CSV time series.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#ifndef RISER_SIM_CLI_BINARY
+#error "RISER_SIM_CLI_BINARY must be defined (cmake/cli.cmake)"
+#endif
+
+namespace {
+
+const std::string kScenes = std::string(RISER_SIM_SOURCE_DIR) + "/config/scenes/";
+const std::string kChain = kScenes + "hanging_chain.yaml";
+
+std::string tempPath(const std::string& name) {
+  return testing::TempDir() + "/riser_sim_test_cli_" + std::to_string(getpid()) + "_" + name;
+}
+
+std::string readFile(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+struct CliRun {
+  int code = -1;
+  std::string out, err;
+};
+
+// Runs the CLI with `args` (already shell-quoted where needed).
+CliRun runCli(const std::string& args) {
+  const std::string err_path = tempPath("stderr.txt");
+  const std::string cmd = std::string(RISER_SIM_CLI_BINARY) + " " + args + " 2>" + err_path;
+  CliRun r;
+  std::FILE* p = popen(cmd.c_str(), "r");
+  if (!p) return r;
+  char buf[4096];
+  size_t n;
+  while ((n = std::fread(buf, 1, sizeof(buf), p)) > 0) r.out.append(buf, n);
+  const int status = pclose(p);
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.err = readFile(err_path);
+  std::filesystem::remove(err_path);
+  return r;
+}
+
+// Minimal parser for the summary: one flat JSON object of numbers, strings, booleans and null.
+// Values are kept as their JSON text (strings unquoted). Returns false on anything else.
+bool parseFlatJson(const std::string& line, std::map<std::string, std::string>& out) {
+  size_t i = 0;
+  const auto skip = [&] {
+    while (i < line.size() && std::isspace(static_cast<unsigned char>(line[i]))) ++i;
+  };
+  const auto str = [&](std::string& s) {
+    if (line[i] != '"') return false;
+    for (++i; i < line.size() && line[i] != '"'; ++i) {
+      if (line[i] == '\\') ++i;
+      s += line[i];
+    }
+    return i++ < line.size();
+  };
+  skip();
+  if (i >= line.size() || line[i++] != '{') return false;
+  for (;;) {
+    skip();
+    std::string key, value;
+    if (!str(key)) return false;
+    skip();
+    if (line[i++] != ':') return false;
+    skip();
+    if (line[i] == '"') {
+      if (!str(value)) return false;
+    } else {
+      while (i < line.size() && line[i] != ',' && line[i] != '}') value += line[i++];
+      if (value != "true" && value != "false" && value != "null") {
+        char* end = nullptr;
+        std::strtod(value.c_str(), &end);
+        if (value.empty() || *end != '\0') return false;
+      }
+    }
+    out[key] = value;
+    skip();
+    if (i >= line.size()) return false;
+    if (line[i] == '}') return true;
+    if (line[i++] != ',') return false;
+  }
+}
+
+// Parses CSV rows into numbers; fails the test on a non-numeric or non-finite field.
+std::vector<std::vector<double>> csvRows(const std::string& text, std::string& header) {
+  std::istringstream in(text);
+  std::getline(in, header);
+  std::vector<std::vector<double>> rows;
+  std::string line;
+  while (std::getline(in, line)) {
+    std::vector<double> row;
+    std::stringstream ls(line);
+    std::string field;
+    while (std::getline(ls, field, ',')) {
+      char* end = nullptr;
+      const double v = std::strtod(field.c_str(), &end);
+      EXPECT_TRUE(!field.empty() && *end == '\0' && std::isfinite(v)) << "bad field '" << field << "' in " << line;
+      row.push_back(v);
+    }
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+const char* kHeader = "t,x_top,y_top,x_end,y_end,tension_top,tension_max,energy,work,energy_drift,constraint_error";
+
+}  // namespace
+
+TEST(Cli, HelpExitsZero) {
+  const CliRun r = runCli("--help");
+  EXPECT_EQ(r.code, 0);
+  EXPECT_NE(r.out.find("--scene FILE"), std::string::npos);
+}
+
+TEST(Cli, BadOverrideExits2NamingTheKey) {
+  const CliRun r = runCli("--scene " + kChain + " --set line.elements=0");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("riser_sim_cli: error: line.elements: must be >= 1"), std::string::npos) << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out;
+}
+
+TEST(Cli, BadInputExits2) {
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"", "--scene FILE is required"},
+      {"--scene " + kChain + " --frobnicate", "unknown option '--frobnicate'"},
+      {"--scene " + kChain + " --duration 0", "--duration"},
+      {"--scene " + kChain + " --set line.lenght=3", "line.lenght: unknown key"},
+      {"--scene " + kChain + " --set solver.integrator=euler", "solver.integrator: unknown integrator 'euler'"},
+      {"--scene /nonexistent/riser_sim.yaml", "cannot open scene file"},
+      {"--scene " + kChain + " --csv /nonexistent/dir/out.csv", "--csv: cannot open"},
+  };
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.first);
+    const CliRun r = runCli(c.first);
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.err.find(c.second), std::string::npos) << r.err;
+  }
+}
+
+TEST(Cli, ShortRunWritesSummaryAndCsv) {
+  const std::string csv = tempPath("chain.csv");
+  // 0.5 s at dt = 1e-4 (hanging_chain.yaml): 5000 steps, a row every 0.1 s.
+  const CliRun r = runCli("--scene " + kChain + " --duration 0.5 --output-dt 0.1 --summary --quiet --csv " + csv);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(r.err.empty()) << "--quiet prints nothing on success: " << r.err;
+
+  std::map<std::string, std::string> j;
+  ASSERT_TRUE(parseFlatJson(r.out, j)) << r.out;
+  for (const char* key : {"wall_s", "sim_s", "steps", "rtf", "x_end", "y_end", "tension_top", "max_constraint_error",
+                          "energy_drift", "scene", "n", "dt", "integrator", "formulation", "statics_iterations",
+                          "end_force_x"})
+    EXPECT_EQ(j.count(key), 1u) << "summary lacks " << key << ": " << r.out;
+  EXPECT_EQ(j["status"], "ok");
+  EXPECT_EQ(j["scene"], "hanging_chain");
+  EXPECT_EQ(j["n"], "8");
+  EXPECT_EQ(j["steps"], "5000");
+  EXPECT_EQ(j["integrator"], "rk4");
+  EXPECT_EQ(j["formulation"], "absolute");
+  EXPECT_DOUBLE_EQ(std::stod(j["sim_s"]), 0.5);
+  EXPECT_GT(std::stod(j["wall_s"]), 0.0);
+
+  std::string header;
+  const auto rows = csvRows(readFile(csv), header);
+  EXPECT_EQ(header, kHeader);
+  ASSERT_EQ(rows.size(), 6u);  // t = 0, 0.1, ..., 0.5
+  for (size_t k = 0; k < rows.size(); ++k) {
+    ASSERT_EQ(rows[k].size(), 11u);
+    EXPECT_NEAR(rows[k][0], 0.1 * k, 1e-9);  // the step count is exact; %.9g rounding only
+  }
+  // The summary's end point is the CSV's last row (both %.9g of the same double).
+  EXPECT_EQ(std::stod(j["x_end"]), rows.back()[3]);
+  EXPECT_EQ(std::stod(j["y_end"]), rows.back()[4]);
+  // Released from a straight line at -45 deg: the start row is that line (L = 10 m).
+  EXPECT_NEAR(rows[0][3], 10.0 / std::sqrt(2.0), 1e-6);
+  EXPECT_NEAR(rows[0][4], -10.0 / std::sqrt(2.0), 1e-6);
+  std::filesystem::remove(csv);
+}
+
+TEST(Cli, DurationFromSetAndDurationOption) {
+  // --duration wins over run.duration set with --set.
+  const CliRun r = runCli("--scene " + kChain + " --set run.duration=5 --duration 0.01 --summary --quiet");
+  ASSERT_EQ(r.code, 0) << r.err;
+  std::map<std::string, std::string> j;
+  ASSERT_TRUE(parseFlatJson(r.out, j)) << r.out;
+  EXPECT_EQ(j["steps"], "100");
+}
+
+TEST(Cli, DivergenceExits3AndCsvHasNoNan) {
+  const std::string csv = tempPath("diverged.csv");
+  // dt = 0.05 s is far beyond RK4's stability limit for this stiff line (axial period ~1e-3 s).
+  const CliRun r =
+      runCli("--scene " + kChain + " --set solver.dt=0.05 --duration 5 --output-dt 0.05 --summary --csv " + csv);
+  EXPECT_EQ(r.code, 3) << r.err;
+  EXPECT_NE(r.err.find("diverged at t ="), std::string::npos) << r.err;
+  std::map<std::string, std::string> j;
+  ASSERT_TRUE(parseFlatJson(r.out, j)) << r.out;
+  EXPECT_EQ(j["status"], "diverged");
+  EXPECT_EQ(r.out.find("nan"), std::string::npos) << r.out;
+  const std::string text = readFile(csv);
+  EXPECT_EQ(text.find("nan"), std::string::npos);
+  EXPECT_EQ(text.find("inf"), std::string::npos);
+  std::string header;
+  const auto rows = csvRows(text, header);  // checks every field is finite
+  EXPECT_EQ(header, kHeader);
+  EXPECT_GE(rows.size(), 1u);
+  std::filesystem::remove(csv);
+}
+
+TEST(Cli, StaticsFailureExits3) {
+  // A tolerance below round-off cannot be met: the initial statics report non-convergence.
+  const CliRun r = runCli("--scene " + kScenes + "paper_table1.yaml --set initial.tolerance=1e-300 --quiet");
+  EXPECT_EQ(r.code, 3);
+  EXPECT_NE(r.err.find("riser_sim_cli: error: initial"), std::string::npos) << r.err;
+}
+
+TEST(Cli, EveryShippedSceneRuns) {
+  for (const auto& entry : std::filesystem::directory_iterator(kScenes)) {
+    if (entry.path().extension() != ".yaml") continue;
+    SCOPED_TRACE(entry.path().string());
+    const CliRun r = runCli("--scene " + entry.path().string() + " --duration 0.02 --summary --quiet");
+    EXPECT_EQ(r.code, 0) << r.err;
+    std::map<std::string, std::string> j;
+    EXPECT_TRUE(parseFlatJson(r.out, j)) << r.out;
+  }
+}
+
+// catkin_add_gtest links gtest without gtest_main here; a main of our own works either way.
+int main(int argc, char** argv) {
+  testing::InitGoogleTest(&argc, argv);
+  return RUN_ALL_TESTS();
+}
