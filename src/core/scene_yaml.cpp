@@ -162,20 +162,8 @@ class Section {
 
 // ---- sections ----
 
-void parseLine(const Section& root, Scene& s) {
-  if (!root.has("line")) throw SceneError("line", "missing required section (needs at least length, elements "
-                                                  "and the cross-section properties)");
-  const Section line = root.section(
-      "line", {"length", "elements", "outer_diameter", "inner_diameter", "youngs_modulus", "density", "EA", "EI",
-               "mass_per_length", "end_mass", "bending", "axial_flexibility", "axial_damping", "bending_damping"});
-  s.length = line.number("length");
-  requirePositive(line.key("length"), s.length);
-  s.elements = line.integer("elements");
-  if (s.elements < 1) throw SceneError(line.key("elements"), "must be >= 1, got " + std::to_string(s.elements));
-  s.options.bending = line.boolean("bending", true);
-  s.options.axial_flexibility = line.boolean("axial_flexibility", true);
-
-  // Cross-section: geometry + material, or EA / EI / mass_per_length directly (never both).
+// line: geometry + material, or EA / EI / mass_per_length directly (never both).
+void parseCrossSection(const Section& line, Scene& s) {
   const bool geometry = line.has("youngs_modulus") || line.has("density");
   std::string direct_key;
   for (const char* k : {"EA", "EI", "mass_per_length"})
@@ -218,6 +206,22 @@ void parseLine(const Section& root, Scene& s) {
     s.line.EI = s.options.bending ? line.number("EI") : line.number("EI", 0.0);
     requireNonNegative(line.key("EI"), s.line.EI);
   }
+}
+
+void parseLine(const Section& root, Scene& s) {
+  if (!root.has("line")) throw SceneError("line", "missing required section (needs at least length, elements "
+                                                  "and the cross-section properties)");
+  const Section line = root.section(
+      "line", {"length", "elements", "outer_diameter", "inner_diameter", "youngs_modulus", "density", "EA", "EI",
+               "mass_per_length", "end_mass", "bending", "axial_flexibility", "axial_damping", "bending_damping"});
+  s.length = line.number("length");
+  requirePositive(line.key("length"), s.length);
+  s.elements = line.integer("elements");
+  if (s.elements < 1) throw SceneError(line.key("elements"), "must be >= 1, got " + std::to_string(s.elements));
+  s.options.bending = line.boolean("bending", true);
+  s.options.axial_flexibility = line.boolean("axial_flexibility", true);
+
+  parseCrossSection(line, s);
   s.line.axial_damping = line.number("axial_damping", 0.0);
   requireNonNegative(line.key("axial_damping"), s.line.axial_damping);
   s.line.bending_damping = line.number("bending_damping", 0.0);
