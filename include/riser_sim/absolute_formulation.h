@@ -19,20 +19,30 @@ class AbsoluteFormulation : public Formulation {
   double constraintError(const VecX& y, const PointMotion& top) const override;
   double kineticEnergy(double t, const VecX& y) override;
   const Kinematics& lastKinematics() const override { return kin_; }
+  double lastConstraintError() const override { return last_constraint_error_; }
 
  private:
+  // Per rfe: accelerations of A_i and of its end E_i per unit force at A_i / E_i (2x2 compliances,
+  // world frame) and the free accelerations of A_i and E_i under the applied forces.
+  struct Compliance {
+    Mat2 AA, AE, EE;
+    Vec2 aA, aE;
+  };
   void massBlocks(double t);  // fills M_, h_ from kin_
+  void rigidBody(int i, bool axial);     // closed form for the rigid parts alone
+  void generalBody(int i, bool axial);   // any inertia (added mass, internal fluid): 4x4 Cholesky
+  void bodyAcceleration(int i, bool axial, const Vec2& FA, const Vec2& FE, double* qdd) const;
   int constraints() const { return model_.bodies() + (model_.bottom() == BottomBoundary::kPinned ? 1 : 0); }
 
   const Model& model_;
   double omega_;
+  bool rigid_only_ = true;
+  double last_constraint_error_ = 0.0;  // no term adds inertia: closed-form M^-1
   Kinematics kin_;
   VecX Q_, h_;
   AlignedVector<Mat4> M_, Minv_;
-  AlignedVector<Mat42> U_, V_;
-  AlignedVector<Vec4> a_;
-  AlignedVector<Mat24> G_;
-  AlignedVector<Vec2> gamma_;
+  AlignedVector<Compliance> comp_;
+  std::vector<double> body_inv_;  // rigid path: 6 coefficients per rfe (see rigidBody)
   AlignedVector<Mat2> diag_, low_, up_;
   AlignedVector<Vec2> rhs_, lambda_;
   Reactions reactions_;

@@ -32,6 +32,8 @@ class Formulation {
   virtual double constraintError(const VecX& y, const PointMotion& top) const = 0;
   // Kinematics of the last derivative() call.
   virtual const Kinematics& lastKinematics() const = 0;
+  // Largest joint-constraint violation seen by the last derivative() call [m] (0 when exact).
+  virtual double lastConstraintError() const = 0;
   // Kinetic energy of the line (with every term's inertia) for state y [J].
   virtual double kineticEnergy(double t, const VecX& y) = 0;
 };

@@ -29,6 +29,12 @@ struct Rfe {
   double s_begin = 0.0;          // arc length of A_i from the top, unstretched [m]
   RigidPart part[3];             // parts (1), (2) and, on rfe n only, the end mass
   int num_parts = 2;
+  // Sums over the parts (s_p = s0_p + kappa_p Δ): m = Σm, mk = Σ m kappa, S(Δ) = S0 + mk Δ,
+  // Σ m kappa s = Sk0 + mk Δ, I_A(Δ) = Σ (m s² + J) = I0 + 2 Sk0 Δ + mk Δ².
+  double mass = 0.0, mass_k = 0.0, S0 = 0.0, Sk0 = 0.0, I0 = 0.0;
+  double firstMoment(double delta) const { return S0 + mass_k * delta; }
+  double firstMomentK(double delta) const { return Sk0 + mass_k * delta; }
+  double inertiaAboutA(double delta) const { return I0 + 2.0 * Sk0 * delta + mass_k * delta * delta; }
 };
 
 enum class BottomBoundary { kFree, kPinned };

@@ -33,6 +33,14 @@ Model::Model(double length, int segments, const LineProperties& props, const Mod
       r.part[2] = RigidPart{end_mass, 0.0, r.length, 1.0};  // point mass m_s at the free end
       r.num_parts = 3;
     }
+    for (int p = 0; p < r.num_parts; ++p) {
+      const RigidPart& q = r.part[p];
+      r.mass += q.mass;
+      r.mass_k += q.mass * q.kappa;
+      r.S0 += q.mass * q.s0;
+      r.Sk0 += q.mass * q.kappa * q.s0;
+      r.I0 += q.mass * q.s0 * q.s0 + q.inertia;
+    }
   }
 }
 

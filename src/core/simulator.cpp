@@ -80,7 +80,7 @@ void Simulator::checkDivergence() {
   if (!y_.allFinite()) {
     why << "state is not finite (NaN/Inf) at t = " << t_ << " s";
   } else {
-    const double err = constraintError();
+    const double err = formulation_->lastConstraintError();  // monitored at the last stage, free
     max_constraint_error_ = std::max(max_constraint_error_, err);
     const double limit = settings_.max_constraint_error * model_->segmentLength();
     if (err > limit)

@@ -3,14 +3,15 @@
 namespace riser_sim {
 
 void Gravity::addForces(const Model& model, const Kinematics& kin, double, VecX& Q) const {
+  // Σ over parts of B_p^T (0, -m_p g): [0, -m g, -mk g sinφ, -S(Δ) g cosφ].
   const double g = model.gravity();
   for (int i = 0; i < model.bodies(); ++i) {
     const Rfe& r = model.rfe(i);
     const BodyKinematics& b = kin[i];
-    for (int p = 0; p < r.num_parts; ++p) {
-      const RigidPart& part = r.part[p];
-      Q.segment<4>(4 * i) += pointForce(b, part.s0, part.kappa, Vec2(0.0, -part.mass * g));
-    }
+    double* q = Q.data() + 4 * i;
+    q[kY] -= r.mass * g;
+    q[kDelta] -= r.mass_k * g * b.s;
+    q[kPhi] -= r.firstMoment(b.delta) * g * b.c;
   }
 }
 
