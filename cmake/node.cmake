@@ -1,1 +1,39 @@
-# riser_sim_node (see src/node)
+# riser_sim_node (see src/node, docs/ros_interface.md) and its tests (test/ros).
+add_library(riser_sim_ros
+  src/node/xmlrpc_yaml.cpp
+  src/node/node_params.cpp
+  src/node/vessel_input.cpp
+  src/node/line_messages.cpp
+  src/node/line_markers.cpp
+  src/node/timing_stats.cpp
+  src/node/riser_sim_node.cpp
+)
+target_include_directories(riser_sim_ros PUBLIC include ${catkin_INCLUDE_DIRS})
+target_link_libraries(riser_sim_ros riser_sim_core ${catkin_LIBRARIES})
+add_dependencies(riser_sim_ros ${PROJECT_NAME}_generate_messages_cpp ${catkin_EXPORTED_TARGETS})
+
+add_executable(riser_sim_node src/node/main.cpp)
+target_link_libraries(riser_sim_node riser_sim_ros)
+install(TARGETS riser_sim_node riser_sim_ros
+  RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION}
+  LIBRARY DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION}
+  ARCHIVE DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION})
+install(FILES launch/riser_sim.launch launch/two_risers.launch DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION}/launch)
+install(FILES config/node_defaults.yaml DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION}/config)
+
+if(CATKIN_ENABLE_TESTING)
+  find_package(rostest REQUIRED)
+  # Plain gtests of the ROS-side helpers (no master needed).
+  if(EXISTS ${CMAKE_CURRENT_SOURCE_DIR}/test/ros/test_node_helpers.cpp)
+    catkin_add_gtest(test_node_helpers test/ros/test_node_helpers.cpp)
+    target_link_libraries(test_node_helpers riser_sim_ros)
+  endif()
+  # Node tests: test/ros/<name>.test launches the node(s) and the gtest built from test/ros/test_<name>.cpp.
+  file(GLOB RISER_SIM_ROSTESTS RELATIVE ${CMAKE_CURRENT_SOURCE_DIR}/test/ros ${CMAKE_CURRENT_SOURCE_DIR}/test/ros/*.test)
+  foreach(test_file ${RISER_SIM_ROSTESTS})
+    get_filename_component(t ${test_file} NAME_WE)
+    add_rostest_gtest(test_${t} test/ros/${t}.test test/ros/test_${t}.cpp)
+    target_link_libraries(test_${t} riser_sim_ros ${catkin_LIBRARIES})
+    add_dependencies(test_${t} riser_sim_node)
+  endforeach()
+endif()

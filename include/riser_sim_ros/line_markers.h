@@ -1,0 +1,45 @@
+// rviz markers of the line, sized once and filled in place: the line coloured per vertex by axial
+// force (LINE_STRIP) with a colour-bar legend of the current range (LINE_STRIP + TEXT), one sphere per
+// rfe joint (SPHERE_LIST) and the end mass (SPHERE), the top tension (TEXT), and flat CUBE markers for
+// the water surface and the seabed when the scene has them.
+#pragma once
+#include <optional>
+#include <string>
+
+#include <visualization_msgs/MarkerArray.h>
+
+#include "riser_sim/model.h"
+#include "riser_sim/outputs.h"
+#include "riser_sim_ros/node_params.h"
+
+namespace riser_sim_ros {
+
+// Horizontal planes drawn when present (world z [m]). The scene format has neither yet; the node
+// fills them once it does.
+struct Surfaces {
+  std::optional<double> water_level;
+  std::optional<double> seabed;
+};
+
+// Colour of x in [lo, hi]: blue (low) -> cyan -> green -> yellow -> red (high).
+std_msgs::ColorRGBA tensionColour(double x, double lo, double hi);
+
+class LineMarkers {
+ public:
+  // Marker ids (each marker also has its own ns: line, nodes, end_mass, top_tension, legend, ...).
+  enum Id { kLine = 0, kNodes, kEndMass, kTopText, kLegendBar, kLegendLow, kLegendHigh, kLegendTitle, kWater, kSeabed };
+
+  LineMarkers(const riser_sim::Model& model, const std::string& fixed_frame, const MarkerParams& params,
+              const Surfaces& surfaces = {});
+  void fill(const riser_sim::LineOutputs& out, const ros::Time& stamp);
+  visualization_msgs::MarkerArray msg;
+
+ private:
+  visualization_msgs::Marker& marker(int id) { return msg.markers[index_[id]]; }
+  int index_[kSeabed + 1] = {-1, -1, -1, -1, -1, -1, -1, -1, -1, -1};
+  double length_, text_height_;
+  Surfaces surfaces_;
+  static constexpr int kBarVertices = 11;
+};
+
+}  // namespace riser_sim_ros

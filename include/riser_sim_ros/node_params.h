@@ -1,0 +1,56 @@
+// riser_sim_node's own private parameters (everything outside ~scene), read and validated once.
+// Every error names the parameter: "~rates/tension: must be >= 0 (0 = off), got -1".
+#pragma once
+#include <stdexcept>
+#include <string>
+
+#include <Eigen/Core>
+#include <ros/node_handle.h>
+
+#include "riser_sim/external_motion.h"
+
+namespace riser_sim_ros {
+
+class ParamError : public std::runtime_error {
+ public:
+  ParamError(const std::string& name, const std::string& what) : std::runtime_error("~" + name + ": " + what) {}
+};
+
+struct PublishRates {  // [Hz], 0 = off
+  double tension = 20.0;
+  double state = 10.0;
+  double markers = 10.0;
+  double tf = 20.0;
+  double wrench = 20.0;
+  double diagnostics = 1.0;
+};
+
+struct MarkerParams {
+  double line_width = 0.0;   // [m], 0 = L / 150
+  double node_scale = 0.0;   // sphere diameter [m], 0 = 2.5 line widths
+  double text_height = 0.0;  // [m], 0 = L / 25
+};
+
+struct NodeParams {
+  std::string vessel_input = "pose";   // pose | odom | tf
+  std::string fixed_frame = "world";
+  std::string vessel_frame = "vessel";  // tf input: child frame looked up in fixed_frame
+  std::string expected_frame;           // header.frame_id of pose/odom input; default fixed_frame
+  std::string tf_prefix;                // default: node name without the leading slash
+  Eigen::Vector3d hangoff_offset = Eigen::Vector3d::Zero();  // hang-off point in the vessel frame [m]
+  double pose_timeout = 1.0;       // no valid pose for this long: warn and hold [s]
+  double max_out_of_plane = 1.0;   // warn when the hang-off's world y exceeds this [m]
+  double tf_poll_rate = 50.0;      // tf input: lookup rate [Hz]
+  PublishRates rates;
+  double loop_rate = 500.0;        // integration loop wake-ups per wall second [Hz]
+  int max_steps_per_cycle = 500;   // cap of solver steps per wake-up
+  double max_lag = 0.5;            // backlog (ROS time not yet simulated) dropped beyond this [s]
+  MarkerParams markers;
+  riser_sim::ExternalMotionOptions motion;  // ~motion/*: smoothing of the vessel samples
+};
+
+// Reads and validates the private parameters of `pnh`; `node_name` gives the default tf_prefix.
+// Throws ParamError.
+NodeParams loadNodeParams(const ros::NodeHandle& pnh, const std::string& node_name);
+
+}  // namespace riser_sim_ros

@@ -1,0 +1,90 @@
+// Vessel poses in: geometry_msgs/PoseStamped (vessel/pose), nav_msgs/Odometry (vessel/odom), or a tf
+// lookup of vessel_frame in fixed_frame. Each pose is checked, turned into the world position of the
+// hang-off point (vessel pose * hangoff_offset) and copied into a small mutex-protected buffer that the
+// integration thread drains; callbacks never wait for the integration.
+#pragma once
+#include <array>
+#include <atomic>
+#include <mutex>
+#include <string>
+
+#include <Eigen/Geometry>
+#include <geometry_msgs/Pose.h>
+#include <geometry_msgs/PoseStamped.h>
+#include <nav_msgs/Odometry.h>
+#include <ros/ros.h>
+#include <std_msgs/Header.h>
+#include <tf2_ros/buffer.h>
+
+#include "riser_sim_ros/node_params.h"
+
+namespace riser_sim_ros {
+
+struct VesselSample {
+  ros::Time stamp;               // header stamp of the pose
+  ros::Time received;            // ROS time when it arrived
+  Eigen::Vector3d hangoff = Eigen::Vector3d::Zero();  // hang-off point in fixed_frame [m]
+};
+
+class SampleBuffer {
+ public:
+  static constexpr int kCapacity = 64;
+  // Copies s in; when full the oldest sample is dropped (counted).
+  void push(const VesselSample& s);
+  // Moves every buffered sample, oldest first, into out; returns how many.
+  int drain(std::array<VesselSample, kCapacity>& out);
+  // Latest sample pushed since clear() (false when none).
+  bool latest(VesselSample& s) const;
+  void clear();
+  long overflows() const { return overflows_; }
+
+ private:
+  mutable std::mutex mutex_;
+  std::array<VesselSample, kCapacity> ring_;
+  int head_ = 0, count_ = 0;
+  VesselSample latest_;
+  bool has_latest_ = false;
+  long overflows_ = 0;
+};
+
+// Checks one pose: frame_id (leading '/' ignored) equals expected_frame, stamp non-zero, all values
+// finite, quaternion of norm within 1 % of 1 (normalised then). Fills `pose`; returns an empty string
+// when valid, else the reason.
+std::string checkPose(const std_msgs::Header& header, const geometry_msgs::Pose& msg,
+                      const std::string& expected_frame, Eigen::Isometry3d& pose);
+
+// Paper coordinates of a world point: paper x = world x, paper y = world z; world y is dropped
+// (orthogonal projection onto the riser's x-z plane).
+inline Eigen::Vector2d toPaper(const Eigen::Vector3d& w) { return Eigen::Vector2d(w.x(), w.z()); }
+
+class VesselInput {
+ public:
+  VesselInput(ros::NodeHandle& nh, const NodeParams& params, tf2_ros::Buffer& tf, SampleBuffer& out);
+  // Topic (pose/odom) or "tf <fixed> <- <vessel>" the input listens to, for messages.
+  const std::string& source() const { return source_; }
+  long accepted() const { return accepted_; }
+  long rejected() const { return rejected_; }
+  std::string lastRejection() const;
+  // Forgets the last stamp (after ROS time jumped backwards).
+  void restart();
+
+ private:
+  void onPose(const geometry_msgs::PoseStamped::ConstPtr& msg);
+  void onOdom(const nav_msgs::Odometry::ConstPtr& msg);
+  void onTfTimer(const ros::TimerEvent&);
+  void handle(const std_msgs::Header& header, const geometry_msgs::Pose& pose);
+  void reject(const std::string& why);
+
+  const NodeParams& params_;
+  tf2_ros::Buffer& tf_;
+  SampleBuffer& out_;
+  ros::Subscriber sub_;
+  ros::Timer timer_;
+  std::string source_;
+  mutable std::mutex mutex_;  // callbacks may run on several spinner threads
+  ros::Time last_stamp_;
+  std::string last_rejection_;
+  std::atomic<long> accepted_{0}, rejected_{0};
+};
+
+}  // namespace riser_sim_ros

@@ -1,0 +1,167 @@
+#include "riser_sim_ros/line_markers.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace riser_sim_ros {
+
+namespace {
+std_msgs::ColorRGBA rgba(double r, double g, double b, double a = 1.0) {
+  std_msgs::ColorRGBA c;
+  c.r = r;
+  c.g = g;
+  c.b = b;
+  c.a = a;
+  return c;
+}
+
+geometry_msgs::Point point(double x, double z) {
+  geometry_msgs::Point p;
+  p.x = x;
+  p.y = 0.0;
+  p.z = z;
+  return p;
+}
+
+// Tension in kN with a sensible number of digits.
+void formatKn(char* buf, size_t n, const char* label, double newton) {
+  const double kn = newton / 1e3;
+  const double a = std::abs(kn);
+  std::snprintf(buf, n, a >= 100 ? "%s%.0f kN" : (a >= 10 ? "%s%.1f kN" : "%s%.2f kN"), label, kn);
+}
+}  // namespace
+
+std_msgs::ColorRGBA tensionColour(double x, double lo, double hi) {
+  const double s = hi > lo ? std::clamp((x - lo) / (hi - lo), 0.0, 1.0) : 0.5;
+  // Piecewise linear through blue, cyan, green, yellow, red.
+  static const double stops[5][3] = {{0.1, 0.2, 1.0}, {0.0, 0.9, 1.0}, {0.1, 0.9, 0.1}, {1.0, 0.9, 0.0}, {1.0, 0.1, 0.1}};
+  const double f = s * 4.0;
+  const int k = std::min(static_cast<int>(f), 3);
+  const double w = f - k;
+  return rgba(stops[k][0] + w * (stops[k + 1][0] - stops[k][0]), stops[k][1] + w * (stops[k + 1][1] - stops[k][1]),
+              stops[k][2] + w * (stops[k + 1][2] - stops[k][2]));
+}
+
+LineMarkers::LineMarkers(const riser_sim::Model& model, const std::string& fixed_frame, const MarkerParams& params,
+                         const Surfaces& surfaces)
+    : length_(model.length()), surfaces_(surfaces) {
+  const int nb = model.bodies();
+  const double width = params.line_width > 0.0 ? params.line_width : length_ / 150.0;
+  const double sphere = params.node_scale > 0.0 ? params.node_scale : 2.5 * width;
+  text_height_ = params.text_height > 0.0 ? params.text_height : length_ / 25.0;
+
+  auto add = [&](int id, int type, const std::string& ns) {
+    visualization_msgs::Marker m;
+    m.header.frame_id = fixed_frame;
+    m.ns = ns;
+    m.id = id;
+    m.type = type;
+    m.action = visualization_msgs::Marker::ADD;
+    m.pose.orientation.w = 1.0;
+    m.scale.x = m.scale.y = m.scale.z = 1.0;
+    m.color = rgba(1, 1, 1);
+    index_[id] = static_cast<int>(msg.markers.size());
+    msg.markers.push_back(m);
+  };
+  using visualization_msgs::Marker;
+  add(kLine, Marker::LINE_STRIP, "line");
+  marker(kLine).scale.x = width;
+  marker(kLine).points.resize(nb + 1);
+  marker(kLine).colors.resize(nb + 1);
+
+  add(kNodes, Marker::SPHERE_LIST, "nodes");
+  marker(kNodes).scale.x = marker(kNodes).scale.y = marker(kNodes).scale.z = sphere;
+  marker(kNodes).color = rgba(0.85, 0.85, 0.85);
+  marker(kNodes).points.resize(nb);  // A_0 .. A_n
+
+  add(kEndMass, Marker::SPHERE, "end_mass");
+  const double end_size = model.endMass() > 0.0 ? 2.0 * sphere : sphere;
+  marker(kEndMass).scale.x = marker(kEndMass).scale.y = marker(kEndMass).scale.z = end_size;
+  marker(kEndMass).color = rgba(0.9, 0.5, 0.1);
+
+  add(kTopText, Marker::TEXT_VIEW_FACING, "top_tension");
+  marker(kTopText).scale.z = text_height_;
+
+  add(kLegendBar, Marker::LINE_STRIP, "legend");
+  marker(kLegendBar).scale.x = 3.0 * width;
+  marker(kLegendBar).points.resize(kBarVertices);
+  marker(kLegendBar).colors.resize(kBarVertices);
+  for (int k = 0; k < kBarVertices; ++k) marker(kLegendBar).colors[k] = tensionColour(k, 0, kBarVertices - 1);
+  add(kLegendLow, Marker::TEXT_VIEW_FACING, "legend");
+  add(kLegendHigh, Marker::TEXT_VIEW_FACING, "legend");
+  add(kLegendTitle, Marker::TEXT_VIEW_FACING, "legend");
+  for (int id : {kLegendLow, kLegendHigh, kLegendTitle}) marker(id).scale.z = 0.7 * text_height_;
+  marker(kLegendLow).color = tensionColour(0, 0, 1);
+  marker(kLegendHigh).color = tensionColour(1, 0, 1);
+  marker(kLegendTitle).text = "axial force";
+
+  if (surfaces_.water_level) {
+    add(kWater, Marker::CUBE, "water_surface");
+    marker(kWater).color = rgba(0.2, 0.45, 0.9, 0.35);
+  }
+  if (surfaces_.seabed) {
+    add(kSeabed, Marker::CUBE, "seabed");
+    marker(kSeabed).color = rgba(0.55, 0.42, 0.25, 0.8);
+  }
+}
+
+void LineMarkers::fill(const riser_sim::LineOutputs& out, const ros::Time& stamp) {
+  for (auto& m : msg.markers) m.header.stamp = stamp;
+  const int nb = static_cast<int>(out.axial_force.size());
+  double lo = out.axial_force[0], hi = out.axial_force[0];
+  for (double f : out.axial_force) lo = std::min(lo, f), hi = std::max(hi, f);
+  const double eps = 1e-6 * std::max({std::abs(lo), std::abs(hi), 1.0});
+  if (hi - lo < eps) lo -= eps, hi += eps;
+
+  // Line: vertex i (A_i) takes the mean force of the rfes that meet there; the end point takes rfe n's.
+  auto& line = marker(kLine);
+  double xmin = out.points[0].x(), xmax = xmin, zmin = out.points[0].y(), zmax = zmin;
+  for (int i = 0; i <= nb; ++i) {
+    const auto& p = out.points[i];
+    line.points[i] = point(p.x(), p.y());
+    xmin = std::min(xmin, p.x()), xmax = std::max(xmax, p.x());
+    zmin = std::min(zmin, p.y()), zmax = std::max(zmax, p.y());
+    const double f = i == 0 ? out.axial_force[0]
+                            : (i == nb ? out.axial_force[nb - 1] : 0.5 * (out.axial_force[i - 1] + out.axial_force[i]));
+    line.colors[i] = tensionColour(f, lo, hi);
+  }
+  auto& nodes = marker(kNodes);
+  for (int i = 0; i < nb; ++i) nodes.points[i] = point(out.points[i].x(), out.points[i].y());
+  marker(kEndMass).pose.position = point(out.points[nb].x(), out.points[nb].y());
+
+  char buf[64];
+  auto& top = marker(kTopText);
+  top.pose.position = point(out.points[0].x(), out.points[0].y() + 1.2 * text_height_);
+  formatKn(buf, sizeof(buf), "top tension ", out.top_tension);
+  top.text = buf;
+
+  // Legend: a vertical colour bar right of the line, as tall as a third of the line length.
+  const double bx = xmax + 0.15 * length_, bz_top = zmax, bz_low = zmax - length_ / 3.0;
+  auto& bar = marker(kLegendBar);
+  for (int k = 0; k < kBarVertices; ++k)
+    bar.points[k] = point(bx, bz_low + (bz_top - bz_low) * k / (kBarVertices - 1.0));
+  auto& low = marker(kLegendLow);
+  low.pose.position = point(bx + 0.12 * length_, bz_low);
+  formatKn(buf, sizeof(buf), "", lo);
+  low.text = buf;
+  auto& high = marker(kLegendHigh);
+  high.pose.position = point(bx + 0.12 * length_, bz_top);
+  formatKn(buf, sizeof(buf), "", hi);
+  high.text = buf;
+  marker(kLegendTitle).pose.position = point(bx, bz_top + text_height_);
+
+  // Surfaces: thin slabs spanning the line's horizontal extent plus half a line length each side.
+  const double span = (xmax - xmin) + length_, cx = 0.5 * (xmin + xmax);
+  auto slab = [&](int id, double z) {
+    auto& m = marker(id);
+    m.pose.position = point(cx, z);
+    m.scale.x = span;
+    m.scale.y = 0.5 * length_;
+    m.scale.z = 0.01 * length_;
+  };
+  if (surfaces_.water_level) slab(kWater, *surfaces_.water_level);
+  if (surfaces_.seabed) slab(kSeabed, *surfaces_.seabed);
+}
+
+}  // namespace riser_sim_ros
