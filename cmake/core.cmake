@@ -8,6 +8,9 @@ add_library(riser_sim_core
   src/core/forces/axial_spring.cpp
   src/core/forces/bending_spring.cpp
   src/core/absolute_formulation.cpp
+  src/core/chain_formulation.cpp
+  src/core/independent_formulation.cpp
+  src/core/recursive_formulation.cpp
   src/core/integrator.cpp
   src/core/simulator.cpp
   src/core/statics.cpp

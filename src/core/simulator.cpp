@@ -5,6 +5,8 @@
 #include <stdexcept>
 
 #include "riser_sim/absolute_formulation.h"
+#include "riser_sim/independent_formulation.h"
+#include "riser_sim/recursive_formulation.h"
 #include "riser_sim/force_term.h"
 
 namespace riser_sim {
@@ -12,8 +14,10 @@ namespace riser_sim {
 namespace {
 std::unique_ptr<Formulation> makeFormulation(const Model& model, const SolverSettings& s) {
   if (s.formulation == "absolute") return std::make_unique<AbsoluteFormulation>(model, s.stabilization);
+  if (s.formulation == "independent") return std::make_unique<IndependentFormulation>(model, s.stabilization);
+  if (s.formulation == "recursive") return std::make_unique<RecursiveFormulation>(model, s.stabilization);
   throw std::invalid_argument("solver.formulation: unknown formulation '" + s.formulation +
-                              "' (accepted: absolute)");
+                              "' (accepted: absolute, independent, recursive)");
 }
 }  // namespace
 

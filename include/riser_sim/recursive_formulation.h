@@ -1,0 +1,47 @@
+// Independent coordinates θ = [Δ_0, φ_0, …, Δ_n, φ_n] solved in O(n) by an articulated-body recursion
+// (beyond the paper). Each rfe is one node of a planar serial chain: its joint at A_i is a pin (only a
+// force f_i passes), its own coordinates u_i = (Δ_i, φ_i) move its end A_{i+1} = A_i + (l_i+Δ_i) e_i:
+//   A''_{i+1} = A''_i + G_i u''_i + c_i,  G_i = [e_i, (l_i+Δ_i) n_i],  c_i = 2Δ'φ' n_i - (l_i+Δ_i)φ'² e_i.
+// With the rfe's mass block M_i = [[P, B], [B^T, D]] (A and u parts; any 4x4 block, so terms that add
+// inertia work unchanged), r_i = Q_i - h_i, the force the rfes i..n need at A_i is affine in A''_i:
+//   f_i = Λ_i A''_i + β_i   (Λ_{n+1} = 0, β_{n+1} = 0 for a free end).
+// Backward pass (n → 0), with Λ', β' of rfe i+1:
+//   D̂ = D + G^T Λ' G,  B̂ = B + Λ' G,  ρ = r_u - G^T (β' + Λ' c),
+//   Λ_i = P + Λ' - B̂ D̂^-1 B̂^T,  β_i = B̂ D̂^-1 ρ + Λ' c + β' - r_A.
+// Forward pass (0 → n) from A''_0 = a_top: u''_i = D̂^-1 (ρ - B̂^T A''_i), f_i = Λ_i A''_i + β_i.
+// The joint reactions come out of the forward pass; joints hold exactly, by construction.
+// A pinned bottom: everything is affine in the anchor force, so one extra 2x2 sensitivity per rfe
+// gives the force that meets the end's Baumgarte-stabilised acceleration, still O(n).
+#pragma once
+#include "riser_sim/chain_formulation.h"
+
+namespace riser_sim {
+
+class RecursiveFormulation : public ChainFormulation {
+ public:
+  RecursiveFormulation(const Model& model, double stabilization);
+  std::string name() const override { return "recursive"; }
+  void derivative(double t, const VecX& y, const PointMotion& top, VecX& dy) override;
+
+ private:
+  // Per rfe, from the backward pass (K = coordinates per rfe; stored with room for K = 2).
+  struct Node {
+    Mat2 Lam;    // Λ_i
+    Mat2 T;      // ∂β_i/∂f_{n+1} (pinned bottom only)
+    Mat2 Bh;     // B̂ (2xK used)
+    Mat2 Dinv;   // D̂^-1 (KxK used)
+    Mat2 G;      // G_i (2xK used)
+    Vec2 beta, rho, c;
+    EIGEN_MAKE_ALIGNED_OPERATOR_NEW
+  };
+  template <int K, bool General>
+  void backward();
+  template <int K>
+  void forward(const Vec2& a_top, VecX& dy, int nt);
+  template <int K>
+  Vec2 pinnedTipForce(const Vec2& a_top);
+
+  AlignedVector<Node> node_;
+};
+
+}  // namespace riser_sim
