@@ -1,0 +1,204 @@
+// The node's ROS-side helpers, without a master: parameter tree -> YAML -> scene, pose checks, the
+// paper -> world mapping of the messages, marker colours, timing percentiles, the sample buffer.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "riser_sim/force_term.h"
+#include "riser_sim/scene_yaml.h"
+#include "riser_sim_ros/line_markers.h"
+#include "riser_sim_ros/line_messages.h"
+#include "riser_sim_ros/timing_stats.h"
+#include "riser_sim_ros/vessel_input.h"
+#include "riser_sim_ros/xmlrpc_yaml.h"
+
+namespace riser_sim_ros {
+namespace {
+
+XmlRpc::XmlRpcValue sceneTree() {
+  XmlRpc::XmlRpcValue t;
+  t["name"] = std::string("tree");
+  t["line"]["length"] = 20.0;
+  t["line"]["elements"] = 4;
+  t["line"]["mass_per_length"] = 5.0;
+  t["line"]["EA"] = std::string("1.0e6");  // PyYAML loads 1.0e6 (no exponent sign) as a string
+  t["line"]["EI"] = 0;                     // an int where a float is meant
+  t["line"]["bending"] = false;
+  t["top"]["position"][0] = 1.5;
+  t["top"]["position"][1] = -2;
+  t["solver"]["dt"] = 1e-4;
+  return t;
+}
+
+TEST(XmlRpcYaml, ParameterTreeParsesLikeTheSceneFile) {
+  XmlRpc::XmlRpcValue t = sceneTree();
+  const riser_sim::Scene s = riser_sim::parseScene(toYaml(t));
+  EXPECT_EQ(s.name, "tree");
+  EXPECT_EQ(s.elements, 4);
+  EXPECT_EQ(s.length, 20.0);
+  EXPECT_EQ(s.line.EA, 1.0e6);
+  EXPECT_FALSE(s.options.bending);
+  EXPECT_EQ(s.top.position.x(), 1.5);
+  EXPECT_EQ(s.top.position.y(), -2.0);
+  EXPECT_EQ(s.solver.dt, 1e-4);  // doubles round-trip exactly (%.17g)
+}
+
+TEST(XmlRpcYaml, ErrorsNameTheParameterPath) {
+  XmlRpc::XmlRpcValue t = sceneTree();
+  t["line"]["elements"] = 0;
+  try {
+    riser_sim::parseScene(toYaml(t));
+    FAIL();
+  } catch (const riser_sim::SceneError& e) {
+    EXPECT_EQ(paramPath("~scene", e.key()), "~scene/line/elements");
+  }
+  EXPECT_EQ(paramPath("~scene", "top.motion.knots[1][0]"), "~scene/top/motion/knots[1][0]");
+  EXPECT_EQ(paramPath("~scene", ""), "~scene");
+  XmlRpc::XmlRpcValue bad;
+  bad["line"]["length"] = XmlRpc::XmlRpcValue(reinterpret_cast<void*>(const_cast<char*>("ab")), 2);  // base64
+  try {
+    toYaml(bad);
+    FAIL();
+  } catch (const std::invalid_argument& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("line.length:", 0), 0u) << e.what();
+  }
+}
+
+std_msgs::Header header(const char* frame, double stamp = 10.0) {
+  std_msgs::Header h;
+  h.frame_id = frame;
+  h.stamp = ros::Time(stamp);
+  return h;
+}
+
+geometry_msgs::Pose unitPose() {
+  geometry_msgs::Pose p;
+  p.orientation.w = 1.0;
+  return p;
+}
+
+TEST(CheckPose, AcceptsValidAndNamesEachProblem) {
+  Eigen::Isometry3d pose;
+  geometry_msgs::Pose p = unitPose();
+  p.position.x = 1.0;
+  p.orientation.w = 1.005;  // within 1 %: normalised
+  EXPECT_EQ(checkPose(header("world"), p, "world", pose), "");
+  EXPECT_NEAR(Eigen::Quaterniond(pose.rotation()).norm(), 1.0, 1e-12);
+  EXPECT_EQ(checkPose(header("/world"), p, "world", pose), "");  // leading slash ignored
+  EXPECT_NE(checkPose(header("map"), p, "world", pose).find("frame_id"), std::string::npos);
+  EXPECT_NE(checkPose(header("world", 0.0), p, "world", pose).find("stamp is zero"), std::string::npos);
+  geometry_msgs::Pose q = unitPose();
+  q.position.y = std::nan("");
+  EXPECT_NE(checkPose(header("world"), q, "world", pose).find("position"), std::string::npos);
+  q = unitPose();
+  q.orientation.w = 0.0;
+  EXPECT_NE(checkPose(header("world"), q, "world", pose).find("zero quaternion"), std::string::npos);
+  q.orientation.w = 1.5;
+  EXPECT_NE(checkPose(header("world"), q, "world", pose).find("unit quaternion"), std::string::npos);
+  q.orientation.w = INFINITY;
+  EXPECT_NE(checkPose(header("world"), q, "world", pose).find("orientation is not finite"), std::string::npos);
+}
+
+TEST(CheckPose, HangOffIsPoseTimesOffsetProjectedOntoXZ) {
+  // Vessel at (10, 3, -1) pitched by 90 degrees about world y: vessel x -> world -z.
+  geometry_msgs::Pose p;
+  p.position.x = 10.0;
+  p.position.y = 3.0;
+  p.position.z = -1.0;
+  p.orientation.y = std::sin(M_PI / 4);
+  p.orientation.w = std::cos(M_PI / 4);
+  Eigen::Isometry3d pose;
+  ASSERT_EQ(checkPose(header("world"), p, "world", pose), "");
+  const Eigen::Vector3d hang = pose * Eigen::Vector3d(2.0, 0.0, 0.0);
+  EXPECT_NEAR(hang.x(), 10.0, 1e-12);
+  EXPECT_NEAR(hang.z(), -3.0, 1e-12);
+  const Eigen::Vector2d paper = toPaper(hang);
+  EXPECT_NEAR(paper.x(), 10.0, 1e-12);
+  EXPECT_NEAR(paper.y(), -3.0, 1e-12);  // world y (3 m) dropped
+}
+
+TEST(LineMessages, PaperToWorldMappingAndFrames) {
+  riser_sim::LineProperties props;
+  props.EA = 1e6;
+  props.mass_per_length = 1.0;
+  riser_sim::Model model(4.0, 2, props, riser_sim::ModelOptions(), 0.0, 9.81);
+  riser_sim::LineOutputs out;
+  out.points = {riser_sim::Vec2(0, 0), riser_sim::Vec2(1, -1), riser_sim::Vec2(2, -2), riser_sim::Vec2(3, -3)};
+  out.angles = {-M_PI / 4, -M_PI / 4, -M_PI / 4};
+  out.elongations = {0, 0, 0};
+  out.axial_force = {30, 20, 10};
+  out.arc_length = {0.5, 2, 3.5};
+  out.bending_moment = {0, 0};
+  out.top_force = riser_sim::Vec2(-5, -30);
+  out.top_tension = out.top_force.norm();
+  ASSERT_TRUE(outputsFinite(out));
+  LineMessages m(model, "world", "ns/riser");
+  m.fillState(out, ros::Time(1));
+  EXPECT_EQ(m.state.points[2].x, 2.0);
+  EXPECT_EQ(m.state.points[2].y, 0.0);
+  EXPECT_EQ(m.state.points[2].z, -2.0);
+  m.fillWrench(out, ros::Time(1));
+  EXPECT_EQ(m.wrench.wrench.force.x, -5.0);
+  EXPECT_EQ(m.wrench.wrench.force.z, -30.0);
+  m.fillTransforms(out, ros::Time(1));
+  ASSERT_EQ(m.transforms.size(), 4u);
+  EXPECT_EQ(m.transforms[0].child_frame_id, "ns/riser/rfe_0");
+  EXPECT_EQ(m.transforms[3].child_frame_id, "ns/riser/end");
+  // The frame's x axis points along the rfe: (cos φ, 0, sin φ) in the world.
+  const auto& q = m.transforms[1].transform.rotation;
+  const Eigen::Vector3d x_axis = Eigen::Quaterniond(q.w, q.x, q.y, q.z) * Eigen::Vector3d::UnitX();
+  EXPECT_NEAR(x_axis.x(), std::cos(-M_PI / 4), 1e-12);
+  EXPECT_NEAR(x_axis.y(), 0.0, 1e-12);
+  EXPECT_NEAR(x_axis.z(), std::sin(-M_PI / 4), 1e-12);
+  out.axial_force[1] = std::nan("");
+  EXPECT_FALSE(outputsFinite(out));
+}
+
+TEST(LineMarkers, ColoursAndLegendFollowTheTensionRange) {
+  const auto lo = tensionColour(0, 0, 10), hi = tensionColour(10, 0, 10), mid = tensionColour(5, 0, 10);
+  EXPECT_GT(lo.b, 0.9);
+  EXPECT_GT(hi.r, 0.9);
+  EXPECT_LT(hi.b, 0.2);
+  EXPECT_GT(mid.g, 0.8);
+  const auto flat = tensionColour(3, 3, 3);  // degenerate range: mid colour, finite
+  EXPECT_TRUE(std::isfinite(flat.r) && std::isfinite(flat.g) && std::isfinite(flat.b));
+}
+
+TEST(TimingStats, PercentilesOverTheRing) {
+  TimingStats s(100);
+  for (int i = 1; i <= 100; ++i) s.add(i);
+  EXPECT_EQ(s.percentile(0.99), 99.0);
+  EXPECT_EQ(s.percentile(1.0), 100.0);
+  EXPECT_EQ(s.max(), 100.0);
+  EXPECT_DOUBLE_EQ(s.mean(), 50.5);
+  for (int i = 0; i < 100; ++i) s.add(1.0);  // ring wraps: old values gone
+  EXPECT_EQ(s.max(), 1.0);
+}
+
+TEST(SampleBuffer, KeepsOrderAndDropsTheOldestWhenFull) {
+  SampleBuffer b;
+  std::array<VesselSample, SampleBuffer::kCapacity> out;
+  for (int i = 0; i < SampleBuffer::kCapacity + 5; ++i) {
+    VesselSample s;
+    s.stamp = ros::Time(1 + i);
+    b.push(s);
+  }
+  EXPECT_EQ(b.overflows(), 5);
+  const int n = b.drain(out);
+  ASSERT_EQ(n, SampleBuffer::kCapacity);
+  EXPECT_EQ(out[0].stamp, ros::Time(6));
+  EXPECT_EQ(out[n - 1].stamp, ros::Time(SampleBuffer::kCapacity + 5));
+  EXPECT_EQ(b.drain(out), 0);
+  VesselSample last;
+  ASSERT_TRUE(b.latest(last));
+  EXPECT_EQ(last.stamp, ros::Time(SampleBuffer::kCapacity + 5));
+}
+
+}  // namespace
+}  // namespace riser_sim_ros
+
+int main(int argc, char** argv) {
+  ::testing::InitGoogleTest(&argc, argv);
+  ros::Time::init();
+  return RUN_ALL_TESTS();
+}
