@@ -12,6 +12,7 @@
 // The joint reactions come out of the forward pass; joints hold exactly, by construction.
 // A pinned bottom: everything is affine in the anchor force, so one extra 2x2 sensitivity per rfe
 // gives the force that meets the end's Baumgarte-stabilised acceleration, still O(n).
+// Λ_i is kept symmetric explicitly: its antisymmetric round-off part would otherwise grow ~2.3x per rfe.
 #pragma once
 #include "riser_sim/chain_formulation.h"
 
@@ -41,7 +42,26 @@ class RecursiveFormulation : public ChainFormulation {
   template <int K>
   Vec2 pinnedTipForce(const Vec2& a_top);
 
+  // Fast path (rigid parts only, free bottom): the same recursion in scalars, in each rfe's frame
+  // (e_i, n_i), where G, B and D are diagonal (see rigidBackwardAxial for the closed-form Λ).
+  // Per rfe, everything affine in A''_i so that the forward pass is three 2x2 products per rfe:
+  // u''_i = U A''_i + u0, f_i = Λ A''_i + β, A''_{i+1} = M A''_i + m (world axes).
+  struct RigidNode {
+    double U00, U01, U10, U11, u0, u1;  // (Δ'', φ'') response
+    double La, Lb, Ld, bx, by;         // Λ_i = [[La, Lb], [Lb, Ld]], β_i
+    double M00, M01, M10, M11, mx, my;  // A''_{i+1}
+  };
+  // Fills the forward coefficients of nd from the backward pass's quantities in the rfe frame.
+  static void finishNode(RigidNode& nd, double c, double s, double len, double c0, double c1, double Di00,
+                         double Di01, double Di11, double Bh00, double Bh01, double Bh10, double Bh11, double rho0,
+                         double rho1, double L00, double L01, double L11, double be, double bn);
+  void rigidBackwardAxial();
+  void rigidBackwardLocked();
+  template <bool Axial>
+  void rigidForward(const Vec2& a_top, VecX& dy, int nt);
+
   AlignedVector<Node> node_;
+  std::vector<RigidNode> rigid_;
 };
 
 }  // namespace riser_sim

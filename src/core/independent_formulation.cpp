@@ -86,7 +86,8 @@ void IndependentFormulation::derivative(double t, const VecX& y, const PointMoti
   Vec2 A = top.a;
   for (int i = 0; i < nb; ++i) {
     A_dd_[i] = A;
-    A += bias_[i] + C_.middleCols(K * i, K) * qdd_.segment(K * i, K);
+    A += bias_[i];
+    for (int a = 0; a < K; ++a) A += qdd_[K * i + a] * C_.col(K * i + a);
   }
   A_dd_[nb] = A;
   reactionsFromAccelerations(A_dd_, qdd_, tip);
