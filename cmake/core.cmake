@@ -7,6 +7,12 @@ add_library(riser_sim_core
   src/core/forces/gravity.cpp
   src/core/forces/axial_spring.cpp
   src/core/forces/bending_spring.cpp
+  src/core/forces/buoyancy.cpp
+  src/core/forces/morison_drag.cpp
+  src/core/forces/hydro_inertia.cpp
+  src/core/forces/seabed.cpp
+  src/core/forces/internal_flow.cpp
+  src/core/water.cpp
   src/core/absolute_formulation.cpp
   src/core/chain_formulation.cpp
   src/core/independent_formulation.cpp

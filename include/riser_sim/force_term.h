@@ -1,6 +1,7 @@
 // A physical effect the scene switches on (costmap_2d-style layer). Each term adds its generalised
 // forces in absolute coordinates and reports its energy / power so that energy balance is checkable.
 #pragma once
+#include <cmath>
 #include <string>
 
 #include "riser_sim/kinematics.h"
@@ -20,8 +21,19 @@ class ForceTerm {
                           VecX& /*h*/) const {}
   // Potential energy of the conservative part [J].
   virtual double potentialEnergy(const Model&, const Kinematics&) const { return 0.0; }
+  // Same at time t [s], for terms whose potential depends on time (internal flow u(t)).
+  virtual double potentialEnergyAt(const Model& m, const Kinematics& k, double /*t*/) const {
+    return potentialEnergy(m, k);
+  }
   // Power [W] of the non-conservative part (damping, drag, ...) fed into the line.
   virtual double power(const Model&, const Kinematics&, double /*t*/) const { return 0.0; }
+  // Run-state hooks for terms with history (seabed contact anchors): at the start of a run and
+  // after every step. Terms keep such state in mutable members: one Simulator per Model.
+  virtual bool hasRunState() const { return false; }
+  // Seabed level y_b [m] for terms that model one (-inf otherwise); used by the statics' first guess.
+  virtual double seabedLevel() const { return -INFINITY; }
+  virtual void startRun(const Model&, const Kinematics&) const {}
+  virtual void endStep(const Model&, const Kinematics&) const {}
 };
 
 }  // namespace riser_sim

@@ -10,6 +10,7 @@ struct LineProperties {
   double mass_per_length = 0.0;  // structural mass [kg/m]
   double outer_diameter = 0.0;   // [m], 0 when not given (no hydrodynamics then)
   double inner_diameter = 0.0;   // [m]
+  double content_mass_per_length = 0.0;  // internal fluid ρ_f A_f [kg/m]: moves with the pipe
   double axial_damping = 0.0;    // c_EA [N s]: axial force per unit strain rate
   double bending_damping = 0.0;  // c_EI [N m^2 s]: moment per unit curvature rate
 

@@ -63,7 +63,7 @@ class Model {
   double gravity() const { return gravity_; }    // g [m/s^2], acting along -y
   double bendingStiffness() const { return options_.bending ? props_.EI / d_ : 0.0; }  // c^b [N m/rad]
   double bendingDamping() const { return options_.bending ? props_.bending_damping / d_ : 0.0; }
-  double totalMass() const;  // line + end mass [kg]
+  double totalMass() const;  // line + contents + end mass [kg]
 
   // Bottom end condition (pinned: the end of rfe n is held at a fixed point).
   BottomBoundary bottom() const { return bottom_; }

@@ -8,7 +8,10 @@
 #include "riser_sim/model.h"
 #include "riser_sim/simulator.h"
 #include "riser_sim/statics.h"
+#include "riser_sim/forces/internal_flow.h"
+#include "riser_sim/forces/seabed.h"
 #include "riser_sim/top_motion.h"
+#include "riser_sim/water.h"
 
 namespace riser_sim {
 
@@ -28,6 +31,13 @@ struct InitialSpec {
   double tolerance = 1e-9;       // statics: residual relative to the line's weight
 };
 
+struct HydroSpec {
+  bool enabled = false;
+  double drag_tangential = 0.0;      // D_ξ
+  double drag_normal = 0.0;          // D_η
+  double inertia_coefficient = 1.0;  // C_M (added mass C_M - 1)
+};
+
 struct Scene {
   std::string name;
   double length = 0.0;   // line.length [m]
@@ -42,6 +52,11 @@ struct Scene {
   InitialSpec initial;
   SolverSettings solver;
   double duration = 20.0;  // run.duration [s] (CLI default)
+  // Sea and flow (each optional; a section that is absent builds no term).
+  WaterSpec water;          // environment.water / current / waves
+  HydroSpec hydro;          // hydrodynamics
+  SeabedSpec seabed;        // seabed
+  InternalFlowSpec internal_fluid;  // internal_fluid
 };
 
 std::shared_ptr<Model> buildModel(const Scene& scene);

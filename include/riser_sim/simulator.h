@@ -70,6 +70,7 @@ class Simulator : private OdeSystem {
   VecX y_, dy_;
   double t_ = 0.0, e0_ = 0.0, energy_scale_ = 1.0, max_constraint_error_ = 0.0;
   long steps_ = 0;
+  bool run_state_ = false;  // some term keeps history (seabed anchors)
   std::string reason_;
   LineOutputs out_;
   Kinematics kin_;

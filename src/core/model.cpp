@@ -24,7 +24,8 @@ Model::Model(double length, int segments, const LineProperties& props, const Mod
     r.axial_damping = props.axial_damping / r.length;
     r.s_begin = s;
     s += r.length;
-    const double m1 = props.mass_per_length * r.length1, m2 = props.mass_per_length * r.length2;
+    const double mpl = props.mass_per_length + props.content_mass_per_length;
+    const double m1 = mpl * r.length1, m2 = mpl * r.length2;
     // Thin-rod parts: centre of part (1) at l1/2; part (2) at l1 + Δ + l2/2 (paper eq. 16).
     r.part[0] = RigidPart{m1, m1 * r.length1 * r.length1 / 12.0, 0.5 * r.length1, 0.0};
     r.part[1] = RigidPart{m2, m2 * r.length2 * r.length2 / 12.0, r.length1 + 0.5 * r.length2, 1.0};
@@ -44,7 +45,9 @@ Model::Model(double length, int segments, const LineProperties& props, const Mod
   }
 }
 
-double Model::totalMass() const { return props_.mass_per_length * length_ + end_mass_; }
+double Model::totalMass() const {
+  return (props_.mass_per_length + props_.content_mass_per_length) * length_ + end_mass_;
+}
 
 void Model::addTerm(std::unique_ptr<ForceTerm> term) { terms_.push_back(std::move(term)); }
 

@@ -4,12 +4,17 @@
 
 #include "riser_sim/forces/axial_spring.h"
 #include "riser_sim/forces/bending_spring.h"
+#include "riser_sim/forces/buoyancy.h"
 #include "riser_sim/forces/gravity.h"
+#include "riser_sim/forces/hydro_inertia.h"
+#include "riser_sim/forces/morison_drag.h"
 
 namespace riser_sim {
 
 std::shared_ptr<Model> buildModel(const Scene& scene) {
-  auto model = std::make_shared<Model>(scene.length, scene.elements, scene.line, scene.options, scene.end_mass,
+  LineProperties props = scene.line;
+  props.content_mass_per_length = scene.internal_fluid.density * props.internalArea();
+  auto model = std::make_shared<Model>(scene.length, scene.elements, props, scene.options, scene.end_mass,
                                        scene.gravity);
   model->setBottom(scene.bottom, scene.bottom_point);
   // Only the terms the scene needs are built (a term that is off costs nothing).
@@ -17,6 +22,19 @@ std::shared_ptr<Model> buildModel(const Scene& scene) {
   if (scene.options.axial_flexibility) model->addTerm(std::make_unique<AxialSpring>());
   if (scene.options.bending && (scene.line.EI > 0.0 || scene.line.bending_damping > 0.0))
     model->addTerm(std::make_unique<BendingSpring>());
+  if (scene.water.enabled) {
+    const WaterKinematics water(scene.water, scene.gravity);
+    if (scene.gravity != 0.0) model->addTerm(std::make_unique<Buoyancy>(scene.water));
+    const HydroSpec& h = scene.hydro;
+    if (h.enabled && (h.drag_normal > 0.0 || h.drag_tangential > 0.0))
+      model->addTerm(std::make_unique<MorisonDrag>(water, h.drag_tangential, h.drag_normal));
+    if (h.enabled && (h.inertia_coefficient != 1.0 || water.moving()))
+      model->addTerm(std::make_unique<HydroInertia>(water, h.inertia_coefficient));
+  }
+  if (scene.seabed.enabled) model->addTerm(std::make_unique<Seabed>(scene.seabed));
+  const InternalFlowSpec& f = scene.internal_fluid;
+  if (f.density > 0.0 && (f.velocity != 0.0 || f.acceleration != 0.0))
+    model->addTerm(std::make_unique<InternalFlow>(f, scene.line.internalArea()));
   return model;
 }
 

@@ -50,6 +50,13 @@ void Simulator::setInitialState(const Kinematics& kin, double t0) {
   reason_.clear();
   y_.setZero();
   formulation_->packState(kin, y_);
+  formulation_->kinematics(y_, kin_);
+  run_state_ = false;
+  for (const auto& term : model_->terms())
+    if (term->hasRunState()) {
+      term->startRun(*model_, kin_);
+      run_state_ = true;
+    }
   e0_ = totalEnergy();
   max_constraint_error_ = constraintError();
 }
@@ -69,6 +76,10 @@ bool Simulator::step() {
   integrator_->step(*this, t_, y_, settings_.dt);
   ++steps_;
   t_ += settings_.dt;
+  if (run_state_) {
+    formulation_->kinematics(y_, kin_);
+    for (const auto& term : model_->terms()) term->endStep(*model_, kin_);
+  }
   checkDivergence();
   return !diverged();
 }
@@ -99,7 +110,7 @@ double Simulator::constraintError() const { return formulation_->constraintError
 
 double Simulator::potentialEnergy(const Kinematics& kin) const {
   double v = 0.0;
-  for (const auto& term : model_->terms()) v += term->potentialEnergy(*model_, kin);
+  for (const auto& term : model_->terms()) v += term->potentialEnergyAt(*model_, kin, t_);
   return v;
 }
 

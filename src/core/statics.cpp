@@ -129,6 +129,76 @@ bool newton(StaticResidual& F, VecX& x, const StaticsProblem& p, int& iters, dou
   return res <= p.tolerance;
 }
 
+// Shape of an inextensible catenary for the displaced-end problem, used as Newton's starting point:
+// horizontal force H at the end, vertical end load Ve, weight w per length; on a seabed the last part
+// lies flat. Returns false when no such shape fits.
+bool catenaryGuess(const Model& model, const StaticsProblem& p, Kinematics& kin, double& end_force) {
+  const double L = model.length(), X = std::abs(p.end_dx);
+  // Net weight per length from the terms themselves (a horizontal line just below the top, at rest).
+  Kinematics probe = straightLine(model, p.top - Vec2(0.0, 1e-6), 0.0);
+  VecX Q = VecX::Zero(model.dofs());
+  double level = -INFINITY;
+  for (const auto& term : model.terms())
+    if (!std::isfinite(term->seabedLevel())) term->addForces(model, probe, 0.0, Q);
+  for (const auto& term : model.terms()) level = std::max(level, term->seabedLevel());
+  double W = 0.0;
+  for (int i = 0; i < model.bodies(); ++i) W -= Q[4 * i + kY];
+  const double Ve = model.endMass() * model.gravity();
+  const double w = (W - Ve) / L;
+  if (!(w > 0.0)) return false;
+  const double h = p.top.y() - level + 1e-3;  // height above the seabed (+1 mm into it, so it bears)
+  const int m = 4000;
+  // Horizontal extent of the shape for H; fills 'lay' (length on the seabed).
+  auto extent = [&](double H, double& lay) {
+    const double a = H / w;
+    lay = 0.0;
+    if (std::isfinite(h) && h > 0.0) {
+      const double ss = a * std::sqrt(std::pow(h / a + 1.0, 2) - 1.0);
+      if (ss < L) {
+        lay = L - ss;
+        return a * std::asinh(ss / a) + lay;
+      }
+    }
+    double x = 0.0;
+    for (int k = 0; k < m; ++k) {
+      const double s = (k + 0.5) * L / m;
+      x += L / m / std::sqrt(1.0 + std::pow((Ve + w * s) / H, 2));
+    }
+    return x;
+  };
+  double lo = 1e-6 * w * L, hi = 1e6 * w * L, lay = 0.0;
+  if (extent(lo, lay) > X || extent(hi, lay) < X) return false;
+  for (int it = 0; it < 200; ++it) {
+    const double mid = std::sqrt(lo * hi);
+    (extent(mid, lay) < X ? lo : hi) = mid;
+  }
+  const double H = hi;
+  extent(H, lay);
+  // Points from the end (σ = 0) up to the top, then shifted so the top is at p.top.
+  std::vector<Vec2> pts(m + 1);
+  pts[0] = Vec2::Zero();
+  for (int k = 0; k < m; ++k) {
+    const double s = (k + 0.5) * L / m;
+    const double V = s < lay ? 0.0 : (lay > 0.0 ? w * (s - lay) : Ve + w * s);
+    const Vec2 dir = Vec2(H, V).normalized();
+    pts[k + 1] = pts[k] + L / m * Vec2(-dir.x() * (p.end_dx < 0 ? -1.0 : 1.0), dir.y());
+  }
+  const Vec2 shift = p.top - pts[m];
+  auto at = [&](double sigma) {  // arc length from the top
+    const double f = (L - sigma) / L * m;
+    const int k = std::min(std::max(static_cast<int>(f), 0), m - 1);
+    return Vec2(pts[k] + (f - k) * (pts[k + 1] - pts[k]) + shift);
+  };
+  end_force = p.end_dx < 0 ? -H : H;
+  kin = straightLine(model, p.top, 0.0);
+  for (int i = 0; i < model.bodies(); ++i) {
+    const Rfe& r = model.rfe(i);
+    const Vec2 d = at(r.s_begin + r.length) - at(r.s_begin);
+    kin[i].phi = std::atan2(d.y(), d.x());
+  }
+  return true;
+}
+
 }  // namespace
 
 Kinematics straightLine(const Model& model, const Vec2& top, double phi) {
@@ -162,27 +232,50 @@ StaticsResult solveStatics(const Model& model, const StaticsProblem& problem, do
       res.message = "initial.end_dx: |end_dx| must be < line.length for a displaced initial state";
       return res;
     }
-    guess = straightLine(model, problem.top, std::atan2(-std::sqrt(L * L - dx * dx), dx));
     const double w = (model.endMass() + 0.5 * model.line().mass_per_length * L) * model.gravity();
-    x[F.per_ * nb] = w * dx / std::sqrt(L * L - dx * dx);
+    double fx = w * dx / std::sqrt(L * L - dx * dx);
+    if (!catenaryGuess(model, problem, guess, fx))
+      guess = straightLine(model, problem.top, std::atan2(-std::sqrt(L * L - dx * dx), dx));
+    x[F.per_ * nb] = fx;
   } else {  // between points: straight chord, or a V of two straight halves when slack
     const Vec2 chord = problem.end_point - problem.top;
     const double c = chord.norm();
     guess = straightLine(model, problem.top, std::atan2(chord.y(), chord.x()));
     if (c < L) {
-      const Vec2 mid = problem.top + 0.5 * chord;
-      Vec2 down = perp(chord / std::max(c, 1e-12));
-      if (down.y() > 0) down = -down;
-      const Vec2 vertex = mid + std::sqrt(0.25 * L * L - 0.25 * c * c) * down;
-      double s = 0.0;
-      for (int i = 0; i < nb; ++i) {
-        const Vec2 d = (s + 0.5 * model.rfe(i).length < 0.5 * L) ? Vec2(vertex - problem.top)
-                                                                   : Vec2(problem.end_point - vertex);
-        guess[i].phi = std::atan2(d.y(), d.x());
-        s += model.rfe(i).length;
+      // Inextensible catenary through both points: solve end(F) = chord for the end force F.
+      const double w = model.line().mass_per_length * model.gravity(), Wm = model.endMass() * model.gravity();
+      auto endOf = [&](const Vec2& Fe, double s) {
+        const double H = std::max(std::abs(Fe.x()), 1e-9 * w * L);
+        const double V0 = Wm - Fe.y() + w * L, Vs = Wm - Fe.y() + w * (L - s);
+        return Vec2(Fe.x() / w * (std::asinh(V0 / H) - std::asinh(Vs / H)),
+                    -(std::hypot(H, V0) - std::hypot(H, Vs)) / w);
+      };
+      Vec2 Fe(w * L * chord.x() / L, 0.5 * w * L);
+      for (int it = 0; it < 100; ++it) {
+        const Vec2 r = endOf(Fe, L) - chord;
+        if (r.norm() < 1e-12 * L) break;
+        Mat2 J;
+        for (int j = 0; j < 2; ++j) {
+          Vec2 F1 = Fe;
+          const double h = 1e-7 * std::max(std::abs(Fe[j]), w * L);
+          F1[j] += h;
+          J.col(j) = (endOf(F1, L) - chord - r) / h;
+        }
+        const Vec2 dF = -J.inverse() * r;
+        double a = 1.0;
+        while (a > 1e-3 && (endOf(Fe + a * dF, L) - chord).norm() > r.norm()) a *= 0.5;
+        Fe += a * dF;
       }
+      for (int i = 0; i < nb; ++i) {
+        const double sm = model.rfe(i).s_begin + 0.5 * model.rfe(i).length;
+        guess[i].phi = std::atan2(-(Wm - Fe.y() + w * (L - sm)), Fe.x());
+      }
+      x[F.per_ * nb] = Fe.x();
+      x[F.per_ * nb + 1] = Fe.y();
     }
   }
+  for (int i = 1; i < nb; ++i)  // continuous angles: the bending springs see φ_i - φ_{i-1}
+    guess[i].phi -= 2.0 * M_PI * std::round((guess[i].phi - guess[i - 1].phi) / (2.0 * M_PI));
   F.fromKinematics(guess, x);
   StaticsResult res;
   bool ok = newton(F, x, problem, res.iterations, res.residual);

@@ -1,0 +1,28 @@
+// Buoyancy of the displaced water, ρ_w A_w g per submerged length (paper eq. 11, 16), for parts fully or
+// partly below the free surface, applied at the centroid of the submerged portion.
+// V = -ρ_w g A_w ∫ min(y - y_s, 0) dξ. (Wall and internal-fluid weights are the Gravity term.)
+#pragma once
+#include "riser_sim/force_term.h"
+#include "riser_sim/water.h"
+
+namespace riser_sim {
+
+class Buoyancy : public ForceTerm {
+ public:
+  explicit Buoyancy(const WaterSpec& water) : water_(water) {}
+  std::string name() const override { return "buoyancy"; }
+  void addForces(const Model& model, const Kinematics& kin, double t, VecX& Q) const override;
+  double potentialEnergy(const Model& model, const Kinematics& kin) const override;
+
+ private:
+  WaterSpec water_;
+};
+
+// Submerged portion of part p of rfe i: its length [m] and the distance of its centroid from A_i
+// at Δ = 0 (the part moves with kappa*Δ).
+struct WetPart {
+  double length = 0.0, s0 = 0.0, kappa = 0.0, fraction = 0.0;
+};
+WetPart wetPart(const Model& model, const BodyKinematics& b, int i, int part, double surface);
+
+}  // namespace riser_sim

@@ -1,0 +1,27 @@
+// Morison inertia (paper eq. 13, 15) on the normal direction of each submerged part:
+// dF = [C_M ρ_w A_w a_w,η - (C_M - 1) ρ_w A_w a_η] n dξ. The added mass (C_M - 1) ρ_w A_w enters the
+// mass matrix (implicit, not lagged); the Froude-Krylov part C_M ρ_w A_w a_w,η is an applied force.
+// Tangential added mass is zero (slender cylinder).
+#pragma once
+#include "riser_sim/force_term.h"
+#include "riser_sim/water.h"
+
+namespace riser_sim {
+
+class HydroInertia : public ForceTerm {
+ public:
+  HydroInertia(const WaterKinematics& water, double inertia_coefficient)
+      : water_(water), cm_(inertia_coefficient) {}
+  std::string name() const override { return "hydro_inertia"; }
+  void addForces(const Model& model, const Kinematics& kin, double t, VecX& Q) const override;
+  bool hasInertia() const override { return cm_ != 1.0; }
+  void addInertia(const Model& model, const Kinematics& kin, double t, AlignedVector<Mat4>& M,
+                  VecX& h) const override;
+  double power(const Model& model, const Kinematics& kin, double t) const override;
+
+ private:
+  WaterKinematics water_;
+  double cm_;
+};
+
+}  // namespace riser_sim

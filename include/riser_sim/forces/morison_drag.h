@@ -1,0 +1,25 @@
+// Morison drag on the velocity relative to the water, in the rfe frame (paper eq. 12):
+// dF = -½ ρ_w D_out [D_ξ |V'_ξ| V'_ξ e + D_η |V'_η| V'_η n] dξ, one quadrature point per submerged part.
+#pragma once
+#include "riser_sim/force_term.h"
+#include "riser_sim/water.h"
+
+namespace riser_sim {
+
+class MorisonDrag : public ForceTerm {
+ public:
+  MorisonDrag(const WaterKinematics& water, double drag_tangential, double drag_normal)
+      : water_(water), cd_t_(drag_tangential), cd_n_(drag_normal) {}
+  std::string name() const override { return "morison_drag"; }
+  void addForces(const Model& model, const Kinematics& kin, double t, VecX& Q) const override;
+  double power(const Model& model, const Kinematics& kin, double t) const override;
+
+ private:
+  // Drag force [N] on part p of rfe i, its point of application (s0, kappa) and that point's velocity.
+  Vec2 force(const Model& model, const BodyKinematics& b, int i, int p, double t, double& s0, double& kappa,
+             Vec2& v) const;
+  WaterKinematics water_;
+  double cd_t_, cd_n_;
+};
+
+}  // namespace riser_sim

@@ -1,0 +1,42 @@
+// Seabed (paper's J-lay case): linear springs on the contact points below the seabed level y_b — the
+// joints A_0..A_n and the end of rfe n. Normal: F_y = C_y (y_b - y) - c_y y' (never pulls);
+// tangential: F_x = -C_x (x - x_touch) - c_x x', anchored where the point touched down. Stiffnesses are
+// per contact point [N/m]. No force without contact.
+#pragma once
+#include <vector>
+
+#include "riser_sim/force_term.h"
+
+namespace riser_sim {
+
+struct SeabedSpec {
+  bool enabled = false;
+  double level = 0.0;                 // y_b [m]
+  double stiffness_normal = 0.0;      // C_E,y [N/m] per contact point
+  double stiffness_tangential = 0.0;  // C_E,x [N/m] per contact point
+  double damping_normal = 0.0;        // [N s/m] per contact point
+  double damping_tangential = 0.0;    // [N s/m] per contact point
+};
+
+class Seabed : public ForceTerm {
+ public:
+  explicit Seabed(const SeabedSpec& spec) : spec_(spec) {}
+  std::string name() const override { return "seabed"; }
+  void addForces(const Model& model, const Kinematics& kin, double t, VecX& Q) const override;
+  double potentialEnergy(const Model& model, const Kinematics& kin) const override;
+  double power(const Model& model, const Kinematics& kin, double t) const override;
+  bool hasRunState() const override { return true; }
+  double seabedLevel() const override { return spec_.level; }
+  void startRun(const Model& model, const Kinematics& kin) const override;
+  void endStep(const Model& model, const Kinematics& kin) const override;
+  int contacts(const Model& model, const Kinematics& kin) const;
+
+ private:
+  // Contact point j = 0..n+1: rfe index, position along it (s0, kappa), position and velocity.
+  void point(const Model& model, const Kinematics& kin, int j, int& body, double& s0, Vec2& p, Vec2& v) const;
+  Vec2 force(int j, const Vec2& p, const Vec2& v, bool damping) const;
+  SeabedSpec spec_;
+  mutable std::vector<double> anchor_;  // x at touchdown; NaN when free (run state)
+};
+
+}  // namespace riser_sim

@@ -1,0 +1,65 @@
+// Sea state: water density and free surface, current (uniform or depth profile, optionally
+// accelerating) and regular linear (Airy) waves with finite-depth kinematics.
+#pragma once
+#include <vector>
+
+#include "riser_sim/types.h"
+
+namespace riser_sim {
+
+struct CurrentSpec {
+  Vec2 velocity = Vec2::Zero();      // uniform current at t = 0 [m/s] (x, y)
+  Vec2 acceleration = Vec2::Zero();  // uniform acceleration of the current [m/s^2]
+  struct Point {
+    double depth;  // below the surface [m], increasing
+    double vx;     // horizontal velocity [m/s]
+  };
+  std::vector<Point> profile;  // depth profile (replaces velocity.x when given), linear between points
+};
+
+struct WaveSpec {
+  double height = 0.0;     // H, crest to trough [m]; 0 = no waves
+  double period = 10.0;    // T [s]
+  double phase = 0.0;      // [rad]
+  double direction = 1.0;  // +1 travels towards +x, -1 towards -x
+  double depth = 1000.0;   // water depth for the dispersion relation [m]
+};
+
+struct WaterSpec {
+  bool enabled = false;
+  double density = 1025.0;  // ρ_w [kg/m^3]
+  double surface = 0.0;     // y of the mean free surface [m]
+  CurrentSpec current;
+  WaveSpec waves;
+};
+
+class WaterKinematics {
+ public:
+  WaterKinematics(const WaterSpec& spec, double gravity);
+  const WaterSpec& spec() const { return spec_; }
+  bool moving() const { return moving_; }
+  // Water particle velocity and acceleration at point p [m] and time t [s] (zero above the surface).
+  void at(const Vec2& p, double t, Vec2& velocity, Vec2& acceleration) const;
+  double waveNumber() const { return k_; }  // from ω² = g k tanh(k h)
+
+ private:
+  WaterSpec spec_;
+  double omega_ = 0.0, k_ = 0.0;
+  bool moving_ = false;
+};
+
+// Portion of a straight segment p0→p1 below the level ys: fraction of its length and the centroid of
+// that portion as a fraction from p0.
+inline void submerged(double y0, double y1, double ys, double& fraction, double& centroid) {
+  if (y0 <= ys && y1 <= ys) {
+    fraction = 1.0, centroid = 0.5;
+  } else if (y0 > ys && y1 > ys) {
+    fraction = 0.0, centroid = 0.5;
+  } else {
+    const double t = (ys - y0) / (y1 - y0);
+    if (y0 <= ys) fraction = t, centroid = 0.5 * t;
+    else fraction = 1.0 - t, centroid = 0.5 * (1.0 + t);
+  }
+}
+
+}  // namespace riser_sim

@@ -1,0 +1,36 @@
+#include "riser_sim/forces/buoyancy.h"
+
+namespace riser_sim {
+
+WetPart wetPart(const Model& model, const BodyKinematics& b, int i, int part, double surface) {
+  const Rfe& r = model.rfe(i);
+  const double start = part == 0 ? 0.0 : r.length1, len = part == 0 ? r.length1 : r.length2;
+  const double kappa = part == 0 ? 0.0 : 1.0;
+  const double s_begin = start + kappa * b.delta;
+  const double y0 = b.A.y() + s_begin * b.s, y1 = y0 + len * b.s;
+  double frac, cen;
+  submerged(y0, y1, surface, frac, cen);
+  return WetPart{frac * len, start + cen * len, kappa, frac};
+}
+
+void Buoyancy::addForces(const Model& model, const Kinematics& kin, double, VecX& Q) const {
+  const double f = water_.density * model.line().externalArea() * model.gravity();
+  for (int i = 0; i < model.bodies(); ++i)
+    for (int p = 0; p < 2; ++p) {
+      const WetPart w = wetPart(model, kin[i], i, p, water_.surface);
+      if (w.length > 0.0) Q.segment<4>(4 * i) += pointForce(kin[i], w.s0, w.kappa, Vec2(0.0, f * w.length));
+    }
+}
+
+double Buoyancy::potentialEnergy(const Model& model, const Kinematics& kin) const {
+  const double f = water_.density * model.line().externalArea() * model.gravity();
+  double v = 0.0;
+  for (int i = 0; i < model.bodies(); ++i)
+    for (int p = 0; p < 2; ++p) {
+      const WetPart w = wetPart(model, kin[i], i, p, water_.surface);
+      v -= f * w.length * (kin[i].point(w.s0, w.kappa).y() - water_.surface);
+    }
+  return v;
+}
+
+}  // namespace riser_sim

@@ -1,0 +1,48 @@
+#include "riser_sim/forces/morison_drag.h"
+
+#include <cmath>
+
+#include "riser_sim/forces/buoyancy.h"
+
+namespace riser_sim {
+
+Vec2 MorisonDrag::force(const Model& model, const BodyKinematics& b, int i, int p, double t, double& s0,
+                        double& kappa, Vec2& v) const {
+  const WetPart w = wetPart(model, b, i, p, water_.spec().surface);
+  s0 = w.s0;
+  kappa = w.kappa;
+  v = b.velocity(w.s0, w.kappa);
+  if (w.length <= 0.0) return Vec2::Zero();
+  Vec2 rel = v;
+  if (water_.moving()) {
+    Vec2 vw, aw;
+    water_.at(b.point(w.s0, w.kappa), t, vw, aw);
+    rel -= vw;
+  }
+  const double vt = b.e().dot(rel), vn = b.nrm().dot(rel);
+  const double k = -0.5 * water_.spec().density * model.line().outer_diameter * w.length;
+  return k * (cd_t_ * std::abs(vt) * vt * b.e() + cd_n_ * std::abs(vn) * vn * b.nrm());
+}
+
+void MorisonDrag::addForces(const Model& model, const Kinematics& kin, double t, VecX& Q) const {
+  for (int i = 0; i < model.bodies(); ++i)
+    for (int p = 0; p < 2; ++p) {
+      double s0, kappa;
+      Vec2 v;
+      const Vec2 F = force(model, kin[i], i, p, t, s0, kappa, v);
+      Q.segment<4>(4 * i) += pointForce(kin[i], s0, kappa, F);
+    }
+}
+
+double MorisonDrag::power(const Model& model, const Kinematics& kin, double t) const {
+  double pw = 0.0;
+  for (int i = 0; i < model.bodies(); ++i)
+    for (int p = 0; p < 2; ++p) {
+      double s0, kappa;
+      Vec2 v;
+      pw += force(model, kin[i], i, p, t, s0, kappa, v).dot(v);
+    }
+  return pw;
+}
+
+}  // namespace riser_sim

@@ -1,0 +1,97 @@
+#include "riser_sim/forces/seabed.h"
+
+#include <cmath>
+
+namespace riser_sim {
+
+void Seabed::point(const Model& model, const Kinematics& kin, int j, int& body, double& s0, Vec2& p,
+                   Vec2& v) const {
+  const int n1 = model.bodies();
+  body = j < n1 ? j : n1 - 1;
+  s0 = j < n1 ? 0.0 : model.rfe(body).length;
+  const double kappa = j < n1 ? 0.0 : 1.0;
+  p = kin[body].point(s0, kappa);
+  v = kin[body].velocity(s0, kappa);
+}
+
+Vec2 Seabed::force(int j, const Vec2& p, const Vec2& v, bool damping) const {
+  const double pen = spec_.level - p.y();
+  if (pen <= 0.0) return Vec2::Zero();
+  double fy = spec_.stiffness_normal * pen - (damping ? spec_.damping_normal * v.y() : 0.0);
+  fy = std::max(fy, 0.0);
+  double fx = damping ? -spec_.damping_tangential * v.x() : 0.0;
+  if (j < static_cast<int>(anchor_.size()) && std::isfinite(anchor_[j]))
+    fx -= spec_.stiffness_tangential * (p.x() - anchor_[j]);
+  return Vec2(fx, fy);
+}
+
+void Seabed::addForces(const Model& model, const Kinematics& kin, double, VecX& Q) const {
+  for (int j = 0; j <= model.bodies(); ++j) {
+    int body;
+    double s0;
+    Vec2 p, v;
+    point(model, kin, j, body, s0, p, v);
+    if (p.y() >= spec_.level) continue;
+    Q.segment<4>(4 * body) += pointForce(kin[body], s0, j < model.bodies() ? 0.0 : 1.0, force(j, p, v, true));
+  }
+}
+
+double Seabed::potentialEnergy(const Model& model, const Kinematics& kin) const {
+  double e = 0.0;
+  for (int j = 0; j <= model.bodies(); ++j) {
+    int body;
+    double s0;
+    Vec2 p, v;
+    point(model, kin, j, body, s0, p, v);
+    const double pen = spec_.level - p.y();
+    if (pen <= 0.0) continue;
+    e += 0.5 * spec_.stiffness_normal * pen * pen;
+    if (j < static_cast<int>(anchor_.size()) && std::isfinite(anchor_[j]))
+      e += 0.5 * spec_.stiffness_tangential * std::pow(p.x() - anchor_[j], 2);
+  }
+  return e;
+}
+
+// Damping power; the normal clamp (no pull) also removes energy, counted here as the difference.
+double Seabed::power(const Model& model, const Kinematics& kin, double) const {
+  double pw = 0.0;
+  for (int j = 0; j <= model.bodies(); ++j) {
+    int body;
+    double s0;
+    Vec2 p, v;
+    point(model, kin, j, body, s0, p, v);
+    if (p.y() >= spec_.level) continue;
+    pw += (force(j, p, v, true) - force(j, p, v, false)).dot(v);
+  }
+  return pw;
+}
+
+void Seabed::startRun(const Model& model, const Kinematics& kin) const {
+  anchor_.assign(model.bodies() + 1, NAN);
+  endStep(model, kin);
+}
+
+void Seabed::endStep(const Model& model, const Kinematics& kin) const {
+  for (int j = 0; j <= model.bodies(); ++j) {
+    int body;
+    double s0;
+    Vec2 p, v;
+    point(model, kin, j, body, s0, p, v);
+    if (p.y() >= spec_.level) anchor_[j] = NAN;
+    else if (!std::isfinite(anchor_[j])) anchor_[j] = p.x();
+  }
+}
+
+int Seabed::contacts(const Model& model, const Kinematics& kin) const {
+  int c = 0;
+  for (int j = 0; j <= model.bodies(); ++j) {
+    int body;
+    double s0;
+    Vec2 p, v;
+    point(model, kin, j, body, s0, p, v);
+    c += p.y() < spec_.level;
+  }
+  return c;
+}
+
+}  // namespace riser_sim
