@@ -16,7 +16,7 @@ test: deps
 	@scripts/test.sh
 
 sim: build
-	@$(SETUP); bench/paper_table1.sh --sim
+	@$(SETUP); bench/paper_table1.py --sim
 
 bench: build
 	@$(SETUP); bench/run_all.sh
