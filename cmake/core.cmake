@@ -18,8 +18,11 @@ add_library(riser_sim_core
   src/core/independent_formulation.cpp
   src/core/recursive_formulation.cpp
   src/core/integrator.cpp
+  src/core/dopri5.cpp
+  src/core/implicit_integrators.cpp
   src/core/simulator.cpp
   src/core/statics.cpp
+  src/core/modal.cpp
   src/core/scene.cpp
   src/core/scene_yaml.cpp
 )

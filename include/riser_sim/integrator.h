@@ -23,6 +23,33 @@ class Integrator {
   virtual void step(OdeSystem& sys, double t, VecX& y, double h) = 0;
   // Number of rhs evaluations per step (for cost reports).
   virtual int stages() const = 0;
+
+  // --- Additions for adaptive / implicit schemes (defaults fit a fixed-step explicit scheme). ---
+  // The system changed outside the integrator (new initial state, a term's history moved): cached
+  // derivatives (FSAL, Jacobians) must not be reused.
+  virtual void restart() {}
+  // Non-empty once step() could not meet its contract (Newton failed, step size underflow); y is then
+  // left non-finite so that the caller stops. Returns a reference: no allocation on the hot path.
+  virtual const std::string& failure() const {
+    static const std::string none;
+    return none;
+  }
+  // Explicit fixed-step scheme: the step is limited by stability (|λ| h below stabilityBound()).
+  virtual bool explicitFixedStep() const { return false; }
+  // Largest |λ h| on the imaginary axis inside the stability region (0: unconditionally stable).
+  virtual double stabilityBound() const { return 0.0; }
+  // Cumulative work counters (for cost reports).
+  struct Stats {
+    long substeps = 0, rejected = 0, rhs = 0, jacobians = 0, factorizations = 0, newton = 0;
+  };
+  virtual Stats stats() const { return Stats(); }
+};
+
+// Settings of the integrators beyond h (solver.tolerance etc.).
+struct IntegratorOptions {
+  double tolerance = 1e-6;         // dopri5: atol = rtol on positions and velocities
+  int position_size = -1;          // size of q in y = [q; v; rest] (implicit schemes need it)
+  double jacobian_interval = 0.1;  // implicit schemes: Jacobian refresh period [s of simulated time]
 };
 
 // Classical fixed-step fourth-order Runge-Kutta (the paper's scheme).
@@ -32,6 +59,8 @@ class Rk4 : public Integrator {
   void reset(int n) override;
   void step(OdeSystem& sys, double t, VecX& y, double h) override;
   int stages() const override { return 4; }
+  bool explicitFixedStep() const override { return true; }
+  double stabilityBound() const override { return 2.8284; }  // RK4 on the imaginary axis: 2 sqrt(2)
 
  private:
   VecX k1_, k2_, k3_, k4_, tmp_;
@@ -39,5 +68,8 @@ class Rk4 : public Integrator {
 
 // Names accepted by solver.integrator; throws std::invalid_argument otherwise.
 std::unique_ptr<Integrator> makeIntegrator(const std::string& name);
+std::unique_ptr<Integrator> makeIntegrator(const std::string& name, const IntegratorOptions& options);
+// Every accepted name, comma separated (for messages and docs).
+const char* integratorNames();
 
 }  // namespace riser_sim

@@ -19,6 +19,8 @@ struct SolverSettings {
   std::string formulation = "absolute"; // solver.formulation
   double stabilization = 50.0;          // Baumgarte frequency ω_c [rad/s] (c'' + 2ω_c c' + ω_c² c = 0)
   double max_constraint_error = 0.05;   // divergence when the joint gap exceeds this × d
+  double tolerance = 1e-6;              // solver.tolerance: dopri5 error control (atol = rtol)
+  double jacobian_interval = 0.1;       // solver.jacobian_interval [s]: implicit schemes' Jacobian refresh
 };
 
 class Simulator : private OdeSystem {
@@ -57,17 +59,28 @@ class Simulator : private OdeSystem {
   double constraintError() const;
   double maxConstraintError() const { return max_constraint_error_; }
 
+  // Stability of explicit schemes, estimated at the initial state (setInitialState): the highest
+  // natural frequency ω_max [rad/s] of the linearised line (power iteration on ∂a/∂q, so every term and
+  // the stiffest element - usually the short end rfes' axial springs - count), and the largest stable
+  // step of the fixed-step explicit scheme, stabilityBound / ω_max (rk4: 2√2 / ω_max). Implicit and
+  // adaptive schemes have no such limit; stableStepEstimate() still gives rk4's for reference.
+  double highestFrequency() const { return omega_max_; }
+  double stableStepEstimate() const;
+  const Integrator& integrator() const { return *integrator_; }
+
  private:
   void rhs(double t, const VecX& y, VecX& dy) override;
   double potentialEnergy(const Kinematics& kin) const;
   void checkDivergence();
+  void estimateHighestFrequency();
 
   std::shared_ptr<const Model> model_;
   std::unique_ptr<TopMotion> top_;
   SolverSettings settings_;
   std::unique_ptr<Formulation> formulation_;
   std::unique_ptr<Integrator> integrator_;
-  VecX y_, dy_;
+  VecX y_, dy_, probe_y_, probe_a_, probe_x_;
+  double omega_max_ = 0.0;
   double t_ = 0.0, e0_ = 0.0, energy_scale_ = 1.0, max_constraint_error_ = 0.0;
   long steps_ = 0;
   bool run_state_ = false;  // some term keeps history (seabed anchors)

@@ -2,6 +2,9 @@
 
 #include <stdexcept>
 
+#include "riser_sim/dopri5.h"
+#include "riser_sim/implicit_integrators.h"
+
 namespace riser_sim {
 
 void Rk4::reset(int n) {
@@ -23,9 +26,19 @@ void Rk4::step(OdeSystem& sys, double t, VecX& y, double h) {
   y += (h / 6.0) * (k1_ + 2.0 * k2_ + 2.0 * k3_ + k4_);
 }
 
+const char* integratorNames() { return "rk4, dopri5, rosenbrock2, midpoint"; }
+
 std::unique_ptr<Integrator> makeIntegrator(const std::string& name) {
+  return makeIntegrator(name, IntegratorOptions());
+}
+
+std::unique_ptr<Integrator> makeIntegrator(const std::string& name, const IntegratorOptions& options) {
   if (name == "rk4") return std::make_unique<Rk4>();
-  throw std::invalid_argument("solver.integrator: unknown integrator '" + name + "' (accepted: rk4)");
+  if (name == "dopri5") return std::make_unique<Dopri5>(options);
+  if (name == "rosenbrock2") return std::make_unique<Rosenbrock2>(options);
+  if (name == "midpoint") return std::make_unique<ImplicitMidpoint>(options);
+  throw std::invalid_argument("solver.integrator: unknown integrator '" + name + "' (accepted: " +
+                              integratorNames() + ")");
 }
 
 }  // namespace riser_sim

@@ -19,7 +19,7 @@ namespace {
 constexpr double kDegToRad = M_PI / 180.0;
 
 // Keep in step with makeFormulation() in src/core/simulator.cpp (it has no public factory).
-const std::vector<std::string> kFormulations = {"absolute"};
+const std::vector<std::string> kFormulations = {"absolute", "independent", "recursive"};
 
 std::string join(const std::vector<std::string>& items) {
   std::string out;
@@ -374,7 +374,8 @@ void parseInternalFluid(const Section& root, Scene& s) {
 
 void parseSolver(const Section& root, Scene& s) {
   const Section solver =
-      root.section("solver", {"dt", "integrator", "formulation", "stabilization", "max_constraint_error"});
+      root.section("solver", {"dt", "integrator", "formulation", "stabilization", "max_constraint_error", "tolerance",
+                              "jacobian_interval"});
   const SolverSettings defaults;
   s.solver = defaults;
   s.solver.dt = solver.number("dt", defaults.dt);
@@ -393,6 +394,10 @@ void parseSolver(const Section& root, Scene& s) {
   requireNonNegative(solver.key("stabilization"), s.solver.stabilization);
   s.solver.max_constraint_error = solver.number("max_constraint_error", defaults.max_constraint_error);
   requirePositive(solver.key("max_constraint_error"), s.solver.max_constraint_error);
+  s.solver.tolerance = solver.number("tolerance", defaults.tolerance);
+  requirePositive(solver.key("tolerance"), s.solver.tolerance);
+  s.solver.jacobian_interval = solver.number("jacobian_interval", defaults.jacobian_interval);
+  requireNonNegative(solver.key("jacobian_interval"), s.solver.jacobian_interval);
 }
 
 void parseRun(const Section& root, Scene& s) {

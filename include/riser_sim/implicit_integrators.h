@@ -1,0 +1,81 @@
+// Implicit schemes for stiff lines, on y = [q; v; rest] with q' = v (every formulation's layout; the
+// trailing entries, the work W, are integrated by the same rule but take no part in the solve).
+//
+// Jacobian: A_q = ∂a/∂q, A_v = ∂a/∂v by forward differences (2p evaluations, p = size of q), dense,
+// refreshed every IntegratorOptions::jacobian_interval of simulated time, when h changes, or when
+// Newton stalls. The linear systems (I - c J) x = b reduce to the p x p matrix
+//   S = I - c A_v - c² A_q,   u = S^-1 (b_v + c A_q b_q),   x_q = b_q + c u,   x_v = u,
+// factored by partial-pivot LU (O(p³) per refresh, O(p²) per solve). This is not O(n) per step: the
+// cost is stated (measured) in docs/integrators.md. Workspaces are sized in reset(); step() does not
+// allocate.
+#pragma once
+#include <Eigen/LU>
+
+#include "riser_sim/integrator.h"
+
+namespace riser_sim {
+
+class ImplicitIntegrator : public Integrator {
+ public:
+  explicit ImplicitIntegrator(const IntegratorOptions& options) : options_(options) {}
+  void reset(int n) override;
+  void restart() override { jac_valid_ = false; f0_valid_ = false; }
+  const std::string& failure() const override { return failure_; }
+  Stats stats() const override { return stats_; }
+
+ protected:
+  // Jacobian at (t, y) with f0 = f(t, y); factors S for coefficient c.
+  void jacobian(OdeSystem& sys, double t, const VecX& y, const VecX& f0);
+  void factor(double c);
+  // x = (I - c J)^-1 b on the first 2p entries (c of the last factor()).
+  void solve(const VecX& b, VecX& x);
+  // Jacobian older than the refresh interval (or none).
+  bool jacobianStale(double t) const { return !jac_valid_ || std::abs(t - jac_t_) >= options_.jacobian_interval; }
+  // f(t, y) into f0_, reusing the last end-of-step evaluation when y and t are unchanged.
+  void startValue(OdeSystem& sys, double t, const VecX& y);
+  void fail(const char* what, double t, VecX& y);
+
+  IntegratorOptions options_;
+  int n_ = 0, p_ = 0, m_ = 0;  // state size, positions, implicit part (2p)
+  MatX Aq_, Av_, S_;
+  Eigen::PartialPivLU<MatX> lu_;
+  VecX f0_, fp_, yp_, bu_, u_, y_end_;
+  double jac_t_ = 0.0, c_ = -1.0, t_end_ = 0.0;
+  bool jac_valid_ = false, f0_valid_ = false;
+  std::string failure_;
+  Stats stats_;
+};
+
+// Implicit midpoint rule: y1 = y0 + h f(t + h/2, (y0 + y1)/2), modified Newton on the midpoint.
+// Second order, A-stable, symmetric (time-reversible), no numerical damping; conserves quadratic
+// invariants exactly. For long conservative runs.
+class ImplicitMidpoint : public ImplicitIntegrator {
+ public:
+  using ImplicitIntegrator::ImplicitIntegrator;
+  std::string name() const override { return "midpoint"; }
+  void reset(int n) override;
+  void step(OdeSystem& sys, double t, VecX& y, double h) override;
+  int stages() const override { return 3; }  // typical: 2 Newton iterations + the end evaluation
+
+ private:
+  bool newton(OdeSystem& sys, double t, const VecX& y0, double h);
+  VecX z_, g_, dz_, fz_;
+};
+
+// Linearly implicit Rosenbrock-W method ROS2 (Verwer, Spee, Blom & Hundsdorfer 1999), γ = 1 + 1/√2:
+//   (I - γhJ) k1 = f(t, y),  (I - γhJ) k2 = f(t + h, y + h k1) - 2 k1,  y1 = y + h (3 k1 + k2) / 2.
+// Second order for any J (a W-method, so a reused Jacobian keeps the order), L-stable: the unresolved
+// axial mode is damped, not amplified. Two evaluations and two solves per step, no iteration.
+class Rosenbrock2 : public ImplicitIntegrator {
+ public:
+  using ImplicitIntegrator::ImplicitIntegrator;
+  std::string name() const override { return "rosenbrock2"; }
+  void reset(int n) override;
+  void step(OdeSystem& sys, double t, VecX& y, double h) override;
+  int stages() const override { return 2; }
+
+ private:
+  VecX k1_, k2_, f2_;
+};
+
+}  // namespace riser_sim

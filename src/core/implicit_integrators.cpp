@@ -1,0 +1,175 @@
+#include "riser_sim/implicit_integrators.h"
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <stdexcept>
+
+namespace riser_sim {
+
+namespace {
+// Forward-difference step for column j: sqrt(machine epsilon) relative, with a floor of 1e-8 units.
+constexpr double kFdRel = 1.49e-8, kFdFloor = 1e-8;
+// Newton: |Δz_i| <= kNewtonTol (1 + |z_i|) on q and v; tight enough that long runs do not drift
+// (round-off of 100 m positions is ~1e-14 m).
+constexpr double kNewtonTol = 1e-11;
+constexpr int kNewtonMaxIter = 12;
+}  // namespace
+
+void ImplicitIntegrator::reset(int n) {
+  n_ = n;
+  p_ = options_.position_size;
+  if (p_ <= 0 || 2 * p_ > n)
+    throw std::invalid_argument("implicit integrator: position_size must be set (state [q; v; rest])");
+  m_ = 2 * p_;
+  Aq_.setZero(p_, p_);
+  Av_.setZero(p_, p_);
+  S_.setZero(p_, p_);
+  lu_ = Eigen::PartialPivLU<MatX>(p_);
+  for (VecX* v : {&f0_, &fp_, &yp_, &y_end_}) v->setZero(n);
+  bu_.setZero(p_);
+  u_.setZero(p_);
+  jac_valid_ = f0_valid_ = false;
+  c_ = -1.0;
+  failure_.clear();
+  stats_ = Stats();
+}
+
+void ImplicitIntegrator::jacobian(OdeSystem& sys, double t, const VecX& y, const VecX& f0) {
+  yp_ = y;
+  for (int j = 0; j < m_; ++j) {
+    const double e = std::max(kFdRel * std::abs(y[j]), kFdFloor);
+    yp_[j] = y[j] + e;
+    const double ej = yp_[j] - y[j];  // the step actually taken
+    sys.rhs(t, yp_, fp_);
+    yp_[j] = y[j];
+    MatX& A = j < p_ ? Aq_ : Av_;
+    A.col(j < p_ ? j : j - p_) = (fp_.segment(p_, p_) - f0.segment(p_, p_)) / ej;
+  }
+  stats_.rhs += m_;
+  ++stats_.jacobians;
+  jac_valid_ = true;
+  jac_t_ = t;
+  c_ = -1.0;  // refactor
+}
+
+void ImplicitIntegrator::factor(double c) {
+  S_.noalias() = -c * Av_;
+  S_.noalias() -= (c * c) * Aq_;
+  S_.diagonal().array() += 1.0;
+  lu_.compute(S_);
+  c_ = c;
+  ++stats_.factorizations;
+}
+
+void ImplicitIntegrator::solve(const VecX& b, VecX& x) {
+  bu_ = b.segment(p_, p_);
+  bu_.noalias() += c_ * (Aq_ * b.head(p_));
+  u_ = lu_.solve(bu_);
+  x.head(p_) = b.head(p_) + c_ * u_;
+  x.segment(p_, p_) = u_;
+}
+
+void ImplicitIntegrator::startValue(OdeSystem& sys, double t, const VecX& y) {
+  if (f0_valid_ && t == t_end_ && y == y_end_) return;
+  sys.rhs(t, y, f0_);
+  ++stats_.rhs;
+  f0_valid_ = true;
+}
+
+void ImplicitIntegrator::fail(const char* what, double t, VecX& y) {
+  char buf[200];
+  std::snprintf(buf, sizeof(buf), "%s: %s at t = %.9g s", name().c_str(), what, t);
+  failure_ = buf;
+  y.setConstant(std::numeric_limits<double>::quiet_NaN());
+}
+
+// ---------------------------------------------------------------------------------------------
+
+void ImplicitMidpoint::reset(int n) {
+  ImplicitIntegrator::reset(n);
+  for (VecX* v : {&z_, &g_, &dz_, &fz_}) v->setZero(n);
+}
+
+// Solves z = y0 + (h/2) f(t + h/2, z) on the first 2p entries; fz_ = f(t + h/2, z) at exit.
+bool ImplicitMidpoint::newton(OdeSystem& sys, double t, const VecX& y0, double h) {
+  const double tm = t + 0.5 * h;
+  z_ = y0;  // first iterate = one linearly implicit step, stable for the stiff modes
+  fz_ = f0_;
+  for (int it = 0; it < kNewtonMaxIter; ++it) {
+    g_.head(m_) = y0.head(m_) + (0.5 * h) * fz_.head(m_) - z_.head(m_);  // -residual
+    if (!g_.head(m_).allFinite()) return false;
+    solve(g_, dz_);
+    z_.head(m_) += dz_.head(m_);
+    sys.rhs(tm, z_, fz_);
+    ++stats_.rhs;
+    ++stats_.newton;
+    bool done = true;
+    for (int i = 0; i < m_ && done; ++i) done = std::abs(dz_[i]) <= kNewtonTol * (1.0 + std::abs(z_[i]));
+    if (done) return true;
+  }
+  return false;
+}
+
+void ImplicitMidpoint::step(OdeSystem& sys, double t, VecX& y, double h) {
+  startValue(sys, t, y);
+  bool fresh = false;
+  if (jacobianStale(t)) {
+    jacobian(sys, t, y, f0_);
+    fresh = true;
+  }
+  if (c_ != 0.5 * h) factor(0.5 * h);
+  bool ok = newton(sys, t, y, h);
+  if (!ok && !fresh) {  // stale Jacobian: refresh once and retry
+    jacobian(sys, t, y, f0_);
+    factor(0.5 * h);
+    ok = newton(sys, t, y, h);
+  }
+  if (!ok) {
+    fail("Newton did not converge; reduce solver.dt", t, y);
+    return;
+  }
+  y += h * fz_;  // y1 = y0 + h f(z) (= 2z - y0 on the implicit part; W by the same midpoint rule)
+  ++stats_.substeps;
+  // End evaluation: the chain formulations read A_0 from the last call; reused as the next f0.
+  sys.rhs(t + h, y, f0_);
+  ++stats_.rhs;
+  f0_valid_ = true;
+  y_end_ = y;
+  t_end_ = t + h;
+}
+
+// ---------------------------------------------------------------------------------------------
+
+void Rosenbrock2::reset(int n) {
+  ImplicitIntegrator::reset(n);
+  for (VecX* v : {&k1_, &k2_, &f2_}) v->setZero(n);
+}
+
+void Rosenbrock2::step(OdeSystem& sys, double t, VecX& y, double h) {
+  static const double kGamma = 1.0 + 1.0 / std::sqrt(2.0);
+  startValue(sys, t, y);
+  if (jacobianStale(t)) jacobian(sys, t, y, f0_);
+  if (c_ != kGamma * h) factor(kGamma * h);
+  solve(f0_, k1_);
+  k1_.tail(n_ - m_) = f0_.tail(n_ - m_);  // explicit entries (W): plain stages
+  yp_ = y + h * k1_;
+  sys.rhs(t + h, yp_, f2_);
+  ++stats_.rhs;
+  f2_ -= 2.0 * k1_;
+  solve(f2_, k2_);
+  k2_.tail(n_ - m_) = f2_.tail(n_ - m_);
+  y += (1.5 * h) * k1_ + (0.5 * h) * k2_;
+  if (!y.allFinite()) {
+    fail("state not finite; reduce solver.dt", t, y);
+    return;
+  }
+  ++stats_.substeps;
+  sys.rhs(t + h, y, f0_);
+  ++stats_.rhs;
+  f0_valid_ = true;
+  y_end_ = y;
+  t_end_ = t + h;
+}
+
+}  // namespace riser_sim
