@@ -54,12 +54,15 @@ class ImplicitMidpoint : public ImplicitIntegrator {
   using ImplicitIntegrator::ImplicitIntegrator;
   std::string name() const override { return "midpoint"; }
   void reset(int n) override;
+  void restart() override { ImplicitIntegrator::restart(); have_prev_ = false; }
   void step(OdeSystem& sys, double t, VecX& y, double h) override;
   int stages() const override { return 3; }  // typical: 2 Newton iterations + the end evaluation
 
  private:
   bool newton(OdeSystem& sys, double t, const VecX& y0, double h);
   VecX z_, g_, dz_, fz_;
+  bool have_prev_ = false;
+  double h_prev_ = 0.0;
 };
 
 // Linearly implicit Rosenbrock-W method ROS2 (Verwer, Spee, Blom & Hundsdorfer 1999), γ = 1 + 1/√2:

@@ -20,7 +20,7 @@ struct SolverSettings {
   double stabilization = 50.0;          // Baumgarte frequency ω_c [rad/s] (c'' + 2ω_c c' + ω_c² c = 0)
   double max_constraint_error = 0.05;   // divergence when the joint gap exceeds this × d
   double tolerance = 1e-6;              // solver.tolerance: dopri5 error control (atol = rtol)
-  double jacobian_interval = 0.1;       // solver.jacobian_interval [s]: implicit schemes' Jacobian refresh
+  double jacobian_interval = 1.0;       // solver.jacobian_interval [s]: implicit schemes' Jacobian refresh
 };
 
 class Simulator : private OdeSystem {

@@ -89,13 +89,21 @@ void ImplicitIntegrator::fail(const char* what, double t, VecX& y) {
 void ImplicitMidpoint::reset(int n) {
   ImplicitIntegrator::reset(n);
   for (VecX* v : {&z_, &g_, &dz_, &fz_}) v->setZero(n);
+  have_prev_ = false;
 }
 
 // Solves z = y0 + (h/2) f(t + h/2, z) on the first 2p entries; fz_ = f(t + h/2, z) at exit.
 bool ImplicitMidpoint::newton(OdeSystem& sys, double t, const VecX& y0, double h) {
   const double tm = t + 0.5 * h;
-  z_ = y0;  // first iterate = one linearly implicit step, stable for the stiff modes
-  fz_ = f0_;
+  // Predictor: the last step's midpoint-to-end increment carried on (z0 = y0 + (y0 - z_prev)), else y0.
+  if (have_prev_ && t == t_end_ && y0 == y_end_ && h == h_prev_) {
+    z_.head(m_) = 2.0 * y0.head(m_) - z_.head(m_);
+    sys.rhs(tm, z_, fz_);
+    ++stats_.rhs;
+  } else {
+    z_ = y0;  // first iterate = one linearly implicit step, stable for the stiff modes
+    fz_ = f0_;
+  }
   for (int it = 0; it < kNewtonMaxIter; ++it) {
     g_.head(m_) = y0.head(m_) + (0.5 * h) * fz_.head(m_) - z_.head(m_);  // -residual
     if (!g_.head(m_).allFinite()) return false;
@@ -127,8 +135,11 @@ void ImplicitMidpoint::step(OdeSystem& sys, double t, VecX& y, double h) {
   }
   if (!ok) {
     fail("Newton did not converge; reduce solver.dt", t, y);
+    have_prev_ = false;
     return;
   }
+  have_prev_ = true;
+  h_prev_ = h;
   y += h * fz_;  // y1 = y0 + h f(z) (= 2z - y0 on the implicit part; W by the same midpoint rule)
   ++stats_.substeps;
   // End evaluation: the chain formulations read A_0 from the last call; reused as the next f0.

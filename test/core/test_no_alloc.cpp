@@ -1,0 +1,83 @@
+// Every integrator x formulation: Simulator::step() allocates nothing after warm-up. Global operator
+// new/delete are replaced by counting versions; the count is read around the stepping only.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cstdlib>
+#include <new>
+
+#include "riser_sim/scene.h"
+#include "validation_util.h"
+
+namespace {
+std::atomic<long> g_allocations{0};
+}  // namespace
+
+void* operator new(std::size_t size) {
+  ++g_allocations;
+  if (void* p = std::malloc(size ? size : 1)) return p;
+  throw std::bad_alloc();
+}
+void* operator new[](std::size_t size) {
+  ++g_allocations;
+  if (void* p = std::malloc(size ? size : 1)) return p;
+  throw std::bad_alloc();
+}
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete[](void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+
+namespace riser_sim {
+namespace {
+
+constexpr int kWarmupSteps = 3;    // first Jacobian / FSAL / initial-step estimate happen here
+constexpr int kCountedSteps = 40;  // spans several Jacobian refreshes (interval below)
+constexpr double kDt = 1e-3;       // [s] stable for rk4 at n = 10 (limit ~1.9e-3 s)
+constexpr double kJacobianInterval = 0.01;  // [s] refresh 4 times inside the counted steps
+
+struct Case {
+  const char* integrator;
+  const char* formulation;
+  bool axial;
+};
+
+class NoAlloc : public ::testing::TestWithParam<Case> {};
+
+TEST_P(NoAlloc, StepDoesNotAllocate) {
+  const Case c = GetParam();
+  Scene s = validation::table1Scene(10, kDt);
+  s.options.axial_flexibility = c.axial;
+  s.solver.integrator = c.integrator;
+  s.solver.formulation = c.formulation;
+  s.solver.jacobian_interval = kJacobianInterval;
+  s.solver.tolerance = 1e-7;
+  auto sim = buildSimulator(s);
+  for (int k = 0; k < kWarmupSteps; ++k) ASSERT_TRUE(sim->step()) << sim->divergenceReason();
+  const long before = g_allocations.load();
+  bool ok = true;
+  for (int k = 0; k < kCountedSteps && ok; ++k) ok = sim->step();
+  const long allocations = g_allocations.load() - before;
+  ASSERT_TRUE(ok) << sim->divergenceReason();
+  EXPECT_EQ(allocations, 0) << c.integrator << " / " << c.formulation << (c.axial ? "" : " (inextensible)");
+  const std::string name = c.integrator;
+  if (name == "rosenbrock2" || name == "midpoint")
+    EXPECT_GE(sim->integrator().stats().jacobians, 3) << "the counted steps should include Jacobian refreshes";
+}
+
+std::vector<Case> allCases() {
+  std::vector<Case> out;
+  for (const char* i : {"rk4", "dopri5", "rosenbrock2", "midpoint"})
+    for (const char* f : {"absolute", "independent", "recursive"})
+      for (bool axial : {true, false}) out.push_back({i, f, axial});
+  return out;
+}
+
+std::string caseName(const ::testing::TestParamInfo<Case>& info) {
+  return std::string(info.param.integrator) + "_" + info.param.formulation + (info.param.axial ? "" : "_inextensible");
+}
+
+INSTANTIATE_TEST_SUITE_P(AllIntegrators, NoAlloc, ::testing::ValuesIn(allCases()), caseName);
+
+}  // namespace
+}  // namespace riser_sim
