@@ -1,0 +1,266 @@
+#include "riser_sim/modal.h"
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/QR>
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "riser_sim/force_term.h"
+#include "riser_sim/independent_formulation.h"
+#include "riser_sim/scene.h"
+
+namespace riser_sim {
+
+namespace {
+
+// θ ↔ kinematics of the chain hanging from A_0 (zero velocities), k = 2 (Δ, φ) or 1 (φ) per rfe.
+class Chain {
+ public:
+  Chain(const Model& m, const Vec2& top, double t) : model_(m), top_(top), t_(t) {
+    k_ = m.options().axial_flexibility ? 2 : 1;
+    kin_.resize(m.bodies());
+    Q_.setZero(m.dofs());
+  }
+  int k() const { return k_; }
+  int size() const { return k_ * model_.bodies(); }
+
+  void pack(const Kinematics& kin, VecX& theta) const {
+    theta.resize(size());
+    for (int i = 0; i < model_.bodies(); ++i) {
+      if (k_ == 2) theta[2 * i] = kin[i].delta;
+      theta[k_ * i + k_ - 1] = kin[i].phi;
+    }
+  }
+  const Kinematics& kinematics(const VecX& theta) {
+    Vec2 A = top_;
+    for (int i = 0; i < model_.bodies(); ++i) {
+      BodyKinematics& b = kin_[i];
+      b = BodyKinematics();
+      b.A = A;
+      b.delta = k_ == 2 ? theta[2 * i] : 0.0;
+      b.phi = theta[k_ * i + k_ - 1];
+      b.c = std::cos(b.phi);
+      b.s = std::sin(b.phi);
+      b.len = model_.rfe(i).length + b.delta;
+      A = b.end();
+    }
+    return kin_;
+  }
+  // Absolute forces of every term plus the dead end load at the end of rfe n.
+  const VecX& absoluteForces(const VecX& theta, const Vec2& end_force) {
+    kinematics(theta);
+    Q_.setZero();
+    for (const auto& term : model_.terms()) term->addForces(model_, kin_, t_, Q_);
+    const int n = model_.bodies() - 1;
+    Q_.segment<4>(4 * n) += pointForce(kin_[n], model_.rfe(n).length, 1.0, end_force);
+    return Q_;
+  }
+  // Q_θ = J^T Q_abs in O(n): rfe j's Δ_j, φ_j move every rfe beyond it rigidly by e_j, (l_j+Δ_j) n_j.
+  void project(const VecX& Q, VecX& Qt) const {
+    Qt.resize(size());
+    Vec2 below = Vec2::Zero();
+    for (int i = model_.bodies() - 1; i >= 0; --i) {
+      const BodyKinematics& b = kin_[i];
+      if (k_ == 2) Qt[2 * i] = Q[4 * i + kDelta] + b.e().dot(below);
+      Qt[k_ * i + k_ - 1] = Q[4 * i + kPhi] + b.len * b.nrm().dot(below);
+      below += Q.segment<2>(4 * i);
+    }
+  }
+  void generalised(const VecX& theta, const Vec2& end_force, VecX& Qt) { project(absoluteForces(theta, end_force), Qt); }
+
+ private:
+  const Model& model_;
+  Vec2 top_;
+  double t_;
+  int k_;
+  Kinematics kin_;
+  VecX Q_;
+};
+
+// Displacements of A_0..A_n, end for a mode θ; kinetic-energy split along / normal to the line.
+void modeShape(const Model& model, const Kinematics& kin, int k, const VecX& th, Mode& mode) {
+  const int nb = model.bodies();
+  mode.displacement.assign(nb + 1, Vec2::Zero());
+  double along = 0.0, normal = 0.0;
+  Vec2 dA = Vec2::Zero();
+  for (int i = 0; i < nb; ++i) {
+    const BodyKinematics& b = kin[i];
+    const Rfe& r = model.rfe(i);
+    const double dd = k == 2 ? th[2 * i] : 0.0, dp = th[k * i + k - 1];
+    mode.displacement[i] = dA;
+    for (int p = 0; p < r.num_parts; ++p) {
+      const RigidPart& q = r.part[p];
+      const Vec2 v = dA + q.kappa * dd * b.e() + (q.s0 + q.kappa * b.delta) * dp * b.nrm();
+      along += q.mass * std::pow(b.e().dot(v), 2);
+      normal += q.mass * std::pow(b.nrm().dot(v), 2) + q.inertia * dp * dp;
+    }
+    dA += dd * b.e() + b.len * dp * b.nrm();
+  }
+  mode.displacement[nb] = dA;
+  mode.axial_fraction = along + normal > 0.0 ? along / (along + normal) : 0.0;
+  mode.character = mode.axial_fraction > 0.5 ? "axial" : "transverse";
+  // Unit largest displacement, its largest component positive.
+  double big = 0.0, comp = 0.0;
+  for (const Vec2& d : mode.displacement) {
+    big = std::max(big, d.norm());
+    for (int c = 0; c < 2; ++c)
+      if (std::abs(d[c]) > std::abs(comp)) comp = d[c];
+  }
+  if (big > 0.0) {
+    const double scale = (comp < 0.0 ? -1.0 : 1.0) / big;
+    for (Vec2& d : mode.displacement) d *= scale;
+  }
+}
+
+}  // namespace
+
+ModalResult computeModes(const Model& model, const Kinematics& equilibrium, const Vec2& end_force,
+                         const ModalOptions& options) {
+  const int nb = model.bodies();
+  if (static_cast<int>(equilibrium.size()) != nb)
+    throw std::invalid_argument("modal: the equilibrium has " + std::to_string(equilibrium.size()) +
+                                " rfes, the model " + std::to_string(nb));
+  if (options.modes < 1) throw std::invalid_argument("modes: must be >= 1");
+  if (!(options.fd_step > 0.0)) throw std::invalid_argument("modal fd_step: must be > 0");
+
+  // Terms with history (seabed anchors) start from the static state: contacts stick where they are.
+  for (const auto& term : model.terms())
+    if (term->hasRunState()) term->startRun(model, equilibrium);
+
+  const Vec2 top = equilibrium[0].A;
+  Chain chain(model, top, options.time);
+  const int nt = chain.size(), k = chain.k();
+  VecX theta0;
+  chain.pack(equilibrium, theta0);
+  const Kinematics kin0 = chain.kinematics(theta0);
+
+  ModalResult res;
+  res.coordinates = nt;
+  res.pinned = model.bottom() == BottomBoundary::kPinned;
+  for (int i = 0; i < nb; ++i) {
+    res.points.push_back(kin0[i].A);
+    res.arc_length.push_back(model.rfe(i).s_begin);
+  }
+  res.points.push_back(kin0[nb - 1].end());
+  res.arc_length.push_back(model.length());
+
+  // Equilibrium check: residual generalised forces (forces / F, moments / (F L)) with F the largest
+  // force any term applies.
+  double F = std::max(model.totalMass() * std::abs(model.gravity()), end_force.norm());
+  for (const auto& term : model.terms()) {
+    VecX Qa = VecX::Zero(model.dofs());
+    term->addForces(model, kin0, options.time, Qa);
+    for (int i = 0; i < nb; ++i) F = std::max(F, Qa.segment<3>(4 * i).lpNorm<Eigen::Infinity>());
+  }
+  Vec2 load = end_force;
+  VecX Q0t;
+  chain.generalised(theta0, load, Q0t);
+  if (res.pinned) {
+    // The anchor's reaction (when not given as end_force) is what balances Q_θ along the end
+    // constraints' normals: C^T λ = -Q_θ in least squares; it joins the dead end load.
+    MatX Ct(nt, 2);
+    for (int i = 0; i < nb; ++i) {
+      if (k == 2) Ct.row(2 * i) = kin0[i].e().transpose();
+      Ct.row(k * i + k - 1) = kin0[i].len * kin0[i].nrm().transpose();
+    }
+    const Vec2 lam = Ct.colPivHouseholderQr().solve(-Q0t);
+    load += lam;
+    chain.generalised(theta0, load, Q0t);
+  }
+  double r0 = 0.0;
+  for (int c = 0; c < nt; ++c) {
+    const bool is_delta = k == 2 && c % 2 == 0;
+    r0 = std::max(r0, std::abs(Q0t[c]) / (is_delta ? 1.0 : model.length()));
+  }
+  res.equilibrium_residual = r0 > 0.0 ? r0 / F : 0.0;
+
+  // Stiffness by central differences of Q_θ.
+  MatX K(nt, nt);
+  VecX th(theta0), Qp, Qm;
+  for (int c = 0; c < nt; ++c) {
+    const bool is_delta = k == 2 && c % 2 == 0;
+    const double h = options.fd_step * (is_delta ? model.segmentLength() : 1.0);
+    th[c] = theta0[c] + h;
+    chain.generalised(th, load, Qp);
+    th[c] = theta0[c] - h;
+    chain.generalised(th, load, Qm);
+    th[c] = theta0[c];
+    K.col(c) = -(Qp - Qm) / (2.0 * h);
+  }
+  const double knorm = K.norm();
+  res.asymmetry = knorm > 0.0 ? (K - K.transpose()).norm() / knorm : 0.0;
+  K = 0.5 * (K + K.transpose()).eval();
+
+  // Mass matrix: the dense M_II of the independent formulation at the static state (θ' = 0).
+  MatX M;
+  {
+    IndependentFormulation f(model, 0.0);
+    VecX y = VecX::Zero(2 * nt), dy(2 * nt);
+    y.head(nt) = theta0;
+    PointMotion pm;
+    pm.p = top;
+    f.derivative(options.time, y, pm, dy);
+    M = f.massMatrix().selfadjointView<Eigen::Lower>();
+  }
+
+  // Pinned bottom: orthonormal null space of the end-point Jacobian C (E' = C θ').
+  MatX N;
+  if (res.pinned) {
+    MatX Ct(nt, 2);
+    for (int i = 0; i < nb; ++i) {
+      if (k == 2) Ct.row(2 * i) = kin0[i].e().transpose();
+      Ct.row(k * i + k - 1) = kin0[i].len * kin0[i].nrm().transpose();
+    }
+    Eigen::ColPivHouseholderQR<MatX> qr(Ct);
+    qr.setThreshold(1e-10);
+    if (qr.rank() < 2)
+      throw std::runtime_error(
+          "modal: the pinned end's constraint Jacobian is singular (an inextensible line pinned at exactly "
+          "its length is locked); use axial flexibility");
+    const MatX Qfull = qr.householderQ();
+    N = Qfull.rightCols(nt - 2);
+    K = (N.transpose() * K * N).eval();
+    M = (N.transpose() * M * N).eval();
+    K = 0.5 * (K + K.transpose()).eval();
+    M = 0.5 * (M + M.transpose()).eval();
+  }
+  res.dofs = static_cast<int>(K.rows());
+
+  Eigen::GeneralizedSelfAdjointEigenSolver<MatX> es(K, M);
+  if (es.info() != Eigen::Success)
+    throw std::runtime_error("modal: the generalised eigen-solve failed (mass matrix not positive definite?)");
+  const int count = std::min(options.modes, res.dofs);
+  for (int m = 0; m < count; ++m) {
+    Mode mode;
+    mode.omega2 = es.eigenvalues()[m];
+    mode.omega = mode.omega2 > 0.0 ? std::sqrt(mode.omega2) : 0.0;
+    mode.frequency = mode.omega / (2.0 * M_PI);
+    mode.period = mode.omega > 0.0 ? 1.0 / mode.frequency : 0.0;
+    mode.theta = res.pinned ? VecX(N * es.eigenvectors().col(m)) : VecX(es.eigenvectors().col(m));
+    modeShape(model, kin0, k, mode.theta, mode);
+    res.modes.push_back(std::move(mode));
+  }
+  res.stiffness = std::move(K);
+  res.mass = std::move(M);
+  return res;
+}
+
+ModalResult sceneModes(const Scene& scene, const ModalOptions& options, StaticsResult* statics) {
+  std::shared_ptr<Model> model = buildModel(scene);
+  const StaticsProblem problem = staticsProblem(scene);
+  StaticsResult st;
+  if (scene.initial.type == "straight") {
+    st.converged = true;
+    st.kin = straightLine(*model, problem.top, scene.initial.angle);
+    st.message = "straight initial state (not an equilibrium)";
+  } else {
+    st = solveStatics(*model, problem, 0.0);
+    if (!st.converged) throw std::runtime_error("initial: " + st.message);
+  }
+  if (statics) *statics = st;
+  ModalOptions o = options;
+  return computeModes(*model, st.kin, st.end_force, o);
+}
+
+}  // namespace riser_sim
