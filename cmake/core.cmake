@@ -23,7 +23,6 @@ add_library(riser_sim_core
   src/core/simulator.cpp
   src/core/statics.cpp
   src/core/modal.cpp
-  src/core/modal.cpp
   src/core/scene.cpp
   src/core/scene_yaml.cpp
 )
