@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "cli_options.h"
+#include "modal_output.h"
 #include "riser_sim/scene.h"
 #include "riser_sim/scene_yaml.h"
 #include "run_output.h"
@@ -64,6 +65,10 @@ int main(int argc, char** argv) {
   info("scene '%s': n = %d, dt = %g s, %s/%s, duration %g s", scene.name.c_str(), scene.elements, scene.solver.dt,
        scene.solver.integrator.c_str(), scene.solver.formulation.c_str(), scene.duration);
   if (scene.top.type == "external") info("top.motion.type external: the top is held at top.position offline");
+  if (opt.modes > 0) {  // statics + modes; a time run only when --duration is given too
+    const int rc = runModes(scene, opt.modes, opt.modes_csv, opt.quiet);
+    if (rc != kExitOk || opt.duration <= 0.0) return rc;
+  }
 
   std::unique_ptr<Simulator> sim;
   StaticsResult statics;
@@ -78,6 +83,13 @@ int main(int argc, char** argv) {
   }
   info("initial state (%s): %s; end force (%g, %g) N", scene.initial.type.c_str(), statics.message.c_str(),
        statics.end_force.x(), statics.end_force.y());
+  if (sim->integrator().explicitFixedStep())
+    info("stability: highest frequency %g rad/s, %s stable for solver.dt <= ~%g s%s", sim->highestFrequency(),
+         scene.solver.integrator.c_str(), sim->stableStepEstimate(),
+         sim->dt() > sim->stableStepEstimate() ? " -- solver.dt is above it, the run will likely diverge" : "");
+  else
+    info("stability: highest frequency %g rad/s (rk4 would need solver.dt <= ~%g s); %s has no such limit",
+         sim->highestFrequency(), sim->stableStepEstimate(), scene.solver.integrator.c_str());
 
   std::unique_ptr<std::FILE, FileCloser> csv;
   if (!opt.csv.empty()) {
@@ -138,6 +150,8 @@ int main(int argc, char** argv) {
         .add("scene", scene.name)
         .add("n", scene.elements)
         .add("dt", dt)
+        .add("stable_dt_estimate", sim->stableStepEstimate())
+        .add("omega_max", sim->highestFrequency())
         .add("integrator", scene.solver.integrator)
         .add("formulation", scene.solver.formulation)
         .add("statics_iterations", statics.iterations)

@@ -152,10 +152,16 @@ void Simulator::checkDivergence() {
     why << "joint constraint error " << err << " m exceeds " << limit << " m (" << settings_.max_constraint_error
         << " d) at t = " << t_ << " s";
   why << "; reduce solver.dt (now " << settings_.dt << " s)";
-  if (integrator_->explicitFixedStep() && omega_max_ > 0.0)
-    why << "; " << integrator_->name() << " stability limit h ~ " << stableStepEstimate()
-        << " s (highest frequency " << omega_max_ << " rad/s): a safe solver.dt is " << 0.8 * stableStepEstimate()
-        << " s, or use solver.integrator rosenbrock2 / midpoint (implicit) or dopri5 (adaptive)";
+  if (integrator_->explicitFixedStep() && omega_max_ > 0.0) {
+    const double limit_h = stableStepEstimate();
+    if (settings_.dt > 0.9 * limit_h)
+      why << "; it is at or above " << integrator_->name() << "'s stability limit h ~ " << limit_h
+          << " s (highest frequency " << omega_max_ << " rad/s): a safe solver.dt is " << 0.8 * limit_h
+          << " s, or use solver.integrator rosenbrock2 / midpoint (implicit) or dopri5 (adaptive)";
+    else
+      why << " (" << integrator_->name() << "'s stability limit h ~ " << limit_h
+          << " s is not exceeded: look at the input, e.g. a jump in the top motion)";
+  }
   reason_ = why.str();
 }
 
