@@ -10,16 +10,17 @@
 
 #include "riser_sim/model.h"
 #include "riser_sim/outputs.h"
+#include "riser_sim/scene.h"
 #include "riser_sim_ros/node_params.h"
 
 namespace riser_sim_ros {
 
-// Horizontal planes drawn when present (world z [m]). The scene format has neither yet; the node
-// fills them once it does.
+// Horizontal planes drawn when the scene has them (world z [m]).
 struct Surfaces {
-  std::optional<double> water_level;
-  std::optional<double> seabed;
+  std::optional<double> water_level;  // environment.water.surface
+  std::optional<double> seabed;       // seabed.level
 };
+Surfaces surfacesOf(const riser_sim::Scene& scene);
 
 // Colour of x in [lo, hi]: blue (low) -> cyan -> green -> yellow -> red (high).
 std_msgs::ColorRGBA tensionColour(double x, double lo, double hi);

@@ -32,6 +32,13 @@ void formatKn(char* buf, size_t n, const char* label, double newton) {
 }
 }  // namespace
 
+Surfaces surfacesOf(const riser_sim::Scene& scene) {
+  Surfaces s;
+  if (scene.water.enabled) s.water_level = scene.water.surface;
+  if (scene.seabed.enabled) s.seabed = scene.seabed.level;
+  return s;
+}
+
 std_msgs::ColorRGBA tensionColour(double x, double lo, double hi) {
   const double s = hi > lo ? std::clamp((x - lo) / (hi - lo), 0.0, 1.0) : 0.5;
   // Piecewise linear through blue, cyan, green, yellow, red.

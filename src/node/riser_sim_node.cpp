@@ -200,14 +200,15 @@ bool RiserSimNode::start(const VesselSample& s, const ros::Time& now, std::strin
         return false;
       }
     }
-    origin_ = now;
+    origin_ = ros::Time::now();  // after the statics: their cost is not a backlog to catch up
+    if (origin_ < now) origin_ = now;
     dropped_ = 0.0;
     auto motion = std::make_unique<riser_sim::ExternalMotion>(top, simTime(s.stamp), params_.motion);
     motion_ = motion.get();
     sim_ = std::make_unique<riser_sim::Simulator>(model, std::move(motion), sc.solver);
     sim_->setInitialState(st.kin, 0.0);
     msgs_ = std::make_unique<LineMessages>(*model, params_.fixed_frame, params_.tf_prefix);
-    markers_ = std::make_unique<LineMarkers>(*model, params_.fixed_frame, params_.markers);
+    markers_ = std::make_unique<LineMarkers>(*model, params_.fixed_frame, params_.markers, surfacesOf(sc));
   } catch (const std::exception& e) {
     mode_ = Mode::kStaticsFailed;
     reason_ = std::string("could not start: ") + e.what();
@@ -216,8 +217,8 @@ bool RiserSimNode::start(const VesselSample& s, const ros::Time& now, std::strin
   }
   mode_ = Mode::kRunning;
   reason_.clear();
-  for (Schedule* sch : {&tension_s_, &state_s_, &markers_s_, &tf_s_, &wrench_s_}) sch->restart(now);
-  resetWindow(now);
+  for (Schedule* sch : {&tension_s_, &state_s_, &markers_s_, &tf_s_, &wrench_s_}) sch->restart(origin_);
+  resetWindow(origin_);
   period_work_.clear();
   publish_work_.clear();
   work_acc_ = 0.0;

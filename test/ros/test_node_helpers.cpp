@@ -164,6 +164,41 @@ TEST(LineMarkers, ColoursAndLegendFollowTheTensionRange) {
   EXPECT_TRUE(std::isfinite(flat.r) && std::isfinite(flat.g) && std::isfinite(flat.b));
 }
 
+TEST(LineMarkers, SurfacesOnlyWhenTheSceneHasThem) {
+  riser_sim::LineProperties props;
+  props.EA = 1e6;
+  props.mass_per_length = 1.0;
+  riser_sim::Model model(4.0, 2, props, riser_sim::ModelOptions(), 0.0, 9.81);
+  riser_sim::LineOutputs out;
+  out.points = {riser_sim::Vec2(0, 0), riser_sim::Vec2(0, -1), riser_sim::Vec2(0, -3), riser_sim::Vec2(0, -4)};
+  out.axial_force = {30, 20, 10};
+  auto names = [&](const Surfaces& s) {
+    LineMarkers m(model, "world", MarkerParams(), s);
+    m.fill(out, ros::Time(1));
+    std::string all;
+    for (const auto& mk : m.msg.markers) all += mk.ns + " ";
+    return std::make_pair(all, m.msg);
+  };
+  EXPECT_EQ(names(Surfaces()).first.find("water"), std::string::npos);
+  EXPECT_EQ(names(Surfaces()).first.find("seabed"), std::string::npos);
+  riser_sim::Scene scene;
+  scene.water.enabled = true;
+  scene.water.surface = 2.0;
+  scene.seabed.enabled = true;
+  scene.seabed.level = -50.0;
+  const auto [all, msg] = names(surfacesOf(scene));
+  EXPECT_NE(all.find("water_surface"), std::string::npos);
+  EXPECT_NE(all.find("seabed"), std::string::npos);
+  for (const auto& mk : msg.markers) {
+    if (mk.ns == "water_surface") EXPECT_EQ(mk.pose.position.z, 2.0);
+    if (mk.ns == "seabed") EXPECT_EQ(mk.pose.position.z, -50.0);
+    if (mk.ns == "line") {
+      EXPECT_GT(mk.colors.front().r, 0.9);  // top: highest tension, red
+      EXPECT_GT(mk.colors.back().b, 0.9);   // bottom: lowest, blue
+    }
+  }
+}
+
 TEST(TimingStats, PercentilesOverTheRing) {
   TimingStats s(100);
   for (int i = 1; i <= 100; ++i) s.add(i);
