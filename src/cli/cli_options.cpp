@@ -31,6 +31,9 @@ std::string usage() {
          "  --output-dt S       CSV row interval [s] (default 0.1)\n"
          "  --summary           print one JSON line with the results at the end (stdout)\n"
          "  --quiet             no progress text on stderr\n"
+         "  --modes K           statics + the K lowest natural modes about it (table on stdout);\n"
+         "                      no time run unless --duration is given too\n"
+         "  --modes-csv FILE    mode shapes: mode,period_s,frequency_hz,character,point,s,x,y,dx,dy\n"
          "  --help              this text\n"
          "\n"
          "exit codes: 0 ok, 2 bad input, 3 diverged or initial statics failed\n";
@@ -72,6 +75,16 @@ CliOptions parseOptions(int argc, char** argv) {
     } else if (arg == "--summary") {
       noValue();
       o.summary = true;
+    } else if (arg == "--modes") {
+      const std::string text = takeValue();
+      char* end = nullptr;
+      const long k = std::strtol(text.c_str(), &end, 10);
+      if (text.empty() || *end != '\0' || k < 1 || k > 100000)
+        throw UsageError("--modes: expected a whole number of modes >= 1, got '" + text + "'");
+      o.modes = static_cast<int>(k);
+    } else if (arg == "--modes-csv") {
+      o.modes_csv = takeValue();
+      if (o.modes_csv.empty()) throw UsageError("--modes-csv: empty file name");
     } else if (arg == "--quiet" || arg == "-q") {
       noValue();
       o.quiet = true;
@@ -80,6 +93,7 @@ CliOptions parseOptions(int argc, char** argv) {
     }
   }
   if (!o.help && o.scene.empty()) throw UsageError("--scene FILE is required (see --help)");
+  if (!o.modes_csv.empty() && o.modes == 0) throw UsageError("--modes-csv: needs --modes K");
   return o;
 }
 

@@ -16,6 +16,8 @@ struct CliOptions {
   bool summary = false;                // --summary: one JSON line on stdout at the end
   bool quiet = false;                  // --quiet: no progress text on stderr
   bool help = false;                   // --help
+  int modes = 0;                       // --modes K: statics + lowest K natural modes (0: off)
+  std::string modes_csv;               // --modes-csv FILE: mode shapes (needs --modes)
 };
 
 // Bad command line (exit code 2).
