@@ -4,7 +4,7 @@ ROOT := $(abspath .)
 WS := $(ROOT)/.ws
 SETUP := set +u; source $(WS)/devel/setup.bash
 
-.PHONY: deps build test sim bench figures demo clean
+.PHONY: deps build test sim bench figures demo modes clean
 
 deps:
 	@scripts/install_deps.sh
@@ -20,6 +20,15 @@ sim: build
 
 bench: build
 	@$(SETUP); bench/run_all.sh
+
+# Lowest 4 mode shapes of the shipped paper scenes -> out/figures/modes_<scene>.png (docs/modal.md).
+modes: build
+	@for s in paper_jlay_170m paper_table1; do \
+	  if [ -f config/scenes/$$s.yaml ]; then \
+	    /usr/bin/python3 scripts/plot_modes.py --cli $(WS)/devel/lib/riser_sim/riser_sim_cli \
+	      --scene config/scenes/$$s.yaml --modes 4 || exit 1; \
+	  fi; \
+	done
 
 demo:
 	@scripts/demo.sh
