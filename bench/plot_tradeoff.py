@@ -1,0 +1,53 @@
+#!/usr/bin/env python3
+"""Pareto plot of out/bench/tradeoff.csv: end-position error at t = 20 s against wall time, one
+curve (its Pareto front) per model / integrator / formulation; all points drawn faintly."""
+import csv
+import sys
+from collections import defaultdict
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+src = sys.argv[1] if len(sys.argv) > 1 else "out/bench/tradeoff.csv"
+dst = sys.argv[2] if len(sys.argv) > 2 else "out/bench/pareto.png"
+groups = defaultdict(list)
+with open(src) as f:
+    for r in csv.DictReader(f):
+        if r["status"] != "ok":
+            continue
+        key = (r["model"], r["integrator"], r["formulation"])
+        groups[key].append((float(r["wall_s"]), float(r["err_end_m"]), int(r["n"])))
+
+fig, axes = plt.subplots(1, 2, figsize=(13, 5.5), sharey=True)
+for ax, model in zip(axes, ["elastic", "inextensible"]):
+    for (m, integ, form), pts in sorted(groups.items()):
+        if m != model:
+            continue
+        pts.sort()
+        front, best = [], float("inf")
+        for w, e, n in pts:
+            if e < best:
+                front.append((w, e, n))
+                best = e
+        label = f"{integ} / {form}"
+        line, = ax.plot([p[0] for p in front], [p[1] for p in front], "-o", ms=4, label=label)
+        ax.scatter([p[0] for p in pts], [p[1] for p in pts], s=10, alpha=0.3, color=line.get_color())
+        for w, e, n in front:
+            ax.annotate(str(n), (w, e), fontsize=6, xytext=(2, 2), textcoords="offset points")
+    for y, txt in [(1e-3, "1 mm"), (1e-2, "1 cm")]:
+        ax.axhline(y, color="grey", ls=":", lw=0.8)
+        ax.text(0.01, y * 1.08, txt, fontsize=7, color="grey", transform=ax.get_yaxis_transform())
+    for x in (0.02, 0.1):
+        ax.axvline(x, color="grey", ls="--", lw=0.8)
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xlabel("wall time for 20 s simulated [s] (median)")
+    ax.set_title(f"Table 1 line, {model} (labels: n)")
+    ax.grid(True, which="both", alpha=0.2)
+    ax.legend(fontsize=7)
+axes[0].set_ylabel("end position error at t = 20 s vs converged reference [m]")
+fig.tight_layout()
+fig.savefig(dst, dpi=120)
+print(f"wrote {dst}")
