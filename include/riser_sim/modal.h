@@ -69,7 +69,8 @@ struct ModalResult {
 ModalResult computeModes(const Model& model, const Kinematics& equilibrium, const Vec2& end_force,
                          const ModalOptions& options = ModalOptions());
 
-// Statics of the scene's initial state (its end force kept as a dead load), then the modes.
+// Statics of the scene's initial state (its end force kept as a dead load; the hanging equilibrium for
+// initial.type straight, which is none), then the modes.
 // Throws std::runtime_error when the statics do not converge.
 ModalResult sceneModes(const Scene& scene, const ModalOptions& options, StaticsResult* statics = nullptr);
 

@@ -43,9 +43,10 @@ int runModes(const Scene& scene, int count, const std::string& csv_path, bool qu
                  scene.initial.type.c_str(), st.message.c_str(), r.coordinates,
                  r.pinned ? " minus 2 end constraints (pinned)" : "", st.end_force.x(), st.end_force.y(),
                  r.equilibrium_residual, r.asymmetry);
-    if (r.equilibrium_residual > 1e-6)
-      std::fprintf(stderr, "riser_sim_cli: warning: the state is not an equilibrium; the modes are not meaningful\n");
   }
+  if (r.equilibrium_residual > 1e-6)  // even with --quiet
+    std::fprintf(stderr, "riser_sim_cli: warning: the state is not an equilibrium (residual %.2e); the modes are "
+                 "not meaningful\n", r.equilibrium_residual);
   double big = 0.0;
   for (const Mode& m : r.modes) big = std::max(big, std::abs(m.omega2));
   std::printf("%4s %14s %16s %14s  %-10s %11s\n", "mode", "period [s]", "frequency [Hz]", "omega [rad/s]",

@@ -248,19 +248,14 @@ ModalResult computeModes(const Model& model, const Kinematics& equilibrium, cons
 
 ModalResult sceneModes(const Scene& scene, const ModalOptions& options, StaticsResult* statics) {
   std::shared_ptr<Model> model = buildModel(scene);
-  const StaticsProblem problem = staticsProblem(scene);
-  StaticsResult st;
-  if (scene.initial.type == "straight") {
-    st.converged = true;
-    st.kin = straightLine(*model, problem.top, scene.initial.angle);
-    st.message = "straight initial state (not an equilibrium)";
-  } else {
-    st = solveStatics(*model, problem, 0.0);
-    if (!st.converged) throw std::runtime_error("initial: " + st.message);
-  }
+  StaticsProblem problem = staticsProblem(scene);
+  // A 'straight' initial state is not an equilibrium: the modes are taken about the hanging one.
+  if (scene.initial.type == "straight") problem.kind = StaticsProblem::Kind::kHanging;
+  StaticsResult st = solveStatics(*model, problem, 0.0);
+  if (!st.converged) throw std::runtime_error("initial: " + st.message);
+  if (scene.initial.type == "straight") st.message = "hanging equilibrium (initial.type straight is none); " + st.message;
   if (statics) *statics = st;
-  ModalOptions o = options;
-  return computeModes(*model, st.kin, st.end_force, o);
+  return computeModes(*model, st.kin, st.end_force, options);
 }
 
 }  // namespace riser_sim
