@@ -19,7 +19,7 @@ class ImplicitIntegrator : public Integrator {
  public:
   explicit ImplicitIntegrator(const IntegratorOptions& options) : options_(options) {}
   void reset(int n) override;
-  void restart() override { jac_valid_ = false; f0_valid_ = false; }
+  void restart() override { jac_valid_ = false; f0_valid_ = false; failure_.clear(); }
   const std::string& failure() const override { return failure_; }
   Stats stats() const override { return stats_; }
 

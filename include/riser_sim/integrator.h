@@ -28,8 +28,9 @@ class Integrator {
   // The system changed outside the integrator (new initial state, a term's history moved): cached
   // derivatives (FSAL, Jacobians) must not be reused.
   virtual void restart() {}
-  // Non-empty once step() could not meet its contract (Newton failed, step size underflow); y is then
-  // left non-finite so that the caller stops. Returns a reference: no allocation on the hot path.
+  // Non-empty once step() could not meet its contract (Newton failed, step size underflow); y then
+  // holds the last good state and the caller must stop. Cleared by reset()/restart(). A reference:
+  // no allocation on the hot path.
   virtual const std::string& failure() const {
     static const std::string none;
     return none;

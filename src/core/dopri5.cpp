@@ -97,8 +97,7 @@ void Dopri5::step(OdeSystem& sys, double t, VecX& y, double H) {
       char buf[160];
       std::snprintf(buf, sizeof(buf), "dopri5: step size underflow (h = %.3g s) at t = %.9g s; loosen solver.tolerance",
                     h, t);
-      failure_ = buf;
-      y.setConstant(std::numeric_limits<double>::quiet_NaN());
+      failure_ = buf;  // y keeps the last accepted substep: finite; the caller stops on failure()
       return;
     }
     tmp_ = y + h * a21 * k1_;

@@ -81,7 +81,7 @@ void ImplicitIntegrator::fail(const char* what, double t, VecX& y) {
   char buf[200];
   std::snprintf(buf, sizeof(buf), "%s: %s at t = %.9g s", name().c_str(), what, t);
   failure_ = buf;
-  y.setConstant(std::numeric_limits<double>::quiet_NaN());
+  (void)y;  // y keeps the last good state: outputs stay finite, the caller stops on failure()
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -134,7 +134,7 @@ void ImplicitMidpoint::step(OdeSystem& sys, double t, VecX& y, double h) {
     ok = newton(sys, t, y, h);
   }
   if (!ok) {
-    fail("Newton did not converge; reduce solver.dt", t, y);
+    fail("Newton did not converge", t, y);
     have_prev_ = false;
     return;
   }
@@ -170,11 +170,12 @@ void Rosenbrock2::step(OdeSystem& sys, double t, VecX& y, double h) {
   f2_ -= 2.0 * k1_;
   solve(f2_, k2_);
   k2_.tail(n_ - m_) = f2_.tail(n_ - m_);
-  y += (1.5 * h) * k1_ + (0.5 * h) * k2_;
-  if (!y.allFinite()) {
-    fail("state not finite; reduce solver.dt", t, y);
+  yp_ = y + (1.5 * h) * k1_ + (0.5 * h) * k2_;
+  if (!yp_.allFinite()) {
+    fail("state not finite", t, y);
     return;
   }
+  y.swap(yp_);
   ++stats_.substeps;
   sys.rhs(t + h, y, f0_);
   ++stats_.rhs;
