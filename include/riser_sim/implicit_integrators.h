@@ -46,7 +46,8 @@ class ImplicitIntegrator : public Integrator {
   Stats stats_;
 };
 
-// Implicit midpoint rule: y1 = y0 + h f(t + h/2, (y0 + y1)/2), modified Newton on the midpoint.
+// Implicit midpoint rule: y1 = y0 + h f(t + h/2, (y0 + y1)/2), modified Newton on the midpoint
+// (when Newton fails, the step is retried as 2, 4, 8 equal substeps before giving up).
 // Second order, A-stable, symmetric (time-reversible), no numerical damping; conserves quadratic
 // invariants exactly. For long conservative runs.
 class ImplicitMidpoint : public ImplicitIntegrator {
@@ -59,8 +60,10 @@ class ImplicitMidpoint : public ImplicitIntegrator {
   int stages() const override { return 3; }  // typical: 2 Newton iterations + the end evaluation
 
  private:
+  static constexpr int kMaxPieces = 8;  // substeps tried when Newton fails on the whole step
   bool newton(OdeSystem& sys, double t, const VecX& y0, double h);
-  VecX z_, g_, dz_, fz_;
+  bool single(OdeSystem& sys, double t, VecX& y, double h);
+  VecX z_, g_, dz_, fz_, y_save_, f_save_;
   bool have_prev_ = false;
   double h_prev_ = 0.0;
 };

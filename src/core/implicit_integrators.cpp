@@ -88,7 +88,7 @@ void ImplicitIntegrator::fail(const char* what, double t, VecX& y) {
 
 void ImplicitMidpoint::reset(int n) {
   ImplicitIntegrator::reset(n);
-  for (VecX* v : {&z_, &g_, &dz_, &fz_}) v->setZero(n);
+  for (VecX* v : {&z_, &g_, &dz_, &fz_, &y_save_, &f_save_}) v->setZero(n);
   have_prev_ = false;
 }
 
@@ -119,8 +119,8 @@ bool ImplicitMidpoint::newton(OdeSystem& sys, double t, const VecX& y0, double h
   return false;
 }
 
-void ImplicitMidpoint::step(OdeSystem& sys, double t, VecX& y, double h) {
-  startValue(sys, t, y);
+// One midpoint step of h from (t, y) with f0_ = f(t, y) current; false if Newton fails.
+bool ImplicitMidpoint::single(OdeSystem& sys, double t, VecX& y, double h) {
   bool fresh = false;
   if (jacobianStale(t)) {
     jacobian(sys, t, y, f0_);
@@ -134,17 +134,41 @@ void ImplicitMidpoint::step(OdeSystem& sys, double t, VecX& y, double h) {
     ok = newton(sys, t, y, h);
   }
   if (!ok) {
-    fail("Newton did not converge", t, y);
     have_prev_ = false;
-    return;
+    return false;
   }
   have_prev_ = true;
   h_prev_ = h;
   y += h * fz_;  // y1 = y0 + h f(z) (= 2z - y0 on the implicit part; W by the same midpoint rule)
   ++stats_.substeps;
-  // End evaluation: the chain formulations read A_0 from the last call; reused as the next f0.
+  // End evaluation: the chain formulations read A_0 from the last call; it is the next f0.
   sys.rhs(t + h, y, f0_);
   ++stats_.rhs;
+  return true;
+}
+
+void ImplicitMidpoint::step(OdeSystem& sys, double t, VecX& y, double h) {
+  startValue(sys, t, y);
+  // Newton out of reach (a large h on a stiff, undamped mode): 2, 4, ... kMaxPieces equal substeps.
+  y_save_ = y;
+  f_save_ = f0_;
+  bool ok = false;
+  for (int pieces = 1; pieces <= kMaxPieces && !ok; pieces *= 2) {
+    if (pieces > 1) {
+      y = y_save_;
+      f0_ = f_save_;
+      ++stats_.rejected;
+    }
+    const double hp = h / pieces;
+    ok = true;
+    for (int k = 0; k < pieces && ok; ++k) ok = single(sys, t + k * hp, y, hp);
+  }
+  if (!ok) {
+    y = y_save_;
+    f0_valid_ = false;
+    fail("Newton did not converge, even on h / 8", t, y);
+    return;
+  }
   f0_valid_ = true;
   y_end_ = y;
   t_end_ = t + h;
