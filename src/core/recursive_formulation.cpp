@@ -13,6 +13,30 @@ RecursiveFormulation::RecursiveFormulation(const Model& model, double stabilizat
   rigid_.assign(model.bodies(), RigidNode{});
 }
 
+inline void RecursiveFormulation::finishNode(RigidNode& nd, double c, double s, double len, double c0, double c1,
+                                      double Di00, double Di01, double Di11, double Bh00, double Bh01, double Bh10,
+                                      double Bh11, double rho0, double rho1, double L00, double L01, double L11,
+                                      double be, double bn) {
+  // u'' = D̂^-1 ρ - W R^T A'' with W = D̂^-1 B̂^T (frame); R = [e n].
+  const double W00 = Di00 * Bh00 + Di01 * Bh01, W01 = Di00 * Bh10 + Di01 * Bh11;
+  const double W10 = Di01 * Bh00 + Di11 * Bh01, W11 = Di01 * Bh10 + Di11 * Bh11;
+  nd.U00 = -(W00 * c - W01 * s), nd.U01 = -(W00 * s + W01 * c);
+  nd.U10 = -(W10 * c - W11 * s), nd.U11 = -(W10 * s + W11 * c);
+  nd.u0 = Di00 * rho0 + Di01 * rho1, nd.u1 = Di01 * rho0 + Di11 * rho1;
+  // Λ = R Λ_frame R^T, β = R β_frame.
+  const double cc = c * c, ss = s * s, cs = c * s;
+  nd.La = L00 * cc - 2.0 * L01 * cs + L11 * ss;
+  nd.Ld = L00 * ss + 2.0 * L01 * cs + L11 * cc;
+  nd.Lb = (L00 - L11) * cs + L01 * (cc - ss);
+  nd.bx = c * be - s * bn, nd.by = s * be + c * bn;
+  // A''_{i+1} = A'' + R (G u'' + c_frame), G = diag(1, l).
+  const double V00 = nd.U00, V01 = nd.U01, V10 = len * nd.U10, V11 = len * nd.U11;
+  nd.M00 = 1.0 + c * V00 - s * V10, nd.M01 = c * V01 - s * V11;
+  nd.M10 = s * V00 + c * V10, nd.M11 = 1.0 + s * V01 + c * V11;
+  const double g0 = nd.u0 + c0, g1 = len * nd.u1 + c1;
+  nd.mx = c * g0 - s * g1, nd.my = s * g0 + c * g1;
+}
+
 // Rigid parts, extensible line. In rfe i's frame (e, n): G = diag(1, l), B = diag(mk, S), D = diag(mk, I),
 // so B̂^T = D̂ E - Z with E = diag(1, 1/l), Z = diag(0, δ), δ = I/l - S, and
 //   Λ_i = m + Λ' - B̂ D̂^-1 B̂^T = diag(m - mk, m + I/l² - 2S/l - δ² D̂_ee / det D̂):
@@ -78,30 +102,6 @@ void RecursiveFormulation::rigidBackwardLocked() {
     finishNode(nd, c, s, len, c0, 0.0, 0.0, 0.0, Di11, 0.0, Bh01, 0.0, Bh11, 0.0, rho1, L00, L01, L11, be, bn);
     a = nd.La, b = nd.Lb, d = nd.Ld, bx = nd.bx, by = nd.by;
   }
-}
-
-void RecursiveFormulation::finishNode(RigidNode& nd, double c, double s, double len, double c0, double c1,
-                                      double Di00, double Di01, double Di11, double Bh00, double Bh01, double Bh10,
-                                      double Bh11, double rho0, double rho1, double L00, double L01, double L11,
-                                      double be, double bn) {
-  // u'' = D̂^-1 ρ - W R^T A'' with W = D̂^-1 B̂^T (frame); R = [e n].
-  const double W00 = Di00 * Bh00 + Di01 * Bh01, W01 = Di00 * Bh10 + Di01 * Bh11;
-  const double W10 = Di01 * Bh00 + Di11 * Bh01, W11 = Di01 * Bh10 + Di11 * Bh11;
-  nd.U00 = -(W00 * c - W01 * s), nd.U01 = -(W00 * s + W01 * c);
-  nd.U10 = -(W10 * c - W11 * s), nd.U11 = -(W10 * s + W11 * c);
-  nd.u0 = Di00 * rho0 + Di01 * rho1, nd.u1 = Di01 * rho0 + Di11 * rho1;
-  // Λ = R Λ_frame R^T, β = R β_frame.
-  const double cc = c * c, ss = s * s, cs = c * s;
-  nd.La = L00 * cc - 2.0 * L01 * cs + L11 * ss;
-  nd.Ld = L00 * ss + 2.0 * L01 * cs + L11 * cc;
-  nd.Lb = (L00 - L11) * cs + L01 * (cc - ss);
-  nd.bx = c * be - s * bn, nd.by = s * be + c * bn;
-  // A''_{i+1} = A'' + R (G u'' + c_frame), G = diag(1, l).
-  const double V00 = nd.U00, V01 = nd.U01, V10 = len * nd.U10, V11 = len * nd.U11;
-  nd.M00 = 1.0 + c * V00 - s * V10, nd.M01 = c * V01 - s * V11;
-  nd.M10 = s * V00 + c * V10, nd.M11 = 1.0 + s * V01 + c * V11;
-  const double g0 = nd.u0 + c0, g1 = len * nd.u1 + c1;
-  nd.mx = c * g0 - s * g1, nd.my = s * g0 + c * g1;
 }
 
 // Forward from A''_0 = a_top: a short serial chain (A'' only), the rest per rfe.
