@@ -30,6 +30,10 @@ modes: build
 	  fi; \
 	done
 
+# The paper's section 4 runs and plots -> out/figures/*.csv, *.png, numbers.txt (docs/figures.md).
+figures: build
+	@RISER_SIM_WS=$(WS) scripts/figures.sh
+
 demo:
 	@scripts/demo.sh
 
