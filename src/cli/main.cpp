@@ -83,6 +83,13 @@ int main(int argc, char** argv) {
   }
   info("initial state (%s): %s; end force (%g, %g) N", scene.initial.type.c_str(), statics.message.c_str(),
        statics.end_force.x(), statics.end_force.y());
+  if (sim->integrator().explicitFixedStep())
+    info("stability: highest frequency %g rad/s, %s stable for solver.dt <= ~%g s%s", sim->highestFrequency(),
+         scene.solver.integrator.c_str(), sim->stableStepEstimate(),
+         sim->dt() > sim->stableStepEstimate() ? " -- solver.dt is above it, the run will likely diverge" : "");
+  else
+    info("stability: highest frequency %g rad/s (rk4 would need solver.dt <= ~%g s); %s has no such limit",
+         sim->highestFrequency(), sim->stableStepEstimate(), scene.solver.integrator.c_str());
 
   std::unique_ptr<std::FILE, FileCloser> csv;
   if (!opt.csv.empty()) {
@@ -143,6 +150,8 @@ int main(int argc, char** argv) {
         .add("scene", scene.name)
         .add("n", scene.elements)
         .add("dt", dt)
+        .add("stable_dt_estimate", sim->stableStepEstimate())
+        .add("omega_max", sim->highestFrequency())
         .add("integrator", scene.solver.integrator)
         .add("formulation", scene.solver.formulation)
         .add("statics_iterations", statics.iterations)
