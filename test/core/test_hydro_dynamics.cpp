@@ -116,19 +116,19 @@ TEST(HydroDynamics, AddedMassAndBuoyancyScaleThePeriod) {
   const double m = kWallMass, ma = kRhoW * kAout;
   const double buoy = std::sqrt(m * kG / kSubmergedWeight);
   const double f15 = std::sqrt((m + 0.5 * ma) / m), f2 = std::sqrt((m + ma) / m);
-  // The third zero crossing (1.5 periods of the fundamental) is compared. Buoyancy: exact scaling,
-  // measured 1.45038 vs 1.45038 (1e-3 covers the O(θ²) amplitude effects, θ = 0.01 rad). Added mass:
-  // measured 1.2209 vs sqrt((m + m_a)/m) = 1.2348 for C_M = 2 (−1.1 %) and 1.1158 vs 1.1235 for
-  // C_M = 1.5 (−0.7 %), i.e. the model shows ~93 % of the analytic added-mass effect at n = 10. Not
-  // explained yet (reported to the lead); the lumping of m_a at part centroids (no rotational added
-  // inertia) accounts for ~1e-3 only. 1.5 % bounds the measured gap and still fails if the added mass
-  // were missing (22 %) or doubled.
-  const int k = 2;
+  // The second zero crossing (~1 period of the fundamental) is compared; later crossings can be
+  // near-tangent wiggles of the higher modes (the third one moves by 0.4 s between n = 10 and 20) and
+  // are not a robust measure. Measured at n = 10: buoyancy 1.45038 vs 1.45038, C_M = 2: 1.23456 vs
+  // sqrt((m + m_a)/m) = 1.23476. Tolerance 1e-3: the amplitude (0.2 m on 20 m, θ = 0.01 rad) brings
+  // O(θ²) tangential motion that the normal-only added mass does not scale, and m_a is lumped at the
+  // part centroids (no rotational added inertia of the parts), O((d/L)²/12); a missing added mass is
+  // a 23 % error.
+  const int k = 1;
   std::printf("crossing %d: air %.4f  C_M=1 %.4f (ratio %.5f, expected %.5f)  1.5: %.5f (%.5f)  2: %.5f (%.5f)\n", k + 1,
               air[k], cm1[k], cm1[k] / air[k], buoy, cm15[k] / cm1[k], f15, cm2[k] / cm1[k], f2);
   EXPECT_NEAR(cm1[k] / air[k] / buoy, 1.0, 1e-3);
-  EXPECT_NEAR(cm15[k] / cm1[k] / f15, 1.0, 1.5e-2);
-  EXPECT_NEAR(cm2[k] / cm1[k] / f2, 1.0, 1.5e-2);
+  EXPECT_NEAR(cm15[k] / cm1[k] / f15, 1.0, 1e-3);
+  EXPECT_NEAR(cm2[k] / cm1[k] / f2, 1.0, 1e-3);
 }
 
 }  // namespace
