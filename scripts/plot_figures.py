@@ -62,7 +62,7 @@ def main(out):
         for name, label in runs:
             d = load(out, name)
             ax[0].plot(d["t"], d["tension_top"] / 1e3, lw=0.5, label=label)
-            ax[1].plot(d["t"], smooth(d["tension_top"], 20) / 1e3, label=label)
+            ax[1].plot(d["t"][20:-20], smooth(d["tension_top"], 20)[20:-20] / 1e3, label=label)
             ax[2].plot(d["x_end"], d["y_end"], label=label)
         ax[0].set_title(title + ": tension at the top (rfe 0)")
         ax[1].set_title("same, 1 s moving average")
