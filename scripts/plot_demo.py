@@ -5,7 +5,7 @@ usage: plot_demo.py BAG [-o PNG] [--tf-prefix PREFIX]
 
 Topics are found by name suffix and type, so any namespace works: */tension (riser_sim/Tension),
 *vessel/pose (geometry_msgs/PoseStamped), /tf (frame <prefix>/rfe_0 = top end A_0, last rfe = bottom end),
-/diagnostics (a value whose key mentions "real" and "time" = real-time factor).
+/diagnostics (keys "real-time factor" and "compute real-time factor" of riser_sim_node).
 Messages are read with the bag's own definitions, so the riser_sim messages need not be built.
 """
 import argparse
@@ -54,7 +54,7 @@ def read(bag_path, tf_prefix):
         "diag": "/diagnostics" if "/diagnostics" in info.topics else None,
     }
     d = {k: [] for k in ("t_ten", "top", "max", "bottom", "t_pose", "px", "pz",
-                         "t_a0", "a0x", "a0z", "t_end", "endx", "endz", "rtf")}
+                         "t_a0", "a0x", "a0z", "t_end", "endx", "endz", "rtf", "crtf")}
     t0 = None
     wanted = [t for t in topics.values() if t]
     for topic, msg, stamp in bag.read_messages(topics=wanted):
@@ -88,11 +88,10 @@ def read(bag_path, tf_prefix):
         elif topic == topics["diag"]:
             for status in msg.status:
                 for kv in status.values:
-                    key = kv.key.lower()
-                    if "real" in key and "time" in key and "factor" in key:
-                        v = as_float(kv.value)
-                        if v is not None:
-                            d["rtf"].append(v)
+                    key = {"real-time factor": "rtf", "compute real-time factor": "crtf"}.get(kv.key.strip())
+                    v = as_float(kv.value) if key else None
+                    if v is not None:
+                        d[key].append(v)
     bag.close()
     return topics, d
 
@@ -110,6 +109,9 @@ def summary(topics, d):
                      % (sum(d["rtf"]) / len(d["rtf"]), min(d["rtf"]), max(d["rtf"]), len(d["rtf"])))
     else:
         lines.append("real-time factor: no value in /diagnostics")
+    if d["crtf"]:
+        lines.append("compute real-time factor (simulated / wall time spent stepping): mean %.1f, min %.1f"
+                     % (sum(d["crtf"]) / len(d["crtf"]), min(d["crtf"])))
     if d["px"]:
         lines.append("vessel x: %.1f .. %.1f m, z: %.1f .. %.1f m" % (min(d["px"]), max(d["px"]),
                                                                    min(d["pz"]), max(d["pz"])))

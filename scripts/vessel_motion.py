@@ -5,13 +5,18 @@ Position of the vessel reference point in the world frame (z up), t [s] of ROS t
   p(t) = origin + e(t) * [surge(t), 0, heave(t)] + transit(t) + noise
   surge(t) = surge/amplitude * cos(2 pi t / surge/period + surge/phase)   (paper: x_0 = 10 cos(2 pi t / 27))
   heave(t) = heave/amplitude * cos(2 pi t / heave/period + heave/phase)
-  e(t)     = fade-in envelope 0.5 (1 - cos(pi t / fade_in)) for t < fade_in, 1 after (no jump at t = 0)
-  transit  = integral of a trapezoidal velocity: transit/velocity [vx, vy, vz] held over
-             [transit/start, transit/start + transit/duration], ramped over transit/ramp_time at each end
+  e(t)     = envelope: rises 0 -> 1 over fade_in and, with duration > 0, falls back to 0 over the last
+             fade_out seconds, along u^3 (10 - 15 u + 6 u^2): position, velocity and acceleration stay
+             continuous (the riser's top acceleration enters its equations of motion)
+  transit  = displacement at transit/velocity [vx, vy, vz] over [transit/start, transit/start +
+             transit/duration]; the speed ramps up and down over transit/ramp_time along a smoothstep,
+             so the acceleration stays continuous too
 Pitch (rotation about world y): pitch/amplitude [deg] * e(t) * cos(2 pi t / pitch/period + pitch/phase).
 Jitter (optional): jitter/position [m] Gaussian noise per axis, jitter/timing [0..1) relative spread of the
 publish period, jitter/seed.
 Also publishes vessel/markers (visualization_msgs/MarkerArray: hull box, sea backdrop) at ~marker_rate.
+With ~wait_for (a topic name, any type) it publishes the rest pose (t = 0) until a first message arrives
+there, e.g. the riser node's tension, so the motion starts only once the node is running from rest.
 Uses ROS time throughout, so it follows /clock under /use_sim_time. With ~duration > 0 it exits after that
 many seconds of motion (mark it required in a launch file to end the whole launch).
 """
@@ -56,8 +61,14 @@ class Oscillation(object):
         return self.amplitude * math.cos(2.0 * math.pi * t / self.period + self.phase)
 
 
+def smootherstep(u):
+    """0 -> 1 for u in [0, 1] with zero first and second derivatives at both ends."""
+    u = min(max(u, 0.0), 1.0)
+    return u * u * u * (10.0 + u * (-15.0 + 6.0 * u))
+
+
 class Transit(object):
-    """Displacement of a trapezoidal velocity profile (exact integral, piecewise quadratic)."""
+    """Displacement of a smoothly ramped constant-velocity window (exact integral)."""
 
     def __init__(self):
         self.velocity = _param("transit/velocity", [0.0, 0.0, 0.0])
@@ -67,17 +78,19 @@ class Transit(object):
         self.ramp = min(self.ramp, 0.5 * self.duration)
 
     def _distance(self, t):
-        """Distance covered at unit cruise speed after time t since the start of the window."""
+        """Distance covered at unit cruise speed after time t since the start of the window. The speed
+        follows 3u^2 - 2u^3 over each ramp (u = time into the ramp / ramp_time), whose integral is
+        r (u^3 - u^4 / 2), r / 2 over a whole ramp."""
         T, r = self.duration, self.ramp
         t = min(max(t, 0.0), T)
         if r <= 0.0:
             return t
-        if t <= r:  # accelerating
-            return 0.5 * t * t / r
+        ramp = lambda u: r * (u ** 3 - 0.5 * u ** 4)
+        if t <= r:  # speeding up
+            return ramp(t / r)
         if t <= T - r:  # cruising
             return 0.5 * r + (t - r)
-        u = T - t  # decelerating: full window minus what is left
-        return (T - r) - 0.5 * u * u / r
+        return (T - r) - ramp((T - t) / r)  # slowing down: the whole window minus what is left
 
     def at(self, t):
         s = self._distance(t - self.start)
@@ -91,6 +104,8 @@ class VesselMotion(object):
         self.origin = _param("origin", [0.0, 0.0, 0.0])
         self.fade_in = _param("fade_in", 5.0, lambda v: v >= 0, "must be >= 0")
         self.duration = _param("duration", 0.0, lambda v: v >= 0, "must be >= 0 (0 = run forever)")
+        self.wait_for = rospy.get_param("~wait_for", "")
+        self.fade_out = _param("fade_out", 0.0, lambda v: v >= 0, "must be >= 0 (used when duration > 0)")
         self.surge = Oscillation("surge", 10.0, 27.0)
         self.heave = Oscillation("heave", 0.0, 10.0)
         self.pitch = Oscillation("pitch", 0.0, 10.0)
@@ -104,9 +119,12 @@ class VesselMotion(object):
             if self.marker_rate > 0 else None
 
     def envelope(self, t):
-        if self.fade_in <= 0.0 or t >= self.fade_in:
-            return 1.0
-        return 0.5 * (1.0 - math.cos(math.pi * max(t, 0.0) / self.fade_in))
+        e = 1.0
+        if self.fade_in > 0.0:
+            e *= smootherstep(t / self.fade_in)
+        if self.duration > 0.0 and self.fade_out > 0.0:
+            e *= smootherstep((self.duration - t) / self.fade_out)
+        return e
 
     def pose(self, t):
         """(x, y, z, pitch [rad]) at time t since start, without jitter."""
@@ -140,8 +158,8 @@ class VesselMotion(object):
         hull.pose.orientation = pose_msg.pose.orientation
         hull.pose.position.x = pose_msg.pose.position.x
         hull.pose.position.y = pose_msg.pose.position.y
-        hull.pose.position.z = pose_msg.pose.position.z + 1.0  # 5 m draft, 5 m freeboard
-        hull.scale.x, hull.scale.y, hull.scale.z = 40.0, 12.0, 10.0
+        hull.pose.position.z = pose_msg.pose.position.z - 0.5  # 4 m draft, 3 m freeboard
+        hull.scale.x, hull.scale.y, hull.scale.z = 40.0, 12.0, 7.0
         hull.color.r, hull.color.g, hull.color.b, hull.color.a = 0.75, 0.75, 0.78, 0.85
         sea = Marker()
         sea.header = pose_msg.header
@@ -160,10 +178,29 @@ class VesselMotion(object):
             period *= 1.0 + self.jitter_timing * self.rng.uniform(-1.0, 1.0)
         return rospy.Duration.from_sec(period)
 
+    def wait_for_topic(self):
+        """Publishes the rest pose until a message arrives on ~wait_for."""
+        got = []
+        sub = rospy.Subscriber(self.wait_for, rospy.AnyMsg, lambda _: got.append(True), queue_size=1)
+        rospy.loginfo("vessel_motion: holding still until %s publishes", sub.resolved_name)
+        last_info = rospy.Time.now()
+        while not got and not rospy.is_shutdown():
+            now = rospy.Time.now()
+            self.pub.publish(self.message(now, 0.0))
+            if self.marker_pub is not None:
+                self.marker_pub.publish(self.markers(self.message(now, 0.0)))
+            if (now - last_info).to_sec() > 10.0:
+                rospy.logwarn("vessel_motion: still waiting for %s", sub.resolved_name)
+                last_info = now
+            rospy.sleep(1.0 / self.rate)
+        sub.unregister()
+
     def run(self):
         # Under /use_sim_time the clock reads 0 until /clock arrives: wait for a real time base.
         while not rospy.is_shutdown() and rospy.Time.now().is_zero():
             rospy.sleep(0.01)
+        if self.wait_for:
+            self.wait_for_topic()
         start = rospy.Time.now()
         rospy.loginfo("vessel_motion: surge %.2f m / %.1f s, heave %.2f m / %.1f s, pitch %.2f deg, "
                       "transit %s m/s for %.1f s from t=%.1f s, %.0f Hz%s",
