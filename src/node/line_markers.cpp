@@ -99,8 +99,7 @@ LineMarkers::LineMarkers(const riser_sim::Model& model, const std::string& fixed
   add(kLegendHigh, Marker::TEXT_VIEW_FACING, "legend");
   add(kLegendTitle, Marker::TEXT_VIEW_FACING, "legend");
   for (int id : {kLegendLow, kLegendHigh, kLegendTitle}) marker(id).scale.z = 0.7 * text_height_;
-  marker(kLegendLow).color = tensionColour(0, 0, 1);
-  marker(kLegendHigh).color = tensionColour(1, 0, 1);
+  for (int id : {kLegendLow, kLegendHigh, kLegendTitle}) marker(id).color = rgba(0.95, 0.95, 0.95);
   marker(kLegendTitle).text = "axial force";
 
   if (surfaces_.water_level) {
@@ -143,8 +142,9 @@ void LineMarkers::fill(const riser_sim::LineOutputs& out, const ros::Time& stamp
   formatKn(buf, sizeof(buf), "top tension ", out.top_tension);
   top.text = buf;
 
-  // Legend: a vertical colour bar right of the line, as tall as a third of the line length.
-  const double bx = xmax + 0.15 * length_, bz_top = zmax, bz_low = zmax - length_ / 3.0;
+  // Legend: a vertical colour bar right of the line, a third of the line length tall, its top a tenth
+  // of the length below the hang-off so its title clears the top-tension text.
+  const double bx = xmax + 0.15 * length_, bz_top = zmax - 0.1 * length_, bz_low = bz_top - length_ / 3.0;
   auto& bar = marker(kLegendBar);
   for (int k = 0; k < kBarVertices; ++k)
     bar.points[k] = point(bx, bz_low + (bz_top - bz_low) * k / (kBarVertices - 1.0));
@@ -156,7 +156,7 @@ void LineMarkers::fill(const riser_sim::LineOutputs& out, const ros::Time& stamp
   high.pose.position = point(bx + 0.12 * length_, bz_top);
   formatKn(buf, sizeof(buf), "", hi);
   high.text = buf;
-  marker(kLegendTitle).pose.position = point(bx, bz_top + text_height_);
+  marker(kLegendTitle).pose.position = point(bx, bz_top + 0.9 * text_height_);
 
   // Surfaces: thin slabs spanning the line's horizontal extent plus half a line length each side.
   const double span = (xmax - xmin) + length_, cx = 0.5 * (xmin + xmax);
