@@ -18,7 +18,6 @@ log() { echo "[demo] $*"; }
 
 # ---- inside xvfb-run: roscore, rviz, ffmpeg, the launch ----
 if [ "${1:-}" = --in-xvfb ]; then
-  set -m  # every background job in its own process group: stopped as a whole, default signal handling
   set +u; source "$RISER_SIM_WS/devel/setup.bash"; set -u
   export ROS_LOG_DIR=$out/ros_logs ROS_HOME=$out/ros_home
   mkdir -p "$ROS_LOG_DIR" "$ROS_HOME"
@@ -26,11 +25,19 @@ if [ "${1:-}" = --in-xvfb ]; then
   port=$(/usr/bin/python3 -c 'import socket; s=socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')
   export ROS_MASTER_URI=http://127.0.0.1:$port
   pids=()
-  stop() {  # stop(pid...): SIGINT to each process group, then wait up to 20 s, then SIGKILL
-    local p
+  # start LOG CMD...: CMD in the background in its own process group (job control on just for it), so
+  # it is stopped as a whole and keeps default signal handling. Foreground commands stay in our group:
+  # a Ctrl-C (SIGINT to the group) kills them too, and bash then runs the INT trap at once.
+  start() { local log=$1; shift; set -m; "$@" >"$log" 2>&1 & set +m; }
+  stop() {  # stop PID...: SIGINT to each process group; SIGTERM after 10 s, SIGKILL after 15 s
+    local p i
     for p in "$@"; do kill -INT -- "-$p" 2>/dev/null || true; done
     for p in "$@"; do
-      for _ in $(seq 200); do kill -0 "$p" 2>/dev/null || break; sleep 0.1; done
+      for i in $(seq 150); do
+        kill -0 "$p" 2>/dev/null || break
+        [ "$i" != 100 ] || kill -TERM -- "-$p" 2>/dev/null || true  # SIGINT may be ignored (inherited)
+        sleep 0.1
+      done
       kill -KILL -- "-$p" 2>/dev/null || true
       wait "$p" 2>/dev/null || true
     done
@@ -42,7 +49,8 @@ if [ "${1:-}" = --in-xvfb ]; then
     exit $rc
   }
   trap cleanup EXIT
-  trap 'exit 130' INT TERM
+  trap 'exit 130' INT
+  trap 'exit 143' TERM
   wait_for() {  # wait_for SECONDS WHAT COMMAND...: polls COMMAND every 0.2 s
     local secs=$1 what=$2; shift 2
     local deadline=$((SECONDS + secs))
@@ -54,26 +62,26 @@ if [ "${1:-}" = --in-xvfb ]; then
   subscribed() { rostopic info "$1" 2>/dev/null | sed -n '/^Subscribers:/,$p' | grep -q "$2"; }
 
   log "display $DISPLAY, master $ROS_MASTER_URI"
-  roscore -p "$port" >"$out/roscore.log" 2>&1 &
-  pids+=($!); roscore_pid=$!
+  start "$out/roscore.log" roscore -p "$port"
+  pids+=($!)
   wait_for 30 "roscore" rosparam get /run_id
 
-  rviz -d "$root/rviz/riser.rviz" >"$out/rviz.log" 2>&1 &
+  start "$out/rviz.log" rviz -d "$root/rviz/riser.rviz"
   rviz_pid=$!; pids=("$rviz_pid" "${pids[@]}")
   # rviz subscribes to its displays' topics once its window and config are up.
   wait_for 60 "rviz to subscribe to /riser_sim/markers" subscribed /riser_sim/markers /rviz
 
   rm -f "$out/demo.mp4" "$out/demo.bag" "$out/demo.bag.active"
-  ffmpeg -nostdin -y -loglevel error -f x11grab -draw_mouse 0 -video_size ${W}x${H} \
+  start "$out/ffmpeg.log" ffmpeg -nostdin -y -loglevel error -f x11grab -draw_mouse 0 -video_size ${W}x${H} \
     -framerate "$RISER_SIM_DEMO_FPS" -i "$DISPLAY" -t $((RISER_SIM_DEMO_DURATION + 30)) \
-    -c:v libx264 -preset ultrafast -crf 26 -pix_fmt yuv420p "$out/demo.mp4" >"$out/ffmpeg.log" 2>&1 &
+    -c:v libx264 -preset ultrafast -crf 26 -pix_fmt yuv420p "$out/demo.mp4"
   ffmpeg_pid=$!; pids=("$ffmpeg_pid" "${pids[@]}")
 
   log "running the demo for $RISER_SIM_DEMO_DURATION s"
-  roslaunch riser_sim demo.launch rviz:=false record:=true bag:="$out/demo.bag" \
-    duration:="$RISER_SIM_DEMO_DURATION" >"$out/roslaunch.log" 2>&1 &
+  start "$out/roslaunch.log" roslaunch riser_sim demo.launch rviz:=false record:=true bag:="$out/demo.bag" \
+    duration:="$RISER_SIM_DEMO_DURATION"
   launch_pid=$!; pids=("$launch_pid" "${pids[@]}")
-  if ! wait_for 60 "the first message on /riser_sim/tension" timeout 1 rostopic echo -n 1 /riser_sim/tension; then
+  if ! wait_for 60 "the first message on /riser_sim/tension" timeout --foreground 1 rostopic echo -n 1 /riser_sim/tension; then
     tail -n 30 "$out/roslaunch.log"; exit 1
   fi
   log "node is publishing; rviz and ffmpeg are recording"
@@ -82,7 +90,10 @@ if [ "${1:-}" = --in-xvfb ]; then
   wait_for $((RISER_SIM_DEMO_DURATION + 60)) "the launch to end" bash -c "! kill -0 $launch_pid" || rc=1
   wait "$launch_pid" 2>/dev/null || true
   stop "$ffmpeg_pid" "$rviz_pid"
-  grep -E "ERROR|FATAL|\[.*\] process has died" "$out/roslaunch.log" | grep -v vessel_motion | head -n 5 || true
+  if grep -q "\[riser_sim-[0-9]*\] process has died" "$out/roslaunch.log"; then
+    grep -E "ERROR|FATAL|process has died" "$out/roslaunch.log" | head -n 5
+    log "riser_sim_node died (see $out/roslaunch.log)"; rc=1
+  fi
   exit $rc
 fi
 

@@ -4,7 +4,7 @@
 usage: plot_demo.py BAG [-o PNG] [--tf-prefix PREFIX]
 
 Topics are found by name suffix and type, so any namespace works: */tension (riser_sim/Tension),
-*vessel/pose (geometry_msgs/PoseStamped), /tf (frame <prefix>/rfe_0 = top end A_0, last rfe = bottom end),
+*vessel/pose (geometry_msgs/PoseStamped), /tf (frame <prefix>/rfe_0 = top end A_0; <prefix>/end = bottom end, else the last rfe's origin A_n),
 /diagnostics (keys "real-time factor" and "compute real-time factor" of riser_sim_node).
 Messages are read with the bag's own definitions, so the riser_sim messages need not be built.
 """
@@ -33,6 +33,12 @@ def rfe_index(frame, prefix):
     if not tail.isdigit() or (prefix and head.strip("/") != prefix.strip("/")):
         return None
     return int(tail)
+
+
+def is_end(frame, prefix):
+    """'<prefix>/end': the end point of the last rfe, where the end mass hangs."""
+    head, _, tail = frame.lstrip("/").rpartition("/")
+    return tail == "end" and (not prefix or head == prefix.strip("/"))
 
 
 def as_float(text):
@@ -72,6 +78,9 @@ def read(bag_path, tf_prefix):
         elif topic == topics["tf"]:
             last = None
             for tr in msg.transforms:
+                if is_end(tr.child_frame_id, tf_prefix):
+                    last = (float("inf"), tr)
+                    continue
                 i = rfe_index(tr.child_frame_id, tf_prefix)
                 if i is None:
                     continue
