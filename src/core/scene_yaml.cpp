@@ -364,12 +364,13 @@ void parseSeabed(const Section& root, Scene& s) {
 }
 
 void parseInternalFluid(const Section& root, Scene& s) {
-  const Section f = root.section("internal_fluid", {"density", "velocity", "acceleration"});
+  const Section f = root.section("internal_fluid", {"density", "velocity", "acceleration", "model"});
   s.internal_fluid = InternalFlowSpec();
   s.internal_fluid.density = f.number("density", 0.0);
   requireNonNegative(f.key("density"), s.internal_fluid.density);
   s.internal_fluid.velocity = f.number("velocity", 0.0);
   s.internal_fluid.acceleration = f.number("acceleration", 0.0);
+  s.internal_fluid.model = f.choice("model", "paper", {"paper", "pipe_flow"});
 }
 
 void parseSolver(const Section& root, Scene& s) {

@@ -6,6 +6,8 @@
 // with the paper's interpolated flow direction (eq. 19). Q = -(d/dt ∂T2/∂q' - ∂T2/∂q) + ∂T3/∂q.
 // Energy: the Jacobi integral h = T + V - T3, so potentialEnergy() = -T3 and power() = -∂L/∂t.
 #pragma once
+#include <string>
+
 #include "riser_sim/force_term.h"
 
 namespace riser_sim {
@@ -14,6 +16,7 @@ struct InternalFlowSpec {
   double density = 0.0;       // ρ_f [kg/m^3]
   double velocity = 0.0;      // u0 [m/s]
   double acceleration = 0.0;  // u' [m/s^2]
+  std::string model = "paper";  // paper: closed-system Lagrangian (eqs. 17-24); pipe_flow: open system
 };
 
 class InternalFlow : public ForceTerm {
@@ -32,6 +35,26 @@ class InternalFlow : public ForceTerm {
   double shapeF(const Model& model, const Kinematics& kin) const;
 
  private:
+  InternalFlowSpec spec_;
+  double rho_l_;
+};
+
+// Open-system pipe flow (Benjamin / Paidoussis): the force of the flowing contents on the pipe,
+// f = -ρ_l (2u ∂v/∂s + u² ∂²r/∂s² + u' ∂r/∂s) per unit length, discretised on the rfes: u² r'' as a point
+// force -ρ_l u² (e_i - e_{i-1}) at every joint A_i (outward on a bend: the centrifugal term), the
+// Coriolis part -2ρ_l u φ'_i n_i per length on each part and -2ρ_l u Δ'_i e_i at each spring, the u'
+// part -ρ_l u' e_i per length. No end thrust. Not conservative: power() = Σ F·v.
+class PipeFlow : public ForceTerm {
+ public:
+  PipeFlow(const InternalFlowSpec& spec, double flow_area) : spec_(spec), rho_l_(spec.density * flow_area) {}
+  std::string name() const override { return "pipe_flow"; }
+  void addForces(const Model& model, const Kinematics& kin, double t, VecX& Q) const override;
+  double power(const Model& model, const Kinematics& kin, double t) const override;
+
+ private:
+  // Visits every force (rfe, s0, kappa, F) the flow applies.
+  template <class Visit>
+  void forces(const Model& model, const Kinematics& kin, double t, Visit&& visit) const;
   InternalFlowSpec spec_;
   double rho_l_;
 };

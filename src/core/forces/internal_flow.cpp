@@ -80,4 +80,34 @@ double InternalFlow::power(const Model& model, const Kinematics& kin, double t) 
   return -spec_.acceleration * rho_l_ * (sumT2(model, kin) + u * shapeF(model, kin));
 }
 
+template <class Visit>
+void PipeFlow::forces(const Model& model, const Kinematics& kin, double t, Visit&& visit) const {
+  const double u = spec_.velocity + spec_.acceleration * t, ud = spec_.acceleration;
+  for (int i = 0; i < model.bodies(); ++i) {
+    const BodyKinematics& b = kin[i];
+    const Rfe& r = model.rfe(i);
+    if (i > 0) visit(i, 0.0, 0.0, Vec2(-rho_l_ * u * u * (b.e() - kin[i - 1].e())));
+    const double lens[2] = {r.length1, r.length2}, s0[2] = {0.5 * r.length1, r.length1 + 0.5 * r.length2};
+    for (int p = 0; p < 2; ++p)
+      visit(i, s0[p], p == 0 ? 0.0 : 1.0,
+            Vec2(-rho_l_ * lens[p] * (2.0 * u * b.phi_dot * b.nrm() + ud * b.e())));
+    visit(i, r.length1, 1.0, Vec2(-2.0 * rho_l_ * u * b.delta_dot * b.e()));
+  }
+}
+
+void PipeFlow::addForces(const Model& model, const Kinematics& kin, double t, VecX& Q) const {
+  forces(model, kin, t, [&](int i, double s0, double kappa, const Vec2& F) {
+    Q.segment<4>(4 * i) += pointForce(kin[i], s0, kappa, F);
+  });
+}
+
+double PipeFlow::power(const Model& model, const Kinematics& kin, double t) const {
+  double pw = 0.0;
+  forces(model, kin, t, [&](int i, double s0, double kappa, const Vec2& F) {
+    pw += F.dot(kin[i].velocity(s0, kappa));
+  });
+  return pw;
+}
+
 }  // namespace riser_sim
+
