@@ -35,6 +35,9 @@ class Seabed : public ForceTerm {
   // Contact point j = 0..n+1: rfe index, position along it (s0, kappa), position and velocity.
   void point(const Model& model, const Kinematics& kin, int j, int& body, double& s0, Vec2& p, Vec2& v) const;
   Vec2 force(int j, const Vec2& p, const Vec2& v, bool damping) const;
+  // Calls visit(j, rfe, s0, position, velocity) for every contact point below the seabed level.
+  template <class Visit>
+  void forEachContact(const Model& model, const Kinematics& kin, Visit&& visit) const;
   SeabedSpec spec_;
   mutable std::vector<double> anchor_;  // x at touchdown; NaN when free (run state)
 };

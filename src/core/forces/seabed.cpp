@@ -25,44 +25,40 @@ Vec2 Seabed::force(int j, const Vec2& p, const Vec2& v, bool damping) const {
   return Vec2(fx, fy);
 }
 
-void Seabed::addForces(const Model& model, const Kinematics& kin, double, VecX& Q) const {
+template <class Visit>
+void Seabed::forEachContact(const Model& model, const Kinematics& kin, Visit&& visit) const {
   for (int j = 0; j <= model.bodies(); ++j) {
     int body;
     double s0;
     Vec2 p, v;
     point(model, kin, j, body, s0, p, v);
-    if (p.y() >= spec_.level) continue;
-    Q.segment<4>(4 * body) += pointForce(kin[body], s0, j < model.bodies() ? 0.0 : 1.0, force(j, p, v, true));
+    if (p.y() < spec_.level) visit(j, body, s0, p, v);
   }
+}
+
+void Seabed::addForces(const Model& model, const Kinematics& kin, double, VecX& Q) const {
+  forEachContact(model, kin, [&](int j, int body, double s0, const Vec2& p, const Vec2& v) {
+    Q.segment<4>(4 * body) += pointForce(kin[body], s0, j < model.bodies() ? 0.0 : 1.0, force(j, p, v, true));
+  });
 }
 
 double Seabed::potentialEnergy(const Model& model, const Kinematics& kin) const {
   double e = 0.0;
-  for (int j = 0; j <= model.bodies(); ++j) {
-    int body;
-    double s0;
-    Vec2 p, v;
-    point(model, kin, j, body, s0, p, v);
+  forEachContact(model, kin, [&](int j, int, double, const Vec2& p, const Vec2&) {
     const double pen = spec_.level - p.y();
-    if (pen <= 0.0) continue;
     e += 0.5 * spec_.stiffness_normal * pen * pen;
     if (j < static_cast<int>(anchor_.size()) && std::isfinite(anchor_[j]))
       e += 0.5 * spec_.stiffness_tangential * std::pow(p.x() - anchor_[j], 2);
-  }
+  });
   return e;
 }
 
 // Damping power; the normal clamp (no pull) also removes energy, counted here as the difference.
 double Seabed::power(const Model& model, const Kinematics& kin, double) const {
   double pw = 0.0;
-  for (int j = 0; j <= model.bodies(); ++j) {
-    int body;
-    double s0;
-    Vec2 p, v;
-    point(model, kin, j, body, s0, p, v);
-    if (p.y() >= spec_.level) continue;
+  forEachContact(model, kin, [&](int j, int, double, const Vec2& p, const Vec2& v) {
     pw += (force(j, p, v, true) - force(j, p, v, false)).dot(v);
-  }
+  });
   return pw;
 }
 
@@ -84,13 +80,7 @@ void Seabed::endStep(const Model& model, const Kinematics& kin) const {
 
 int Seabed::contacts(const Model& model, const Kinematics& kin) const {
   int c = 0;
-  for (int j = 0; j <= model.bodies(); ++j) {
-    int body;
-    double s0;
-    Vec2 p, v;
-    point(model, kin, j, body, s0, p, v);
-    c += p.y() < spec_.level;
-  }
+  forEachContact(model, kin, [&](int, int, double, const Vec2&, const Vec2&) { ++c; });
   return c;
 }
 
