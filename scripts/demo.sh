@@ -59,7 +59,7 @@ if [ "${1:-}" = --in-xvfb ]; then
       sleep 0.2
     done
   }
-  subscribed() { rostopic info "$1" 2>/dev/null | sed -n '/^Subscribers:/,$p' | grep -q "$2"; }
+  subscribed() { timeout -k 2 5 rostopic info "$1" 2>/dev/null | sed -n '/^Subscribers:/,$p' | grep -q "$2"; }
 
   log "display $DISPLAY, master $ROS_MASTER_URI"
   start "$out/roscore.log" roscore -p "$port"
@@ -81,8 +81,9 @@ if [ "${1:-}" = --in-xvfb ]; then
   start "$out/roslaunch.log" roslaunch riser_sim demo.launch rviz:=false record:=true bag:="$out/demo.bag" \
     duration:="$RISER_SIM_DEMO_DURATION"
   launch_pid=$!; pids=("$launch_pid" "${pids[@]}")
-  if ! wait_for 60 "the first message on /riser_sim/tension" timeout --foreground 1 rostopic echo -n 1 /riser_sim/tension; then
-    tail -n 30 "$out/roslaunch.log"; exit 1
+  # One rostopic waiting up to 60 s (it has been seen to hang on SIGTERM: -k kills it 5 s later).
+  if ! timeout -k 5 60 rostopic echo -n 1 /riser_sim/tension >/dev/null 2>&1; then
+    log "no message on /riser_sim/tension within 60 s"; tail -n 30 "$out/roslaunch.log"; exit 1
   fi
   log "node is publishing; rviz and ffmpeg are recording"
   # The launch ends by itself when vessel_motion (required) finishes its duration.
