@@ -4,6 +4,7 @@
 #include <Eigen/LU>
 
 #include "riser_sim/force_term.h"
+#include "riser_sim/rfe_inertia.h"
 
 namespace riser_sim {
 
@@ -56,21 +57,7 @@ void AbsoluteFormulation::kinematics(const VecX& y, Kinematics& kin) const {
 }
 
 void AbsoluteFormulation::massBlocks(double t) {
-  for (int i = 0; i < model_.bodies(); ++i) {
-    const Rfe& r = model_.rfe(i);
-    const BodyKinematics& b = kin_[i];
-    const double m = r.mass, mk = r.mass_k, S = r.firstMoment(b.delta), Sk = r.firstMomentK(b.delta);
-    const double I = r.inertiaAboutA(b.delta);
-    Mat4& M = M_[i];
-    M << m, 0, mk * b.c, -S * b.s,  //
-        0, m, mk * b.s, S * b.c,    //
-        mk * b.c, mk * b.s, mk, 0,  //
-        -S * b.s, S * b.c, 0, I;
-    const double w2 = b.phi_dot * b.phi_dot, dw = 2.0 * b.delta_dot * b.phi_dot;
-    h_.segment<4>(4 * i) = Vec4(-mk * dw * b.s - S * w2 * b.c, mk * dw * b.c - S * w2 * b.s, -Sk * w2, Sk * dw);
-  }
-  for (const auto& term : model_.terms())
-    if (term->hasInertia()) term->addInertia(model_, kin_, t, M_, h_);
+  rfeMassBlocks(model_, kin_, t, M_, h_);
 }
 
 namespace {
