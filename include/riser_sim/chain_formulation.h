@@ -7,6 +7,9 @@
 // packState() before the first one). The simulator's RK4 evaluates its last stage at the step's end
 // time, so energies and outputs read after a step see the right A_0.
 #pragma once
+#include <memory>
+
+#include "riser_sim/chain_shifted_solver.h"
 #include "riser_sim/formulation.h"
 
 namespace riser_sim {
@@ -23,6 +26,10 @@ class ChainFormulation : public Formulation {
   const Kinematics& lastKinematics() const override { return kin_; }
   double lastConstraintError() const override { return last_constraint_error_; }
   double kineticEnergy(double t, const VecX& y) override;
+  bool hasShiftedSolve() const override { return true; }
+  void linearize(double t) override;
+  void factorShifted(double c) override;
+  void solveShifted(const VecX& b, VecX& x) override;
 
   // Coordinates per rfe: 2 (Δ, φ) or 1 (φ, inextensible line).
   int dofsPerRfe() const { return k_; }
@@ -50,6 +57,16 @@ class ChainFormulation : public Formulation {
   AlignedVector<Mat4> M_;
   Reactions reactions_;
   double last_constraint_error_ = 0.0;
+
+ private:
+  // Structured implicit solves: linearisation copies (kinematics, mass blocks, joint forces) and the solver.
+  Kinematics lin_kin_;
+  AlignedVector<Mat4> lin_M_;
+  AlignedVector<Vec2> lin_joint_;
+  VecX lin_h_, lin_r_, lin_x_;
+  StiffnessBlocks lin_S_;
+  ChainShiftedSolver shifted_;
+  double shifted_c_ = 0.0;
 };
 
 }  // namespace riser_sim

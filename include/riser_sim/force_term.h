@@ -6,6 +6,7 @@
 
 #include "riser_sim/kinematics.h"
 #include "riser_sim/model.h"
+#include "riser_sim/stiffness.h"
 
 namespace riser_sim {
 
@@ -19,6 +20,12 @@ class ForceTerm {
   virtual bool hasInertia() const { return false; }
   virtual void addInertia(const Model&, const Kinematics&, double /*t*/, AlignedVector<Mat4>& /*M*/,
                           VecX& /*h*/) const {}
+  // Adds K = -∂Q/∂q and C = -∂Q/∂q' (see stiffness.h) for the implicit integrators' structured solves.
+  // Returns false when the term gives none: it is then treated explicitly by those solves (fine for
+  // non-stiff terms; the solves stay exact for every term that answers).
+  virtual bool addStiffness(const Model&, const Kinematics&, double /*t*/, StiffnessBlocks&) const {
+    return false;
+  }
   // Potential energy of the conservative part [J].
   virtual double potentialEnergy(const Model&, const Kinematics&) const { return 0.0; }
   // Same at time t [s], for terms whose potential depends on time (internal flow u(t)).

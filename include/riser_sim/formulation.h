@@ -36,6 +36,14 @@ class Formulation {
   virtual double lastConstraintError() const = 0;
   // Kinetic energy of the line (with every term's inertia) for state y [J].
   virtual double kineticEnergy(double t, const VecX& y) = 0;
+
+  // --- Structured implicit solves (optional; O(n), see chain_shifted_solver.h) ---
+  virtual bool hasShiftedSolve() const { return false; }
+  // Linearises about the state of the last derivative() call at time t [s].
+  virtual void linearize(double /*t*/) {}
+  // x = (I - c J)^-1 b on [q; v] (the first 2p entries), J ≈ ∂(q', v')/∂(q, v) of that linearisation.
+  virtual void factorShifted(double /*c*/) {}
+  virtual void solveShifted(const VecX& /*b*/, VecX& /*x*/) {}
 };
 
 }  // namespace riser_sim

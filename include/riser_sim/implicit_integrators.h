@@ -1,7 +1,11 @@
 // Implicit schemes for stiff lines, on y = [q; v; rest] with q' = v (every formulation's layout; the
 // trailing entries, the work W, are integrated by the same rule but take no part in the solve).
 //
-// Jacobian: A_q = ∂a/∂q, A_v = ∂a/∂v by forward differences (2p evaluations, p = size of q), dense,
+// Linear solves (IntegratorOptions::jacobian):
+// - "structured": the system's own O(n) solves (OdeSystem::linearize / factorShifted / solveShifted; the
+//   chain formulations, see chain_shifted_solver.h), relinearised at every step. A Rosenbrock-W method
+//   keeps its order with any such approximate J; Newton (midpoint) converges linearly at its accuracy.
+// - "dense": A_q = ∂a/∂q, A_v = ∂a/∂v by forward differences (2p evaluations, p = size of q), dense,
 // refreshed every IntegratorOptions::jacobian_interval of simulated time, when h changes, or when
 // Newton stalls. The linear systems (I - c J) x = b reduce to the p x p matrix
 //   S = I - c A_v - c² A_q,   u = S^-1 (b_v + c A_q b_q),   x_q = b_q + c u,   x_v = u,
@@ -24,13 +28,15 @@ class ImplicitIntegrator : public Integrator {
   Stats stats() const override { return stats_; }
 
  protected:
-  // Jacobian at (t, y) with f0 = f(t, y); factors S for coefficient c.
+  // Jacobian at (t, y) with f0 = f(t, y); factors for coefficient c.
   void jacobian(OdeSystem& sys, double t, const VecX& y, const VecX& f0);
-  void factor(double c);
+  void factor(OdeSystem& sys, double c);
   // x = (I - c J)^-1 b on the first 2p entries (c of the last factor()).
-  void solve(const VecX& b, VecX& x);
-  // Jacobian older than the refresh interval (or none).
-  bool jacobianStale(double t) const { return !jac_valid_ || std::abs(t - jac_t_) >= options_.jacobian_interval; }
+  void solve(OdeSystem& sys, const VecX& b, VecX& x);
+  // Structured: relinearised at every new t. Dense: older than the refresh interval (or none).
+  bool jacobianStale(double t) const {
+    return !jac_valid_ || (structured_ ? t != jac_t_ : std::abs(t - jac_t_) >= options_.jacobian_interval);
+  }
   // f(t, y) into f0_, reusing the last end-of-step evaluation when y and t are unchanged.
   void startValue(OdeSystem& sys, double t, const VecX& y);
   void fail(const char* what, double t, VecX& y);
@@ -42,6 +48,7 @@ class ImplicitIntegrator : public Integrator {
   VecX f0_, fp_, yp_, bu_, u_, y_end_;
   double jac_t_ = 0.0, c_ = -1.0, t_end_ = 0.0;
   bool jac_valid_ = false, f0_valid_ = false;
+  bool structured_ = false;  // options_.jacobian == "structured": the system's O(n) solves
   std::string failure_;
   Stats stats_;
 };

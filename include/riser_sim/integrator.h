@@ -12,6 +12,12 @@ class OdeSystem {
  public:
   virtual ~OdeSystem() = default;
   virtual void rhs(double t, const VecX& y, VecX& dy) = 0;
+  // Optional structured (O(n)) linear solves for the implicit schemes on y = [q; v; rest]:
+  // linearize at (t, y), factor for c, then x = (I - c J)^-1 b on the first 2p entries.
+  virtual bool hasShiftedSolve() const { return false; }
+  virtual void linearize(double /*t*/, const VecX& /*y*/) {}
+  virtual void factorShifted(double /*c*/) {}
+  virtual void solveShifted(const VecX& /*b*/, VecX& /*x*/) {}
 };
 
 class Integrator {
@@ -51,6 +57,9 @@ struct IntegratorOptions {
   double tolerance = 1e-6;         // dopri5: atol = rtol on positions and velocities
   int position_size = -1;          // size of q in y = [q; v; rest] (implicit schemes need it)
   double jacobian_interval = 1.0;  // implicit schemes: Jacobian refresh period [s of simulated time]
+  // Implicit schemes: "structured" (the system's O(n) solves, relinearised every step) or "dense"
+  // (finite-difference Jacobian, O(p²) per solve).
+  std::string jacobian = "structured";
 };
 
 // Classical fixed-step fourth-order Runge-Kutta (the paper's scheme).

@@ -2,6 +2,7 @@
 // W [J] is the work fed in by the top motion and the non-conservative terms, integrated alongside
 // the motion so that energy balance E(t) - E(0) - W(t) = 0 is checkable at any step.
 #pragma once
+#include <cmath>
 #include <memory>
 #include <string>
 
@@ -20,7 +21,10 @@ struct SolverSettings {
   double stabilization = 50.0;          // Baumgarte frequency ω_c [rad/s] (c'' + 2ω_c c' + ω_c² c = 0)
   double max_constraint_error = 0.05;   // divergence when the joint gap exceeds this × d
   double tolerance = 1e-6;              // solver.tolerance: dopri5 error control (atol = rtol)
-  double jacobian_interval = 1.0;       // solver.jacobian_interval [s]: implicit schemes' Jacobian refresh
+  double jacobian_interval = 1.0;       // solver.jacobian_interval [s]: implicit schemes' dense Jacobian refresh
+  // solver.jacobian: implicit schemes' linear solves. "auto": structured (O(n)) when the formulation has
+  // them (independent, recursive), else dense; "structured"; "dense" (finite differences, O(p²)).
+  std::string jacobian = "auto";
 };
 
 class Simulator : private OdeSystem {
@@ -70,6 +74,10 @@ class Simulator : private OdeSystem {
 
  private:
   void rhs(double t, const VecX& y, VecX& dy) override;
+  bool hasShiftedSolve() const override { return formulation_->hasShiftedSolve(); }
+  void linearize(double t, const VecX& y) override;
+  void factorShifted(double c) override { formulation_->factorShifted(c); }
+  void solveShifted(const VecX& b, VecX& x) override { formulation_->solveShifted(b, x); }
   double potentialEnergy(const Kinematics& kin) const;
   void checkDivergence();
   void estimateHighestFrequency();
@@ -79,7 +87,9 @@ class Simulator : private OdeSystem {
   SolverSettings settings_;
   std::unique_ptr<Formulation> formulation_;
   std::unique_ptr<Integrator> integrator_;
-  VecX y_, dy_, probe_y_, probe_a_, probe_x_;
+  VecX y_, dy_, probe_y_, probe_a_, probe_x_, lin_dy_;
+  VecX last_rhs_y_;               // state of the formulation's last evaluation (for linearize())
+  double last_rhs_t_ = NAN;
   double omega_max_ = 0.0;
   double t_ = 0.0, e0_ = 0.0, energy_scale_ = 1.0, max_constraint_error_ = 0.0;
   long steps_ = 0;

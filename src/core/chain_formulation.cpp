@@ -8,7 +8,10 @@
 namespace riser_sim {
 
 ChainFormulation::ChainFormulation(const Model& model, double stabilization)
-    : model_(model), k_(model.options().axial_flexibility ? 2 : 1), omega_(stabilization) {
+    : model_(model),
+      k_(model.options().axial_flexibility ? 2 : 1),
+      omega_(stabilization),
+      shifted_(model, model.options().axial_flexibility ? 2 : 1) {
   const int nb = model.bodies();
   kin_.resize(nb);
   bias_.assign(nb, Vec2::Zero());
@@ -17,6 +20,13 @@ ChainFormulation::ChainFormulation(const Model& model, double stabilization)
   M_.assign(nb, Mat4::Zero());
   reactions_.joint.assign(nb + 1, Vec2::Zero());
   for (const auto& term : model.terms()) rigid_only_ = rigid_only_ && !term->hasInertia();
+  lin_kin_.resize(nb);
+  lin_M_.assign(nb, Mat4::Zero());
+  lin_joint_.assign(nb + 1, Vec2::Zero());
+  lin_h_.setZero(model.dofs());
+  lin_r_.setZero(positionSize());
+  lin_x_.setZero(positionSize());
+  lin_S_.resize(nb);
 }
 
 void ChainFormulation::packState(const Kinematics& kin, VecX& y) const {
@@ -110,6 +120,32 @@ double ChainFormulation::kineticEnergy(double t, const VecX& y) {
     T += 0.5 * v.dot(M_[i] * v);
   }
   return T;
+}
+
+void ChainFormulation::linearize(double t) {
+  lin_kin_ = kin_;
+  lin_joint_ = reactions_.joint;
+  rfeMassBlocks(model_, lin_kin_, t, lin_M_, lin_h_);
+  lin_S_.setZero();
+  for (const auto& term : model_.terms()) term->addStiffness(model_, lin_kin_, t, lin_S_);
+  shifted_.setLinearization(lin_kin_, lin_M_, lin_S_, lin_joint_);
+  shifted_c_ = 0.0;
+}
+
+void ChainFormulation::factorShifted(double c) {
+  shifted_.factor(c);
+  shifted_c_ = c;
+}
+
+// (I - cJ) x = b with J = [[0, I], [-W_M^-1 K, -W_M^-1 C]]:  (M + cC + c²K) x_v = M b_v - c K b_q,
+// x_q = b_q + c x_v.
+void ChainFormulation::solveShifted(const VecX& b, VecX& x) {
+  const int p = positionSize();
+  const double c = shifted_c_;
+  shifted_.massMinusStiffness(b.segment(p, p), b.head(p), c, lin_r_);
+  shifted_.solve(lin_r_, lin_x_);
+  x.segment(p, p) = lin_x_;
+  x.head(p) = b.head(p) + c * lin_x_;
 }
 
 }  // namespace riser_sim

@@ -22,10 +22,14 @@ void ImplicitIntegrator::reset(int n) {
   if (p_ <= 0 || 2 * p_ > n)
     throw std::invalid_argument("implicit integrator: position_size must be set (state [q; v; rest])");
   m_ = 2 * p_;
-  Aq_.setZero(p_, p_);
-  Av_.setZero(p_, p_);
-  S_.setZero(p_, p_);
-  lu_ = Eigen::PartialPivLU<MatX>(p_);
+  structured_ = options_.jacobian == "structured";
+  if (!structured_ && options_.jacobian != "dense")
+    throw std::invalid_argument("implicit integrator: jacobian must be 'structured' or 'dense'");
+  const int pd = structured_ ? 0 : p_;  // dense workspaces only when used
+  Aq_.setZero(pd, pd);
+  Av_.setZero(pd, pd);
+  S_.setZero(pd, pd);
+  lu_ = Eigen::PartialPivLU<MatX>(pd);
   for (VecX* v : {&f0_, &fp_, &yp_, &y_end_}) v->setZero(n);
   bu_.setZero(p_);
   u_.setZero(p_);
@@ -36,6 +40,14 @@ void ImplicitIntegrator::reset(int n) {
 }
 
 void ImplicitIntegrator::jacobian(OdeSystem& sys, double t, const VecX& y, const VecX& f0) {
+  if (structured_) {
+    sys.linearize(t, y);
+    ++stats_.jacobians;
+    jac_valid_ = true;
+    jac_t_ = t;
+    c_ = -1.0;
+    return;
+  }
   yp_ = y;
   for (int j = 0; j < m_; ++j) {
     const double e = std::max(kFdRel * std::abs(y[j]), kFdFloor);
@@ -53,7 +65,13 @@ void ImplicitIntegrator::jacobian(OdeSystem& sys, double t, const VecX& y, const
   c_ = -1.0;  // refactor
 }
 
-void ImplicitIntegrator::factor(double c) {
+void ImplicitIntegrator::factor(OdeSystem& sys, double c) {
+  if (structured_) {
+    sys.factorShifted(c);
+    c_ = c;
+    ++stats_.factorizations;
+    return;
+  }
   S_.noalias() = -c * Av_;
   S_.noalias() -= (c * c) * Aq_;
   S_.diagonal().array() += 1.0;
@@ -62,7 +80,11 @@ void ImplicitIntegrator::factor(double c) {
   ++stats_.factorizations;
 }
 
-void ImplicitIntegrator::solve(const VecX& b, VecX& x) {
+void ImplicitIntegrator::solve(OdeSystem& sys, const VecX& b, VecX& x) {
+  if (structured_) {
+    sys.solveShifted(b, x);
+    return;
+  }
   bu_ = b.segment(p_, p_);
   bu_.noalias() += c_ * (Aq_ * b.head(p_));
   u_ = lu_.solve(bu_);
@@ -71,6 +93,8 @@ void ImplicitIntegrator::solve(const VecX& b, VecX& x) {
 }
 
 void ImplicitIntegrator::startValue(OdeSystem& sys, double t, const VecX& y) {
+  if (structured_ && !sys.hasShiftedSolve())
+    throw std::logic_error("implicit integrator: structured solves requested from a system without them");
   if (f0_valid_ && t == t_end_ && y == y_end_) return;
   sys.rhs(t, y, f0_);
   ++stats_.rhs;
@@ -107,7 +131,7 @@ bool ImplicitMidpoint::newton(OdeSystem& sys, double t, const VecX& y0, double h
   for (int it = 0; it < kNewtonMaxIter; ++it) {
     g_.head(m_) = y0.head(m_) + (0.5 * h) * fz_.head(m_) - z_.head(m_);  // -residual
     if (!g_.head(m_).allFinite()) return false;
-    solve(g_, dz_);
+    solve(sys, g_, dz_);
     z_.head(m_) += dz_.head(m_);
     sys.rhs(tm, z_, fz_);
     ++stats_.rhs;
@@ -126,11 +150,11 @@ bool ImplicitMidpoint::single(OdeSystem& sys, double t, VecX& y, double h) {
     jacobian(sys, t, y, f0_);
     fresh = true;
   }
-  if (c_ != 0.5 * h) factor(0.5 * h);
+  if (c_ != 0.5 * h) factor(sys, 0.5 * h);
   bool ok = newton(sys, t, y, h);
   if (!ok && !fresh) {  // stale Jacobian: refresh once and retry
     jacobian(sys, t, y, f0_);
-    factor(0.5 * h);
+    factor(sys, 0.5 * h);
     ok = newton(sys, t, y, h);
   }
   if (!ok) {
@@ -185,14 +209,14 @@ void Rosenbrock2::step(OdeSystem& sys, double t, VecX& y, double h) {
   static const double kGamma = 1.0 + 1.0 / std::sqrt(2.0);
   startValue(sys, t, y);
   if (jacobianStale(t)) jacobian(sys, t, y, f0_);
-  if (c_ != kGamma * h) factor(kGamma * h);
-  solve(f0_, k1_);
+  if (c_ != kGamma * h) factor(sys, kGamma * h);
+  solve(sys, f0_, k1_);
   k1_.tail(n_ - m_) = f0_.tail(n_ - m_);  // explicit entries (W): plain stages
   yp_ = y + h * k1_;
   sys.rhs(t + h, yp_, f2_);
   ++stats_.rhs;
   f2_ -= 2.0 * k1_;
-  solve(f2_, k2_);
+  solve(sys, f2_, k2_);
   k2_.tail(n_ - m_) = f2_.tail(n_ - m_);
   yp_ = y + (1.5 * h) * k1_ + (0.5 * h) * k2_;
   if (!yp_.allFinite()) {

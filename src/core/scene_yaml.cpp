@@ -376,7 +376,7 @@ void parseInternalFluid(const Section& root, Scene& s) {
 void parseSolver(const Section& root, Scene& s) {
   const Section solver =
       root.section("solver", {"dt", "integrator", "formulation", "stabilization", "max_constraint_error", "tolerance",
-                              "jacobian_interval"});
+                              "jacobian_interval", "jacobian"});
   const SolverSettings defaults;
   s.solver = defaults;
   s.solver.dt = solver.number("dt", defaults.dt);
@@ -399,6 +399,10 @@ void parseSolver(const Section& root, Scene& s) {
   requirePositive(solver.key("tolerance"), s.solver.tolerance);
   s.solver.jacobian_interval = solver.number("jacobian_interval", defaults.jacobian_interval);
   requireNonNegative(solver.key("jacobian_interval"), s.solver.jacobian_interval);
+  s.solver.jacobian = solver.choice("jacobian", defaults.jacobian, {"auto", "structured", "dense"});
+  if (s.solver.jacobian == "structured" && s.solver.formulation == "absolute")
+    throw SceneError(solver.key("jacobian"),
+                     "'structured' needs solver.formulation independent or recursive (absolute has none)");
 }
 
 void parseRun(const Section& root, Scene& s) {

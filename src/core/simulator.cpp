@@ -31,6 +31,16 @@ Simulator::Simulator(std::shared_ptr<const Model> model, std::unique_ptr<TopMoti
   io.tolerance = settings_.tolerance;
   io.position_size = formulation_->positionSize();
   io.jacobian_interval = settings_.jacobian_interval;
+  if (settings_.jacobian == "auto")
+    io.jacobian = formulation_->hasShiftedSolve() ? "structured" : "dense";
+  else if (settings_.jacobian == "structured" && !formulation_->hasShiftedSolve())
+    throw std::invalid_argument("solver.jacobian: 'structured' needs solver.formulation independent or recursive (" +
+                                formulation_->name() + " has no structured solve); use 'dense' or 'auto'");
+  else if (settings_.jacobian != "structured" && settings_.jacobian != "dense")
+    throw std::invalid_argument("solver.jacobian: unknown value '" + settings_.jacobian +
+                                "' (accepted: auto, structured, dense)");
+  else
+    io.jacobian = settings_.jacobian;
   if (!(io.tolerance > 0.0)) throw std::invalid_argument("solver.tolerance: must be > 0");
   if (!(io.jacobian_interval >= 0.0)) throw std::invalid_argument("solver.jacobian_interval: must be >= 0");
   integrator_ = makeIntegrator(settings_.integrator, io);
@@ -40,6 +50,8 @@ Simulator::Simulator(std::shared_ptr<const Model> model, std::unique_ptr<TopMoti
   probe_y_.setZero(n);
   probe_a_.setZero(n);
   probe_x_.setZero(formulation_->positionSize());
+  lin_dy_.setZero(n);
+  last_rhs_y_.setZero(n);
   integrator_->reset(n);
   kin_.resize(model_->bodies());
   const int nb = model_->bodies();
@@ -103,7 +115,14 @@ double Simulator::stableStepEstimate() const {
   return omega_max_ > 0.0 ? bound / omega_max_ : std::numeric_limits<double>::infinity();
 }
 
+void Simulator::linearize(double t, const VecX& y) {
+  if (!(t == last_rhs_t_ && y == last_rhs_y_)) rhs(t, y, lin_dy_);
+  formulation_->linearize(t);
+}
+
 void Simulator::rhs(double t, const VecX& y, VecX& dy) {
+  last_rhs_t_ = t;
+  last_rhs_y_ = y;
   const PointMotion top = top_->at(t);
   formulation_->derivative(t, y, top, dy);
   // dW/dt: power of the top motion (force on rfe 0 at A_0 is -λ_0) and of the non-conservative terms.
@@ -174,6 +193,7 @@ double Simulator::potentialEnergy(const Kinematics& kin) const {
 }
 
 double Simulator::totalEnergy() {
+  last_rhs_t_ = NAN;  // kineticEnergy() moves the formulation's kinematics
   formulation_->kinematics(y_, kin_);
   return formulation_->kineticEnergy(t_, y_) + potentialEnergy(kin_);
 }
@@ -183,6 +203,7 @@ double Simulator::energyDrift() { return (totalEnergy() - e0_ - work()) / std::m
 const LineOutputs& Simulator::outputs() {
   const int nb = model_->bodies();
   formulation_->derivative(t_, y_, top_->at(t_), dy_);
+  last_rhs_t_ = NAN;
   formulation_->kinematics(y_, kin_);
   const Reactions& re = formulation_->reactions();
   out_.t = t_;

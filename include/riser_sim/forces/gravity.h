@@ -9,6 +9,7 @@ class Gravity : public ForceTerm {
  public:
   std::string name() const override { return "gravity"; }
   void addForces(const Model& model, const Kinematics& kin, double t, VecX& Q) const override;
+  bool addStiffness(const Model& model, const Kinematics& kin, double t, StiffnessBlocks& S) const override;
   double potentialEnergy(const Model& model, const Kinematics& kin) const override;
 };
 

@@ -22,3 +22,15 @@ double AxialSpring::power(const Model& model, const Kinematics& kin, double) con
 }
 
 }  // namespace riser_sim
+
+namespace riser_sim {
+
+bool AxialSpring::addStiffness(const Model& model, const Kinematics&, double, StiffnessBlocks& S) const {
+  for (int i = 0; i < model.bodies(); ++i) {
+    S.K_diag[i](kDelta, kDelta) += model.rfe(i).axial_stiffness;
+    S.C_diag[i](kDelta, kDelta) += model.rfe(i).axial_damping;
+  }
+  return true;
+}
+
+}  // namespace riser_sim

@@ -30,3 +30,21 @@ double BendingSpring::power(const Model& model, const Kinematics& kin, double) c
 }
 
 }  // namespace riser_sim
+
+namespace riser_sim {
+
+// ½ k (φ_i - φ_{i-1})²: +k on both diagonals, -k between the neighbours (same for the damping).
+bool BendingSpring::addStiffness(const Model& model, const Kinematics&, double, StiffnessBlocks& S) const {
+  const double k = model.bendingStiffness(), c = model.bendingDamping();
+  for (int i = 1; i < model.bodies(); ++i) {
+    S.K_diag[i](kPhi, kPhi) += k;
+    S.K_diag[i - 1](kPhi, kPhi) += k;
+    S.K_sub[i](kPhi, kPhi) -= k;
+    S.C_diag[i](kPhi, kPhi) += c;
+    S.C_diag[i - 1](kPhi, kPhi) += c;
+    S.C_sub[i](kPhi, kPhi) -= c;
+  }
+  return true;
+}
+
+}  // namespace riser_sim

@@ -34,3 +34,21 @@ double Buoyancy::potentialEnergy(const Model& model, const Kinematics& kin) cons
 }
 
 }  // namespace riser_sim
+
+namespace riser_sim {
+
+// The geometric part of the lift on each wet part (the change of the wet length at the surface is left
+// to the explicit side).
+bool Buoyancy::addStiffness(const Model& model, const Kinematics& kin, double, StiffnessBlocks& S) const {
+  const double f = water_.density * model.line().externalArea() * model.gravity();
+  const Mat2 zero = Mat2::Zero();
+  for (int i = 0; i < model.bodies(); ++i)
+    for (int p = 0; p < 2; ++p) {
+      const WetPart w = wetPart(model, kin[i], i, p, water_.surface);
+      if (w.length > 0.0)
+        addPointStiffness(kin[i], w.s0, w.kappa, Vec2(0.0, f * w.length), zero, zero, S.K_diag[i], S.C_diag[i]);
+    }
+  return true;
+}
+
+}  // namespace riser_sim

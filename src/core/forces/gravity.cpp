@@ -26,3 +26,21 @@ double Gravity::potentialEnergy(const Model& model, const Kinematics& kin) const
 }
 
 }  // namespace riser_sim
+
+namespace riser_sim {
+
+// Only the geometric part: the weights are constant, their lever arms turn with φ and stretch with Δ.
+bool Gravity::addStiffness(const Model& model, const Kinematics& kin, double, StiffnessBlocks& S) const {
+  const double g = model.gravity();
+  for (int i = 0; i < model.bodies(); ++i) {
+    const Rfe& r = model.rfe(i);
+    const BodyKinematics& b = kin[i];
+    Mat4& K = S.K_diag[i];
+    K(kDelta, kPhi) += r.mass_k * g * b.c;
+    K(kPhi, kDelta) += r.mass_k * g * b.c;
+    K(kPhi, kPhi) -= r.firstMoment(b.delta) * g * b.s;
+  }
+  return true;
+}
+
+}  // namespace riser_sim

@@ -85,3 +85,24 @@ int Seabed::contacts(const Model& model, const Kinematics& kin) const {
 }
 
 }  // namespace riser_sim
+
+namespace riser_sim {
+
+// Contact springs and dampers on each point below the level, as in force(); a clamped normal force
+// (the damper would pull) contributes nothing.
+bool Seabed::addStiffness(const Model& model, const Kinematics& kin, double, StiffnessBlocks& S) const {
+  forEachContact(model, kin, [&](int j, int body, double s0, const Vec2& p, const Vec2& v) {
+    const Vec2 F = force(j, p, v, true);
+    const bool anchored = j < static_cast<int>(anchor_.size()) && std::isfinite(anchor_[j]);
+    const bool pressing = F.y() > 0.0;
+    Mat2 Kp = Mat2::Zero(), Cp = Mat2::Zero();
+    Kp(0, 0) = anchored ? spec_.stiffness_tangential : 0.0;
+    Cp(0, 0) = spec_.damping_tangential;
+    Kp(1, 1) = pressing ? spec_.stiffness_normal : 0.0;
+    Cp(1, 1) = pressing ? spec_.damping_normal : 0.0;
+    addPointStiffness(kin[body], s0, j < model.bodies() ? 0.0 : 1.0, F, Kp, Cp, S.K_diag[body], S.C_diag[body]);
+  });
+  return true;
+}
+
+}  // namespace riser_sim
