@@ -6,8 +6,8 @@ set_target_properties(riser_sim_bench_formulations PROPERTIES
   RUNTIME_OUTPUT_DIRECTORY ${CATKIN_DEVEL_PREFIX}/${CATKIN_PACKAGE_BIN_DESTINATION})
 
 # Speed against accuracy sweep (issue 5): bench/extra_tradeoff.sh runs it.
-add_executable(riser_sim_bench_tradeoff bench/tradeoff.cpp)
-target_link_libraries(riser_sim_bench_tradeoff riser_sim_core)
+add_executable(riser_sim_bench_tradeoff bench/tradeoff.cpp bench/tradeoff_cases.cpp bench/tradeoff_run.cpp)
+target_link_libraries(riser_sim_bench_tradeoff riser_sim_core yaml-cpp)
 target_compile_options(riser_sim_bench_tradeoff PRIVATE -O3)
 set_target_properties(riser_sim_bench_tradeoff PROPERTIES
   RUNTIME_OUTPUT_DIRECTORY ${CATKIN_DEVEL_PREFIX}/${CATKIN_PACKAGE_BIN_DESTINATION})

@@ -1,0 +1,35 @@
+// One timed run of the speed/accuracy sweep: a case at (formulation, integrator, n, h or tolerance),
+// stepped to the case's duration with the top tension sampled every 10 ms. Timing covers the stepping
+// only (not the statics nor the sampling); the thread's CPU time is recorded beside the wall time.
+#pragma once
+#include <string>
+
+#include "tradeoff_cases.h"
+
+namespace tradeoff {
+
+struct Config {
+  const Case* c = nullptr;
+  std::string formulation, integrator;
+  int n = 0;
+  double h = 0.0;    // solver.dt (dopri5: output step) [s]; <= 0: -h x rk4's estimated limit
+  double tol = 0.0;  // dopri5 only
+};
+
+struct Result {
+  std::string status;  // ok | diverged | skipped
+  std::string reason;
+  double h = 0.0;      // the step actually used [s]
+  double wall = 0.0, cpu = 0.0;  // medians [s]
+  int runs = 0;
+  long steps = 0;
+  Measures m;
+  double drift = 0.0, limit = 0.0;  // energy-balance error; rk4 stability estimate [s]
+  riser_sim::Integrator::Stats stats;
+};
+
+// Runs c; repeats 3 times (median) when a run takes less than repeat_below seconds. A run predicted
+// (from its first ~0.3 s of stepping) to take more than max_run seconds is skipped.
+Result run(const Config& c, double max_run, double repeat_below = 2.0);
+
+}  // namespace tradeoff
