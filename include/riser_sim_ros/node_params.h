@@ -40,6 +40,10 @@ struct NodeParams {
   Eigen::Vector3d hangoff_offset = Eigen::Vector3d::Zero();  // hang-off point in the vessel frame [m]
   double pose_timeout = 1.0;       // no valid pose for this long: warn and hold [s]
   double max_out_of_plane = 1.0;   // warn when the hang-off's world y exceeds this [m]
+  double max_position = 1e7;       // poses with a coordinate beyond this are ignored [m]
+  double max_pose_age = 1.0;       // poses stamped more than this before ROS time are ignored [s]
+  double max_pose_lead = 0.5;      // poses stamped more than this after ROS time are ignored [s]
+  double clock_timeout = 1.0;      // ROS time still for this long (wall time): paused, said on /diagnostics [s]
   double tf_poll_rate = 50.0;      // tf input: lookup rate [Hz]
   PublishRates rates;
   double loop_rate = 500.0;        // integration loop wake-ups per wall second [Hz]

@@ -5,6 +5,7 @@
 #pragma once
 #include <array>
 #include <atomic>
+#include <chrono>
 #include <mutex>
 #include <string>
 
@@ -48,10 +49,32 @@ class SampleBuffer {
 };
 
 // Checks one pose: frame_id (leading '/' ignored) equals expected_frame, stamp non-zero, all values
-// finite, quaternion of norm within 1 % of 1 (normalised then). Fills `pose`; returns an empty string
-// when valid, else the reason.
+// finite, |position| components at most max_position [m], quaternion of norm within 1 % of 1
+// (normalised then). Fills `pose`; returns an empty string when valid, else the reason naming the field.
 std::string checkPose(const std_msgs::Header& header, const geometry_msgs::Pose& msg,
-                      const std::string& expected_frame, Eigen::Isometry3d& pose);
+                      const std::string& expected_frame, Eigen::Isometry3d& pose, double max_position = 1e7);
+
+// Checks a stamp against ROS time `now` and the last accepted stamp `last` (zero: none): not more than
+// max_age [s] old, not more than max_lead [s] ahead, newer than `last`. Empty when valid, else the reason.
+std::string checkStamp(const ros::Time& stamp, const ros::Time& now, const ros::Time& last, double max_age,
+                       double max_lead);
+
+// Rate limit of one warning: at most one per `period` seconds of wall time (steady clock, so a stalled
+// or jumping ROS clock does not change it); the calls in between are counted.
+class WarnThrottle {
+ public:
+  explicit WarnThrottle(double period) : period_(period) {}
+  // True when a warning may go out now; `suppressed` is then the number of calls held back since the last.
+  bool allow(long& suppressed) { return allow(std::chrono::steady_clock::now(), suppressed); }
+  bool allow(std::chrono::steady_clock::time_point now, long& suppressed);
+
+ private:
+  double period_;
+  std::mutex mutex_;
+  bool started_ = false;
+  std::chrono::steady_clock::time_point last_;
+  long suppressed_ = 0;
+};
 
 // Paper coordinates of a world point: paper x = world x, paper y = world z; world y is dropped
 // (orthogonal projection onto the riser's x-z plane).
@@ -85,6 +108,7 @@ class VesselInput {
   ros::Time last_stamp_;
   std::string last_rejection_;
   std::atomic<long> accepted_{0}, rejected_{0};
+  WarnThrottle reject_warn_{2.0};
 };
 
 }  // namespace riser_sim_ros

@@ -117,6 +117,14 @@ NodeParams loadNodeParams(const ros::NodeHandle& pnh, const std::string& node_na
   positive("pose_timeout", p.pose_timeout);
   p.max_out_of_plane = r.number("max_out_of_plane", p.max_out_of_plane);
   nonNegative("max_out_of_plane", p.max_out_of_plane);
+  p.max_position = r.number("max_position", p.max_position);
+  positive("max_position", p.max_position);
+  p.max_pose_age = r.number("max_pose_age", p.max_pose_age);
+  positive("max_pose_age", p.max_pose_age);
+  p.max_pose_lead = r.number("max_pose_lead", p.max_pose_lead);
+  nonNegative("max_pose_lead", p.max_pose_lead);
+  p.clock_timeout = r.number("clock_timeout", p.clock_timeout);
+  positive("clock_timeout", p.clock_timeout);
   p.tf_poll_rate = r.number("tf_poll_rate", p.tf_poll_rate);
   positive("tf_poll_rate", p.tf_poll_rate);
 

@@ -53,13 +53,16 @@ std::string fmt(double v) {
 }  // namespace
 
 std::string checkPose(const std_msgs::Header& header, const geometry_msgs::Pose& msg,
-                      const std::string& expected_frame, Eigen::Isometry3d& pose) {
+                      const std::string& expected_frame, Eigen::Isometry3d& pose, double max_position) {
   const std::string frame = stripSlash(header.frame_id);
   if (frame != expected_frame)
     return "header.frame_id is '" + header.frame_id + "', expected '" + expected_frame + "'";
   if (header.stamp.isZero()) return "header.stamp is zero";
   const Eigen::Vector3d p(msg.position.x, msg.position.y, msg.position.z);
   if (!p.allFinite()) return "position is not finite (NaN/Inf)";
+  if (p.lpNorm<Eigen::Infinity>() > max_position)
+    return "position (" + fmt(p.x()) + ", " + fmt(p.y()) + ", " + fmt(p.z()) + ") m is beyond ~max_position " +
+           fmt(max_position) + " m";
   const Eigen::Quaterniond q(msg.orientation.w, msg.orientation.x, msg.orientation.y, msg.orientation.z);
   if (!q.coeffs().allFinite()) return "orientation is not finite (NaN/Inf)";
   const double norm = q.norm();
@@ -67,6 +70,35 @@ std::string checkPose(const std_msgs::Header& header, const geometry_msgs::Pose&
   if (std::abs(norm - 1.0) > 0.01) return "orientation is not a unit quaternion (norm " + fmt(norm) + ")";
   pose = Eigen::Translation3d(p) * q.normalized();
   return "";
+}
+
+std::string checkStamp(const ros::Time& stamp, const ros::Time& now, const ros::Time& last, double max_age,
+                       double max_lead) {
+  const double age = (now - stamp).toSec();
+  if (age > max_age)
+    return "header.stamp " + fmt(stamp.toSec()) + " is " + fmt(age) + " s older than ROS time (~max_pose_age " +
+           fmt(max_age) + " s; clock skew between machines?)";
+  if (-age > max_lead)
+    return "header.stamp " + fmt(stamp.toSec()) + " is " + fmt(-age) + " s ahead of ROS time (~max_pose_lead " +
+           fmt(max_lead) + " s; clock skew between machines?)";
+  if (!last.isZero() && stamp <= last)
+    return stamp == last ? "header.stamp " + fmt(stamp.toSec()) + " repeats the last one"
+                         : "header.stamp " + fmt(stamp.toSec()) + " is out of order, " + fmt((last - stamp).toSec()) +
+                               " s older than the last accepted";
+  return "";
+}
+
+bool WarnThrottle::allow(std::chrono::steady_clock::time_point now, long& suppressed) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (started_ && std::chrono::duration<double>(now - last_).count() < period_) {
+    ++suppressed_;
+    return false;
+  }
+  started_ = true;
+  last_ = now;
+  suppressed = suppressed_;
+  suppressed_ = 0;
+  return true;
 }
 
 VesselInput::VesselInput(ros::NodeHandle& nh, const NodeParams& params, tf2_ros::Buffer& tf, SampleBuffer& out)
@@ -114,13 +146,20 @@ void VesselInput::reject(const std::string& why) {
     std::lock_guard<std::mutex> lock(mutex_);
     last_rejection_ = why;
   }
-  ROS_WARN_THROTTLE(2.0, "riser_sim: vessel pose from %s ignored: %s", source_.c_str(), why.c_str());
+  long suppressed = 0;
+  if (reject_warn_.allow(suppressed)) {
+    if (suppressed > 0)
+      ROS_WARN("riser_sim: vessel pose from %s ignored: %s (and %ld more ignored since the last warning; count "
+               "and last reason on /diagnostics)", source_.c_str(), why.c_str(), suppressed);
+    else
+      ROS_WARN("riser_sim: vessel pose from %s ignored: %s", source_.c_str(), why.c_str());
+  }
 }
 
 void VesselInput::handle(const std_msgs::Header& header, const geometry_msgs::Pose& msg) {
   Eigen::Isometry3d pose;
   std::string why = checkPose(header, msg, params_.vessel_input == "tf" ? params_.fixed_frame : params_.expected_frame,
-                              pose);
+                              pose, params_.max_position);
   if (!why.empty()) return reject(why);
   if (params_.vessel_input != "tf" && params_.expected_frame != params_.fixed_frame) {
     // Poses given in another frame: bring them into fixed_frame with the latest transform.
@@ -139,20 +178,13 @@ void VesselInput::handle(const std_msgs::Header& header, const geometry_msgs::Po
   s.stamp = header.stamp;
   s.received = ros::Time::now();
   s.hangoff = pose * params_.hangoff_offset;
+  if (!s.hangoff.allFinite()) return reject("hang-off point is not finite (pose * hangoff_offset)");
   {
     std::lock_guard<std::mutex> lock(mutex_);
-    if (!last_stamp_.isZero() && header.stamp <= last_stamp_) {
-      const bool dup = header.stamp == last_stamp_;
-      const std::string reason = dup ? "duplicate stamp " + fmt(header.stamp.toSec())
-                                     : "out-of-order stamp " + fmt(header.stamp.toSec()) + " s, " +
-                                           fmt((last_stamp_ - header.stamp).toSec()) + " s older than the last";
-      last_rejection_ = reason;
-      ++rejected_;
-      ROS_WARN_THROTTLE(2.0, "riser_sim: vessel pose from %s ignored: %s", source_.c_str(), reason.c_str());
-      return;
-    }
-    last_stamp_ = header.stamp;
+    why = checkStamp(header.stamp, s.received, last_stamp_, params_.max_pose_age, params_.max_pose_lead);
+    if (why.empty()) last_stamp_ = header.stamp;
   }
+  if (!why.empty()) return reject(why);
   if (std::abs(s.hangoff.y()) > params_.max_out_of_plane)
     ROS_WARN_THROTTLE(5.0,
                       "riser_sim: hang-off point is %.2f m out of the riser's x-z plane (world y; ~max_out_of_plane "

@@ -97,6 +97,39 @@ TEST(CheckPose, AcceptsValidAndNamesEachProblem) {
   EXPECT_NE(checkPose(header("world"), q, "world", pose).find("unit quaternion"), std::string::npos);
   q.orientation.w = INFINITY;
   EXPECT_NE(checkPose(header("world"), q, "world", pose).find("orientation is not finite"), std::string::npos);
+  q = unitPose();
+  q.position.z = 1e30;  // finite, absurd: would drive the top at 1e30 m
+  EXPECT_NE(checkPose(header("world"), q, "world", pose, 1e7).find("beyond ~max_position"), std::string::npos);
+  q.position.z = -9.9e6;  // a UTM northing is fine
+  EXPECT_EQ(checkPose(header("world"), q, "world", pose, 1e7), "");
+}
+
+TEST(CheckStamp, AgeLeadAndOrder) {
+  const ros::Time now(1000.0), none;
+  EXPECT_EQ(checkStamp(ros::Time(999.5), now, none, 1.0, 0.5), "");
+  EXPECT_EQ(checkStamp(ros::Time(1000.4), now, none, 1.0, 0.5), "");
+  EXPECT_NE(checkStamp(ros::Time(998.0), now, none, 1.0, 0.5).find("2 s older than ROS time (~max_pose_age 1 s"),
+            std::string::npos);
+  EXPECT_NE(checkStamp(ros::Time(2000.0), now, none, 1.0, 0.5).find("1000 s ahead of ROS time (~max_pose_lead"),
+            std::string::npos);
+  EXPECT_NE(checkStamp(ros::Time(999.8), now, ros::Time(999.9), 1.0, 0.5).find("out of order"), std::string::npos);
+  EXPECT_NE(checkStamp(ros::Time(999.9), now, ros::Time(999.9), 1.0, 0.5).find("repeats"), std::string::npos);
+  EXPECT_EQ(checkStamp(ros::Time(999.95), now, ros::Time(999.9), 1.0, 0.5), "");
+}
+
+TEST(WarnThrottle, OnePerPeriodAndCountsTheRest) {
+  WarnThrottle t(2.0);
+  const auto t0 = std::chrono::steady_clock::now();
+  auto at = [&](double s) { return t0 + std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(s)); };
+  long suppressed = -1;
+  ASSERT_TRUE(t.allow(at(0.0), suppressed));
+  EXPECT_EQ(suppressed, 0);
+  for (int i = 1; i <= 100; ++i) EXPECT_FALSE(t.allow(at(1.99 * i / 100), suppressed));
+  ASSERT_TRUE(t.allow(at(2.0), suppressed));
+  EXPECT_EQ(suppressed, 100);
+  EXPECT_FALSE(t.allow(at(3.9), suppressed));
+  ASSERT_TRUE(t.allow(at(10.0), suppressed));
+  EXPECT_EQ(suppressed, 1);
 }
 
 TEST(CheckPose, HangOffIsPoseTimesOffsetProjectedOntoXZ) {
