@@ -6,6 +6,8 @@ add_library(riser_sim_ros
   src/node/line_messages.cpp
   src/node/line_markers.cpp
   src/node/timing_stats.cpp
+  src/node/modes_service.cpp
+  src/node/master_watch.cpp
   src/node/riser_sim_node.cpp
 )
 target_include_directories(riser_sim_ros PUBLIC include ${catkin_INCLUDE_DIRS})

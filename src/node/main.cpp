@@ -1,6 +1,7 @@
 // riser_sim_node: see docs/ros_interface.md. Exit code 2: bad parameter or scene (the message names it).
 #include <ros/ros.h>
 
+#include "riser_sim_ros/master_watch.h"
 #include "riser_sim_ros/riser_sim_node.h"
 
 int main(int argc, char** argv) {
@@ -8,6 +9,7 @@ int main(int argc, char** argv) {
   ros::NodeHandle nh, pnh("~");
   try {
     riser_sim_ros::RiserSimNode node(nh, pnh);
+    riser_sim_ros::MasterWatch watch;  // registers again with a restarted master (docs/ros_interface.md)
     node.spin();
   } catch (const riser_sim_ros::ParamError& e) {
     ROS_FATAL("riser_sim: %s", e.what());
