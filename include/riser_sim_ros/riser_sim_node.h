@@ -4,7 +4,8 @@
 // Threads: ROS callbacks (vessel input, ~reset, tf listener) run on an AsyncSpinner and only copy
 // samples into a SampleBuffer; the integration loop runs on the thread that calls spin(): it drains
 // the buffer, steps the simulator by the number of dt that elapsed in ROS time (capped), and publishes
-// whatever is due. Nothing in the stepping loop allocates; messages are sized once.
+// whatever is due. Nothing in the stepping loop allocates; messages are sized once. ~modes has its own
+// callback queue and thread: it works on a copy of the static state (never the running simulator).
 #pragma once
 #include <array>
 #include <chrono>
@@ -14,6 +15,7 @@
 #include <string>
 
 #include <diagnostic_msgs/DiagnosticArray.h>
+#include <ros/callback_queue.h>
 #include <ros/ros.h>
 #include <std_srvs/Trigger.h>
 #include <tf2_ros/buffer.h>
@@ -21,8 +23,10 @@
 #include <tf2_ros/transform_listener.h>
 
 #include "riser_sim/external_motion.h"
+#include "riser_sim/kinematics.h"
 #include "riser_sim/scene.h"
 #include "riser_sim/simulator.h"
+#include "riser_sim/Modes.h"
 #include "riser_sim_ros/line_markers.h"
 #include "riser_sim_ros/line_messages.h"
 #include "riser_sim_ros/node_params.h"
@@ -39,6 +43,7 @@ class RiserSimNode {
  public:
   // Throws ParamError for a bad parameter or scene.
   RiserSimNode(ros::NodeHandle nh, ros::NodeHandle pnh);
+  ~RiserSimNode();
   // Runs the integration loop until ROS shuts down.
   void spin();
 
@@ -51,8 +56,18 @@ class RiserSimNode {
     void restart(const ros::Time& now) { next = now; }
   };
   using Clock = std::chrono::steady_clock;
+  // What ~modes analyses: the scene with the top fixed at the hang-off, and its static state.
+  struct StaticState {
+    riser_sim::Scene scene;
+    riser_sim::Kinematics kin;
+    riser_sim::Vec2 end_force = riser_sim::Vec2::Zero();
+    ros::Time stamp;
+  };
 
   void cycle();
+  // Watches ROS time: false when it has not advanced (nothing to step). Resets the simulation when it
+  // went backwards; marks the clock stalled after ~clock_timeout of wall time without progress.
+  bool clockAdvanced(const ros::Time& now, Clock::time_point wall);
   bool start(const VesselSample& s, const ros::Time& now, std::string& message);
   void integrate(const ros::Time& now);
   void publish(const ros::Time& now);
@@ -60,6 +75,7 @@ class RiserSimNode {
   void serveReset(const ros::Time& now);
   void fail(const std::string& why);
   bool onReset(std_srvs::Trigger::Request& req, std_srvs::Trigger::Response& res);
+  bool onModes(riser_sim::Modes::Request& req, riser_sim::Modes::Response& res);
   double simTime(const ros::Time& t) const { return (t - origin_).toSec() - dropped_; }
   void resetWindow(const ros::Time& now);
 
@@ -79,10 +95,14 @@ class RiserSimNode {
   std::unique_ptr<LineMessages> msgs_;
   std::unique_ptr<LineMarkers> markers_;
   ros::Publisher tension_pub_, state_pub_, markers_pub_, wrench_pub_, diag_pub_;
-  ros::ServiceServer reset_srv_;
+  ros::ServiceServer reset_srv_, modes_srv_;
   diagnostic_msgs::DiagnosticArray diag_;
 
   Mode mode_ = Mode::kWaiting;
+  bool stalled_ = false;           // ROS time has not advanced for ~clock_timeout (wall)
+  Clock::time_point last_advance_, next_stalled_diag_;
+  long clock_resets_ = 0;          // times ROS time went backwards
+  std::string clock_note_;         // the last backwards jump, for /diagnostics
   std::string reason_;             // why diverged / statics failed
   ros::Time origin_;               // sim time t = (ROS time - origin_) - dropped_
   double dropped_ = 0.0;           // backlog dropped when the integration fell behind [s]
@@ -105,6 +125,13 @@ class RiserSimNode {
   std::condition_variable reset_cv_;
   bool reset_requested_ = false, reset_done_ = false, reset_ok_ = false;
   std::string reset_message_;
+
+  // Static state for ~modes (set by start(), read by the ~modes thread).
+  std::mutex static_mutex_;
+  std::shared_ptr<const StaticState> static_state_;
+  std::string static_failure_;     // why there is no static state yet
+  ros::CallbackQueue modes_queue_;
+  std::unique_ptr<ros::AsyncSpinner> modes_spinner_;  // last: stopped first on destruction
 };
 
 }  // namespace riser_sim_ros

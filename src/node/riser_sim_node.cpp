@@ -5,8 +5,10 @@
 #include <thread>
 
 #include "riser_sim/integrator.h"
+#include "riser_sim/modal.h"
 #include "riser_sim/scene_yaml.h"
 #include "riser_sim/statics.h"
+#include "riser_sim_ros/modes_service.h"
 #include "riser_sim_ros/xmlrpc_yaml.h"
 
 namespace riser_sim_ros {
@@ -24,6 +26,8 @@ const char* modeName(int m) {
   static const char* names[] = {"waiting for vessel pose", "running", "diverged", "statics failed"};
   return names[m];
 }
+
+double seconds(std::chrono::steady_clock::duration d) { return std::chrono::duration<double>(d).count(); }
 
 }  // namespace
 
@@ -84,6 +88,15 @@ RiserSimNode::RiserSimNode(ros::NodeHandle nh, ros::NodeHandle pnh)
   wrench_pub_ = pnh_.advertise<geometry_msgs::WrenchStamped>("top_wrench", 5);
   diag_pub_ = nh_.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 5);
   reset_srv_ = pnh_.advertiseService("reset", &RiserSimNode::onReset, this);
+  {
+    // ~modes on its own queue and thread: an eigen-solve never holds up the vessel input or ~reset.
+    ros::NodeHandle modes_nh(pnh_);
+    modes_nh.setCallbackQueue(&modes_queue_);
+    modes_srv_ = modes_nh.advertiseService("modes", &RiserSimNode::onModes, this);
+    modes_spinner_ = std::make_unique<ros::AsyncSpinner>(1, &modes_queue_);
+    modes_spinner_->start();
+  }
+  last_advance_ = Clock::now();
 
   const PublishRates& r = params_.rates;
   auto period = [](double hz) { return hz > 0.0 ? 1.0 / hz : 0.0; };
@@ -108,6 +121,11 @@ RiserSimNode::RiserSimNode(ros::NodeHandle nh, ros::NodeHandle pnh)
            params_.tf_prefix.c_str(), params_.fixed_frame.c_str());
 }
 
+RiserSimNode::~RiserSimNode() {
+  modes_spinner_->stop();
+  modes_srv_.shutdown();
+}
+
 void RiserSimNode::spin() {
   ros::AsyncSpinner spinner(2);
   spinner.start();
@@ -130,23 +148,60 @@ void RiserSimNode::spin() {
   reset_cv_.notify_all();
 }
 
-void RiserSimNode::cycle() {
-  const Clock::time_point w0 = Clock::now();
-  const ros::Time now = ros::Time::now();
-  if (now.isZero()) return;  // /use_sim_time without /clock yet
-  if (!last_now_.isZero() && now < last_now_) {
-    ROS_WARN("riser_sim: ROS time moved backwards by %.3f s (bag loop / sim restart): restarting at the next "
-             "vessel pose", (last_now_ - now).toSec());
+bool RiserSimNode::clockAdvanced(const ros::Time& now, Clock::time_point wall) {
+  if (!now.isZero() && !last_now_.isZero() && now < last_now_) {
+    // A looping bag or a restarted simulator: the simulated past is gone. Back to the start state.
+    char buf[200];
+    std::snprintf(buf, sizeof(buf), "ROS time jumped back by %.3f s (to %.3f s; bag loop or simulator restart?)",
+                  (last_now_ - now).toSec(), now.toSec());
+    clock_note_ = buf;
+    ++clock_resets_;
+    ROS_WARN("riser_sim: %s: simulation reset, restarting from the statics at the next vessel pose", buf);
     samples_.clear();
     input_->restart();
     mode_ = Mode::kWaiting;
+    last_received_ = last_start_attempt_ = ros::Time();
     diag_s_.restart(now);
   }
-  last_now_ = now;
+  const bool advanced = !now.isZero() && now != last_now_;
+  if (advanced) {
+    if (stalled_) {
+      ROS_INFO("riser_sim: ROS time advances again after %.1f s (wall): simulation resumed",
+               seconds(wall - last_advance_));
+      stalled_ = false;
+      diag_s_.restart(now);
+    }
+    last_advance_ = wall;
+    last_now_ = now;
+  } else if (!stalled_ && seconds(wall - last_advance_) > params_.clock_timeout) {
+    stalled_ = true;
+    next_stalled_diag_ = wall;
+    ROS_WARN("riser_sim: ROS time has not advanced for %.1f s of wall time (%s): simulation paused",
+             seconds(wall - last_advance_), now.isZero() ? "/use_sim_time set, no /clock yet" : "/clock stalled");
+  }
+  return advanced;
+}
+
+void RiserSimNode::cycle() {
+  const Clock::time_point w0 = Clock::now();
+  const ros::Time now = ros::Time::now();
+  if (!clockAdvanced(now, w0)) {
+    // Paused: no stepping, no data; ~reset is still answered, diagnostics go out on wall time.
+    serveReset(now);
+    if (stalled_ && diag_s_.period > 0.0 && w0 >= next_stalled_diag_) {
+      publishDiagnostics(now);
+      next_stalled_diag_ = w0 + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(diag_s_.period));
+    }
+    return;
+  }
   serveReset(now);
 
   const int n = samples_.drain(drained_);
-  if (n > 0) last_received_ = drained_[n - 1].received;
+  if (n > 0) {
+    if (mode_ == Mode::kRunning && (now - last_received_).toSec() > params_.pose_timeout)
+      ROS_INFO("riser_sim: valid vessel poses again after %.1f s without: tracking them", (now - last_received_).toSec());
+    last_received_ = drained_[n - 1].received;
+  }
   switch (mode_) {
     case Mode::kWaiting:
     case Mode::kStaticsFailed:
@@ -197,8 +252,19 @@ bool RiserSimNode::start(const VesselSample& s, const ros::Time& now, std::strin
         mode_ = Mode::kStaticsFailed;
         reason_ = "initial statics at hang-off (" + num(top.x()) + ", " + num(top.y()) + ") failed: " + st.message;
         message = reason_;
+        std::lock_guard<std::mutex> lock(static_mutex_);
+        if (!static_state_) static_failure_ = reason_;
         return false;
       }
+    }
+    auto state = std::make_shared<StaticState>();
+    state->scene = sc;
+    state->kin = st.kin;
+    state->end_force = st.end_force;
+    state->stamp = now;
+    {
+      std::lock_guard<std::mutex> lock(static_mutex_);
+      static_state_ = std::move(state);
     }
     origin_ = ros::Time::now();  // after the statics: their cost is not a backlog to catch up
     if (origin_ < now) origin_ = now;
@@ -320,7 +386,8 @@ void RiserSimNode::publishDiagnostics(const ros::Time& now) {
     k.value = value;
     st.values.push_back(k);
   };
-  kv("mode", modeName(static_cast<int>(mode_)));
+  kv("mode", stalled_ ? std::string("paused: ROS time stalled (") + modeName(static_cast<int>(mode_)) + ")"
+                      : std::string(modeName(static_cast<int>(mode_))));
   kv("vessel input", input_->source());
   kv("poses accepted", std::to_string(input_->accepted()));
   kv("poses rejected", std::to_string(input_->rejected()));
@@ -371,15 +438,48 @@ void RiserSimNode::publishDiagnostics(const ros::Time& now) {
   } else if (mode_ == Mode::kWaiting) {
     st.level = DiagnosticStatus::WARN;
     message = "waiting for the first valid vessel pose (" + input_->source() + ")";
+    if (!clock_note_.empty()) message = clock_note_ + ": simulation reset; " + message;
   } else {
     st.level = DiagnosticStatus::ERROR;
     message = (mode_ == Mode::kDiverged ? "integration diverged: " : "") + reason_ + "; publishing stopped, call " +
               name_ + "/reset";
     kv("reason", reason_);
   }
+  if (clock_resets_ > 0) {
+    kv("ROS time jumps back", std::to_string(clock_resets_));
+    kv("last ROS time jump", clock_note_);
+  }
+  if (stalled_) {
+    const double still = seconds(Clock::now() - last_advance_);
+    kv("ROS time still for [s] (wall)", num(still, "%.1f"));
+    if (st.level < DiagnosticStatus::WARN) st.level = DiagnosticStatus::WARN;
+    message = "paused: ROS time has not advanced for " + num(still, "%.1f") + " s of wall time (" +
+              (now.isZero() ? "no /clock yet" : "/clock stalled") + "); " + message;
+  }
   st.message = message;
   diag_pub_.publish(diag_);
   if (sim_) resetWindow(now);
+}
+
+bool RiserSimNode::onModes(riser_sim::Modes::Request& req, riser_sim::Modes::Response& res) {
+  std::shared_ptr<const StaticState> state;
+  {
+    std::lock_guard<std::mutex> lock(static_mutex_);
+    state = static_state_;
+    if (!state) {
+      res.success = false;
+      res.message = static_failure_.empty() ? "no static state yet: waiting for the first valid vessel pose (" +
+                                                  input_->source() + ")"
+                                            : "no static state: " + static_failure_;
+      return true;
+    }
+  }
+  const Clock::time_point t0 = Clock::now();
+  computeModesResponse(state->scene, state->kin, state->end_force, req.count, res);
+  res.header.stamp = state->stamp;
+  res.header.frame_id = params_.fixed_frame;
+  ROS_INFO("riser_sim: ~modes (count %d): %s (%.1f ms)", req.count, res.message.c_str(), seconds(Clock::now() - t0) * 1e3);
+  return true;
 }
 
 bool RiserSimNode::onReset(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& res) {
@@ -407,7 +507,9 @@ void RiserSimNode::serveReset(const ros::Time& now) {
   VesselSample s;
   bool ok = false;
   std::string message;
-  if (!samples_.latest(s)) {
+  if (now.isZero()) {
+    message = "no ROS time yet (/use_sim_time is set and nothing publishes /clock)";
+  } else if (!samples_.latest(s)) {
     message = "no valid vessel pose received yet (" + input_->source() + ")";
   } else {
     samples_.drain(drained_);  // older than s: the new start supersedes them
