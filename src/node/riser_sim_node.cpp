@@ -157,8 +157,12 @@ bool RiserSimNode::clockAdvanced(const ros::Time& now, Clock::time_point wall) {
     clock_note_ = buf;
     ++clock_resets_;
     ROS_WARN("riser_sim: %s: simulation reset, restarting from the statics at the next vessel pose", buf);
+    // Keep the poses already stamped on the new timeline; drop the rest.
+    const int n = samples_.drain(drained_);
     samples_.clear();
     input_->restart();
+    for (int i = 0; i < n; ++i)
+      if (drained_[i].stamp <= now + ros::Duration(params_.max_pose_lead)) samples_.push(drained_[i]);
     mode_ = Mode::kWaiting;
     last_received_ = last_start_attempt_ = ros::Time();
     diag_s_.restart(now);

@@ -181,6 +181,9 @@ void VesselInput::handle(const std_msgs::Header& header, const geometry_msgs::Po
   if (!s.hangoff.allFinite()) return reject("hang-off point is not finite (pose * hangoff_offset)");
   {
     std::lock_guard<std::mutex> lock(mutex_);
+    // ROS time went back before the last accepted stamp (a bag loop): that stamp belongs to the old
+    // timeline. The integration loop resets the simulation when it sees the jump.
+    if (!last_stamp_.isZero() && s.received + ros::Duration(params_.max_pose_lead) < last_stamp_) last_stamp_ = ros::Time();
     why = checkStamp(header.stamp, s.received, last_stamp_, params_.max_pose_age, params_.max_pose_lead);
     if (why.empty()) last_stamp_ = header.stamp;
   }
