@@ -13,6 +13,7 @@
 #include <geometry_msgs/PoseStamped.h>
 #include <geometry_msgs/WrenchStamped.h>
 #include <ros/ros.h>
+#include <tf2_msgs/TFMessage.h>
 #include <visualization_msgs/MarkerArray.h>
 
 #include "riser_sim/LineState.h"
@@ -143,6 +144,17 @@ inline bool finite(const visualization_msgs::MarkerArray& m) {
       if (!finite(p)) return false;
     if (!finite(mk.pose.position)) return false;
     if (mk.text.find("nan") != std::string::npos || mk.text.find("inf") != std::string::npos) return false;
+  }
+  return true;
+}
+
+inline bool finite(const tf2_msgs::TFMessage& m) {
+  for (const auto& t : m.transforms) {
+    const auto& p = t.transform.translation;
+    const auto& q = t.transform.rotation;
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z) || !std::isfinite(q.x) ||
+        !std::isfinite(q.y) || !std::isfinite(q.z) || !std::isfinite(q.w))
+      return false;
   }
   return true;
 }
