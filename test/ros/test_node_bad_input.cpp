@@ -1,5 +1,7 @@
 #include <std_srvs/Trigger.h>
 
+#include <atomic>
+
 #include "node_test_util.h"
 
 using namespace riser_sim_test;
@@ -121,6 +123,63 @@ TEST(NodeBadInput, DivergenceStopsDataReportsErrorAndResetRestarts) {
   ASSERT_TRUE(waitFor([&] { return errorCount() >= e1 + 1; }, 10.0));
   for (const auto& m : tension.all()) EXPECT_TRUE(finite(m));
   for (const auto& m : state.all()) EXPECT_TRUE(finite(m));
+}
+
+// Divergence forced by an absurd vessel step (1e5 m in one pose: finite and within ~max_position, so
+// it is not filtered) on an otherwise stable scene: ERROR on /diagnostics, data stops; ~reset at the
+// vessel's good pose recovers it without a restart: data again, back to OK, static tension.
+TEST(NodeBadInput, AbsurdStepDivergesAndResetRecovers) {
+  ros::NodeHandle nh;
+  std::atomic<bool> step{false};
+  PosePublisher vessel(nh, "/step/vessel/pose", 20.0,
+                       [&](double, geometry_msgs::Pose& p) { p.position.x = step ? 1e5 : 0.0; });
+  Recorder<riser_sim::Tension> tension(nh, "/step/riser_sim/tension");
+  Recorder<diagnostic_msgs::DiagnosticArray> diag(nh, "/diagnostics");
+  const std::string node = "step/riser_sim";
+  auto level = [&](int lvl) {
+    int n = 0;
+    for (const auto& d : diag.all())
+      for (const auto& s : d.status) n += s.name.rfind(node, 0) == 0 && s.level == lvl;
+    return n;
+  };
+  ASSERT_TRUE(waitFor([&] { return vessel.subscribers() > 0; }, 20.0));
+  vessel.start();
+  ASSERT_TRUE(tension.waitCount(3, 20.0));
+  EXPECT_EQ(level(diagnostic_msgs::DiagnosticStatus::ERROR), 0);
+
+  step = true;
+  ASSERT_TRUE(waitFor([&] { return level(diagnostic_msgs::DiagnosticStatus::ERROR) >= 1; }, 15.0))
+      << "a 1e5 m step of the vessel did not make the integration diverge";
+  const size_t t0 = tension.count();
+  const int e0 = level(diagnostic_msgs::DiagnosticStatus::ERROR);
+  ASSERT_TRUE(waitFor([&] { return level(diagnostic_msgs::DiagnosticStatus::ERROR) >= e0 + 2; }, 10.0));
+  EXPECT_EQ(tension.count(), t0) << "data published after the divergence";
+
+  // The vessel is back where it belongs; once the node has taken a few poses there, ~reset.
+  step = false;
+  const long accepted = diagCount(diag, node, "poses accepted");
+  ASSERT_TRUE(waitFor([&] { return diagCount(diag, node, "poses accepted") >= accepted + 3; }, 10.0));
+  ros::ServiceClient reset = nh.serviceClient<std_srvs::Trigger>("/step/riser_sim/reset");
+  std_srvs::Trigger srv;
+  ASSERT_TRUE(reset.call(srv));
+  ASSERT_TRUE(srv.response.success) << srv.response.message;
+  ASSERT_TRUE(tension.waitCount(t0 + 10, 10.0)) << "no data after ~reset";
+  const auto all = tension.all();
+  for (size_t i = t0; i < all.size(); ++i) {
+    ASSERT_TRUE(finite(all[i]));
+    EXPECT_NEAR(all[i].top, kWeight, 1e-6 * kWeight);  // static again, at the good pose
+  }
+  // Back to OK and running (a report from after the reset).
+  const size_t d0 = diag.count();
+  ASSERT_TRUE(waitFor([&] {
+    const auto all = diag.all();
+    for (size_t i = d0; i < all.size(); ++i)
+      for (const auto& s : all[i].status)
+        if (s.name.rfind(node, 0) == 0 && s.level == diagnostic_msgs::DiagnosticStatus::OK &&
+            diagValue(all[i], node, "mode") == "running")
+          return true;
+    return false;
+  }, 5.0));
 }
 
 }  // namespace
