@@ -42,10 +42,8 @@ if(CATKIN_ENABLE_TESTING)
   # Master restart and security checks: a script, not a rostest (it kills and restarts the master).
   # It writes its own JUnit file, counted by catkin_test_results like the others.
   set(_master_restart_xml ${CATKIN_TEST_RESULTS_DIR}/${PROJECT_NAME}/script-master_restart.xml)
+  # catkin's run_tests.py runs each COMMAND argument as one shell command line.
   catkin_run_tests_target(script master_restart script-master_restart.xml
-    COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/test/ros/test_master_restart.py
-            --node $<TARGET_FILE:riser_sim_node>
-            --scene ${CMAKE_CURRENT_SOURCE_DIR}/test/ros/scenes/small_riser.yaml
-            --xml ${_master_restart_xml}
+    COMMAND "/usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/test/ros/test_master_restart.py --node $<TARGET_FILE:riser_sim_node> --scene ${CMAKE_CURRENT_SOURCE_DIR}/test/ros/scenes/small_riser.yaml --xml ${_master_restart_xml}"
     DEPENDENCIES riser_sim_node)
 endif()

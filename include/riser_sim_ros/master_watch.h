@@ -36,7 +36,6 @@ class MasterWatch {
   void reregister();
 
   double period_;
-  std::thread thread_;
   std::mutex mutex_;
   std::condition_variable cv_;
   bool stop_ = false;
@@ -45,6 +44,7 @@ class MasterWatch {
   int polls_ = 0;
   std::set<std::string> services_;
   std::atomic<long> reregistrations_{0};
+  std::thread thread_;  // last: started once every other member exists
 };
 
 }  // namespace riser_sim_ros

@@ -50,7 +50,7 @@ std::vector<std::pair<std::string, std::string>> ownTopics(const char* method) {
 
 }  // namespace
 
-MasterWatch::MasterWatch(double period) : period_(period), thread_([this] { run(); }) {}
+MasterWatch::MasterWatch(double period) : period_(period) { thread_ = std::thread([this] { run(); }); }
 
 MasterWatch::~MasterWatch() {
   {
