@@ -62,6 +62,11 @@ int main(int argc, char** argv) {
     return fail(kExitBadInput, e.what());
   }
   if (opt.duration > 0.0) scene.duration = opt.duration;
+  for (const int k : opt.probe_rfes)
+    if (k > scene.elements)
+      return fail(kExitBadInput, "--probe-rfe: rfe " + std::to_string(k) + " does not exist (rfes 0.." +
+                                     std::to_string(scene.elements) + ", line.elements = " +
+                                     std::to_string(scene.elements) + ")");
   info("scene '%s': n = %d, dt = %g s, %s/%s, duration %g s", scene.name.c_str(), scene.elements, scene.solver.dt,
        scene.solver.integrator.c_str(), scene.solver.formulation.c_str(), scene.duration);
   if (scene.top.type == "external") info("top.motion.type external: the top is held at top.position offline");
@@ -95,7 +100,7 @@ int main(int argc, char** argv) {
   if (!opt.csv.empty()) {
     csv.reset(std::fopen(opt.csv.c_str(), "w"));
     if (!csv) return fail(kExitBadInput, "--csv: cannot open '" + opt.csv + "': " + std::strerror(errno));
-    std::fprintf(csv.get(), "%s\n", csvHeader());
+    std::fprintf(csv.get(), "%s\n", csvHeader(opt.probe_rfes).c_str());
   }
 
   // Whole steps: the run ends at the first step at or past the duration; a row every `every` steps.
@@ -104,7 +109,7 @@ int main(int argc, char** argv) {
   const long every = std::max(1L, std::lround(opt.output_dt / dt));
 
   std::string diverged;
-  Sample last = takeSample(*sim);
+  Sample last = takeSample(*sim, opt.probe_rfes);
   if (!allFinite(last)) diverged = "initial state has non-finite outputs";
   if (csv && diverged.empty()) writeCsvRow(csv.get(), last);
 
@@ -120,7 +125,7 @@ int main(int argc, char** argv) {
       diverged = sim->divergenceReason();
       break;
     }
-    const Sample s = takeSample(*sim);
+    const Sample s = takeSample(*sim, opt.probe_rfes);
     if (!allFinite(s)) {
       diverged = "outputs are not finite";
       break;
