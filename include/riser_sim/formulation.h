@@ -8,6 +8,8 @@
 
 namespace riser_sim {
 
+class TermDataSet;
+
 // Results of the last evaluation that outputs need (reactions, constraint error).
 struct Reactions {
   Vec2 top = Vec2::Zero();     // force the line exerts on the hang-off point A_0 [N]
@@ -44,6 +46,13 @@ class Formulation {
   // x = (I - c J)^-1 b on [q; v] (the first 2p entries), J ≈ ∂(q', v')/∂(q, v) of that linearisation.
   virtual void factorShifted(double /*c*/) {}
   virtual void solveShifted(const VecX& /*b*/, VecX& /*x*/) {}
+
+  // Run data of the model's terms (history such as the seabed's anchors), owned by the Simulator;
+  // null (the default): the terms are evaluated without history.
+  void setTermData(const TermDataSet* data) { term_data_ = data; }
+
+ protected:
+  const TermDataSet* term_data_ = nullptr;
 };
 
 }  // namespace riser_sim

@@ -73,7 +73,7 @@ VecX randomState(const Model& m, std::mt19937& rng, bool consistent) {
 double potential(const ForceTerm& term, const Model& m, const AbsoluteFormulation& f, const VecX& y) {
   Kinematics kin(m.bodies());
   f.kinematics(y, kin);
-  return term.potentialEnergy(m, kin);
+  return term.potentialEnergy(m, nullptr, kin);
 }
 
 TEST(Formulation, ForcesAreMinusGradientOfPotential) {
@@ -89,7 +89,7 @@ TEST(Formulation, ForcesAreMinusGradientOfPotential) {
     f.kinematics(y, kin);
     for (const auto& term : model->terms()) {
       VecX Q = VecX::Zero(nq);
-      term->addForces(*model, kin, 0.0, Q);
+      term->addForces(*model, nullptr, kin, 0.0, Q);
       double worst = 0.0;
       for (int j = 0; j < nq; ++j) {
         VecX yp = y, ym = y;
@@ -165,7 +165,7 @@ TEST(Formulation, AccelerationsSatisfyLagrangeEquations) {
     Kinematics kin(nb);
     f.kinematics(y, kin);
     VecX Q = VecX::Zero(nq);
-    for (const auto& term : model->terms()) term->addForces(*model, kin, 0.0, Q);
+    for (const auto& term : model->terms()) term->addForces(*model, nullptr, kin, 0.0, Q);
     for (int i = 0; i < nb; ++i) {  // joint forces: -λ_i at A_i, +λ_{i+1} at the end of rfe i
       Q.segment<4>(4 * i) += pointForce(kin[i], 0.0, 0.0, -re.joint[i]);
       if (i + 1 < nb) Q.segment<4>(4 * i) += pointForce(kin[i], model->rfe(i).length, 1.0, re.joint[i + 1]);

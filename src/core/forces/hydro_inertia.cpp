@@ -4,7 +4,7 @@
 
 namespace riser_sim {
 
-void HydroInertia::addForces(const Model& model, const Kinematics& kin, double t, VecX& Q) const {
+void HydroInertia::addForces(const Model& model, const TermData*, const Kinematics& kin, double t, VecX& Q) const {
   if (!water_.moving()) return;
   const double rhoA = water_.spec().density * model.line().externalArea();
   for (int i = 0; i < model.bodies(); ++i)
@@ -36,7 +36,7 @@ void HydroInertia::addInertia(const Model& model, const Kinematics& kin, double,
 
 // With the added-mass energy ½ m_a (n·v)² in the kinetic energy, the balance needs
 // -m_a φ' (n·v)(e·v) (the rotation of n) plus the Froude-Krylov power.
-double HydroInertia::power(const Model& model, const Kinematics& kin, double t) const {
+double HydroInertia::power(const Model& model, const TermData*, const Kinematics& kin, double t) const {
   const double rhoA = water_.spec().density * model.line().externalArea();
   double pw = 0.0;
   for (int i = 0; i < model.bodies(); ++i)
