@@ -9,6 +9,7 @@
 
 #include "riser_sim/absolute_formulation.h"
 #include "riser_sim/force_term.h"
+#include "riser_sim/forces/end_load.h"
 #include "validation_util.h"
 
 namespace riser_sim {
@@ -79,6 +80,7 @@ double potential(const ForceTerm& term, const Model& m, const AbsoluteFormulatio
 TEST(Formulation, ForcesAreMinusGradientOfPotential) {
   const Scene s = smallScene();
   auto model = buildModel(s);
+  model->addTerm(std::make_unique<EndLoad>(Vec2(3e2, -2e2)));  // initial.end_force: hold
   AbsoluteFormulation f(*model, 50.0);
   std::mt19937 rng(7);
   const int nq = model->dofs();

@@ -153,6 +153,33 @@ TEST(HydroStatics, LineOnSeabedSinksByWeightPerContactPointOverStiffness) {
   }
 }
 
+// --- displaced initial state: the end force released or held ---------------------------------------
+// initial.end_force: hold keeps the statics' end force as a constant load, so the displaced state is an
+// equilibrium: with the top fixed nothing moves (reference: the statics themselves; their residual
+// 1e-9 of the weight moves the line by ~1e-9 m in 1 s). release lets the end swing back (metres).
+TEST(HydroStatics, DisplacedEndHeldStaysReleasedSwings) {
+  const std::string yaml =
+      "line: {length: 100, elements: 10, outer_diameter: 0.3, inner_diameter: 0.26, youngs_modulus: 2.07e11,"
+      " density: 7850, end_mass: 200}\n"
+      "environment: {water: {density: 1025, surface: 0}}\n"
+      "hydrodynamics: {drag_normal: 0.7, inertia_coefficient: 2}\n"
+      "solver: {dt: 1e-3}\n";
+  double moved[2];
+  for (int hold = 0; hold < 2; ++hold) {
+    const Scene s = parseScene(YAML::Load(yaml + "initial: {type: displaced, end_dx: -30, end_force: " +
+                                          (hold ? "hold" : "release") + "}\n"));
+    auto sim = buildSimulator(s);
+    EXPECT_EQ(sim->model().findTerm("end_load") != nullptr, hold == 1);
+    const AlignedVector<Vec2> p0 = sim->outputs().points;
+    ASSERT_TRUE(sim->advanceTo(1.0));
+    moved[hold] = 0.0;
+    for (size_t j = 0; j < p0.size(); ++j) moved[hold] = std::max(moved[hold], (sim->outputs().points[j] - p0[j]).norm());
+  }
+  std::printf("[hydro_statics] largest point motion in 1 s: released %.3g m, held %.3g m\n", moved[0], moved[1]);
+  EXPECT_LT(moved[1], 1e-6);
+  EXPECT_GT(moved[0], 0.1);
+}
+
 // --- terms that are off -------------------------------------------------------------------------------
 std::vector<VecX> trajectory(const Scene& s, std::vector<std::string>* names) {
   auto sim = buildSimulator(s);
