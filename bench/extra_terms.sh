@@ -17,7 +17,7 @@ declare -a sets=(
   "--set hydrodynamics.inertia_coefficient=2"
   "--set hydrodynamics.drag_normal=0.7 --set 'environment.current={velocity: [0.5, 0]}'"
   "--set 'environment.waves={height: 4, period: 10, depth: 1000}'"
-  "--set 'internal_fluid={density: 840, velocity: 5}'"
+  "--set 'internal_fluid={density: 840, velocity: 5, model: paper}'"
   "--set 'internal_fluid={density: 840, velocity: 5, model: pipe_flow}'"
   "--set 'seabed={level: -499.5, stiffness_normal: 1.0e6}'"
   "--set hydrodynamics.drag_normal=0.7 --set hydrodynamics.inertia_coefficient=2")

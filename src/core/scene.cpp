@@ -35,8 +35,8 @@ std::shared_ptr<Model> buildModel(const Scene& scene) {
   if (scene.seabed.enabled) model->addTerm(std::make_unique<Seabed>(scene.seabed));
   const InternalFlowSpec& f = scene.internal_fluid;
   if (f.density > 0.0 && (f.velocity != 0.0 || f.acceleration != 0.0))
-    f.model == "pipe_flow" ? model->addTerm(std::make_unique<PipeFlow>(f, scene.line.internalArea()))
-                           : model->addTerm(std::make_unique<InternalFlow>(f, scene.line.internalArea()));
+    f.model == "paper" ? model->addTerm(std::make_unique<InternalFlow>(f, scene.line.internalArea()))
+                       : model->addTerm(std::make_unique<PipeFlow>(f, scene.line.internalArea()));
   return model;
 }
 

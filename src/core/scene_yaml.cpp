@@ -371,7 +371,7 @@ void parseInternalFluid(const Section& root, Scene& s) {
   requireNonNegative(f.key("density"), s.internal_fluid.density);
   s.internal_fluid.velocity = f.number("velocity", 0.0);
   s.internal_fluid.acceleration = f.number("acceleration", 0.0);
-  s.internal_fluid.model = f.choice("model", "paper", {"paper", "pipe_flow"});
+  s.internal_fluid.model = f.choice("model", "pipe_flow", {"pipe_flow", "paper"});
 }
 
 void parseSolver(const Section& root, Scene& s) {

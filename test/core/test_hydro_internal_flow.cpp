@@ -23,7 +23,7 @@ std::string sceneYaml(double u, double ud, int n = 6) {
   return "line: {length: 30, elements: " + std::to_string(n) +
          ", outer_diameter: 0.3, inner_diameter: 0.26, youngs_modulus: 2.07e11, density: 7850}\n"
          "internal_fluid: {density: 840, velocity: " +
-         std::to_string(u) + ", acceleration: " + std::to_string(ud) + "}\n";
+         std::to_string(u) + ", acceleration: " + std::to_string(ud) + ", model: paper}\n";
 }
 
 // Kinematics of the absolute coordinates q = [x, y, Δ, φ] per rfe and their rates v.

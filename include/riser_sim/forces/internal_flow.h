@@ -16,7 +16,9 @@ struct InternalFlowSpec {
   double density = 0.0;       // ρ_f [kg/m^3]
   double velocity = 0.0;      // u0 [m/s]
   double acceleration = 0.0;  // u' [m/s^2]
-  std::string model = "paper";  // paper: closed-system Lagrangian (eqs. 17-24); pipe_flow: open system
+  // pipe_flow: open system, the classical limit (default, docs/limitations.md says why); paper: the
+  // paper's closed-system Lagrangian (eqs. 17-24), kept to reproduce its Fig. 14.
+  std::string model = "pipe_flow";
 };
 
 class InternalFlow : public ForceTerm {
