@@ -167,7 +167,7 @@ TEST(Cli, ShortRunWritesSummaryAndCsv) {
 
   std::map<std::string, std::string> j;
   ASSERT_TRUE(parseFlatJson(r.out, j)) << r.out;
-  for (const char* key : {"wall_s", "sim_s", "steps", "rtf", "x_end", "y_end", "tension_top", "max_constraint_error",
+  for (const char* key : {"wall_s", "cpu_s", "sim_s", "steps", "rtf", "x_end", "y_end", "tension_top", "max_constraint_error",
                           "energy_drift", "scene", "n", "dt", "integrator", "formulation", "statics_iterations",
                           "end_force_x"})
     EXPECT_EQ(j.count(key), 1u) << "summary lacks " << key << ": " << r.out;
@@ -179,6 +179,7 @@ TEST(Cli, ShortRunWritesSummaryAndCsv) {
   EXPECT_EQ(j["formulation"], "absolute");
   EXPECT_DOUBLE_EQ(std::stod(j["sim_s"]), 0.5);
   EXPECT_GT(std::stod(j["wall_s"]), 0.0);
+  EXPECT_GT(std::stod(j["cpu_s"]), 0.0);
 
   std::string header;
   const auto rows = csvRows(readFile(csv), header);
