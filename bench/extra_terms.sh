@@ -5,7 +5,7 @@
 # time is listed beside it: the machine may be shared); writes out/bench/terms.csv.
 set -eo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-cli="$root/.ws/devel/lib/riser_sim/riser_sim_cli"
+cli=${RISER_SIM_CLI:-"$root/.ws/devel/lib/riser_sim/riser_sim_cli"}  # RISER_SIM_CLI: another build to compare
 scene="$root/config/scenes/paper_riser_500m.yaml"
 mkdir -p "$root/out/bench"
 base=(--set 'hydrodynamics={drag_normal: 0, inertia_coefficient: 1}')

@@ -50,6 +50,13 @@ class ForceTerm {
   }
   // Power [W] of the non-conservative part (damping, drag, ...) fed into the line.
   virtual double power(const Model&, const TermData*, const Kinematics&, double /*t*/) const { return 0.0; }
+  // addForces() and returns power() in one pass: the simulation's derivative needs both at every stage.
+  // Terms whose power repeats the work of their forces (drag, flow) override it.
+  virtual double addForcesAndPower(const Model& model, const TermData* data, const Kinematics& kin, double t,
+                                   VecX& Q) const {
+    addForces(model, data, kin, t, Q);
+    return power(model, data, kin, t);
+  }
   // Seabed level y_b [m] for terms that model one (-inf otherwise); used by the statics' first guess.
   virtual double seabedLevel() const { return -INFINITY; }
 
@@ -94,6 +101,15 @@ inline void addTermForces(const Model& model, const TermDataSet* data, const Kin
   const auto& terms = model.terms();
   for (size_t k = 0; k < terms.size(); ++k) terms[k]->addForces(model, data ? data->at(k) : nullptr, kin, t, Q);
 }
+// Both at once; returns the summed power (see ForceTerm::addForcesAndPower).
+inline double addTermForcesAndPower(const Model& model, const TermDataSet* data, const Kinematics& kin, double t,
+                                    VecX& Q) {
+  const auto& terms = model.terms();
+  double p = 0.0;
+  for (size_t k = 0; k < terms.size(); ++k)
+    p += terms[k]->addForcesAndPower(model, data ? data->at(k) : nullptr, kin, t, Q);
+  return p;
+}
 inline void addTermStiffness(const Model& model, const TermDataSet* data, const Kinematics& kin, double t,
                              StiffnessBlocks& S) {
   const auto& terms = model.terms();
@@ -104,12 +120,6 @@ inline double termPotentialEnergy(const Model& model, const TermDataSet* data, c
   double v = 0.0;
   for (size_t k = 0; k < terms.size(); ++k) v += terms[k]->potentialEnergyAt(model, data ? data->at(k) : nullptr, kin, t);
   return v;
-}
-inline double termPower(const Model& model, const TermDataSet* data, const Kinematics& kin, double t) {
-  const auto& terms = model.terms();
-  double p = 0.0;
-  for (size_t k = 0; k < terms.size(); ++k) p += terms[k]->power(model, data ? data->at(k) : nullptr, kin, t);
-  return p;
 }
 
 }  // namespace riser_sim

@@ -34,6 +34,8 @@ class Formulation {
   virtual double constraintError(const VecX& y, const PointMotion& top) const = 0;
   // Kinematics of the last derivative() call.
   virtual const Kinematics& lastKinematics() const = 0;
+  // Summed power of the terms' non-conservative parts at the last derivative() call [W].
+  double lastTermPower() const { return last_term_power_; }
   // Largest joint-constraint violation seen by the last derivative() call [m] (0 when exact).
   virtual double lastConstraintError() const = 0;
   // Kinetic energy of the line (with every term's inertia) for state y [J].
@@ -53,6 +55,7 @@ class Formulation {
 
  protected:
   const TermDataSet* term_data_ = nullptr;
+  double last_term_power_ = 0.0;
 };
 
 }  // namespace riser_sim

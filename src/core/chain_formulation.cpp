@@ -78,7 +78,7 @@ void ChainFormulation::updateKinematics(const VecX& y, const PointMotion& top) {
 
 void ChainFormulation::evaluateForces(double t) {
   Q_.setZero();
-  addTermForces(model_, term_data_, kin_, t, Q_);
+  last_term_power_ = addTermForcesAndPower(model_, term_data_, kin_, t, Q_);
 }
 
 void ChainFormulation::generalMassBlocks(double t) {

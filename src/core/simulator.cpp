@@ -122,11 +122,9 @@ void Simulator::rhs(double t, const VecX& y, VecX& dy) {
   last_rhs_y_ = y;
   const PointMotion top = top_->at(t);
   formulation_->derivative(t, y, top, dy);
-  // dW/dt: power of the top motion (force on rfe 0 at A_0 is -λ_0) and of the non-conservative terms.
-  const Kinematics& kin = formulation_->lastKinematics();
-  double power = -formulation_->reactions().top.dot(top.v);
-  power += termPower(*model_, &term_data_, kin, t);
-  dy[dy.size() - 1] = power;
+  // dW/dt: power of the top motion (force on rfe 0 at A_0 is -λ_0) and of the non-conservative terms
+  // (summed by the formulation with the forces, at the same state).
+  dy[dy.size() - 1] = -formulation_->reactions().top.dot(top.v) + formulation_->lastTermPower();
 }
 
 bool Simulator::step() {

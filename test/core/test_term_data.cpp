@@ -3,6 +3,8 @@
 // alone bit for bit, and a modal analysis of the shared model in between must change nothing.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "riser_sim/force_term.h"
@@ -76,6 +78,44 @@ TEST(TermData, SimulatorsSharingAModelRunIndependently) {
   EXPECT_GT(b_contacts_max - b_contacts_min, 2) << "B's contacts: " << b_contacts_min << ".." << b_contacts_max;
   EXPECT_TRUE(a->state() == alone->state()) << "max |difference| "
                                             << (a->state() - alone->state()).lpNorm<Eigen::Infinity>();
+}
+
+}  // namespace
+}  // namespace riser_sim
+
+namespace riser_sim {
+namespace {
+
+// ForceTerm::addForcesAndPower (what the simulation calls) equals addForces + power (what energy
+// bookkeeping and the statics call) for every term, here every sea term on a moving J-lay in a current
+// and waves, with both flow models. Same arithmetic in the same order: equal to round-off (1e-12).
+TEST(TermData, FusedForcesAndPowerEqualSeparateCalls) {
+  for (const char* flow : {"paper", "pipe_flow"}) {
+    SCOPED_TRACE(flow);
+    const Scene s = loadSceneFile(std::string(RISER_SIM_SOURCE_DIR) + "/config/scenes/paper_jlay_170m.yaml",
+                                  {"line.elements=20", "internal_fluid.velocity=5", "internal_fluid.acceleration=0.5",
+                                   std::string("internal_fluid.model=") + flow, "line.axial_damping=1e6",
+                                   "line.bending_damping=1e5", "seabed.damping_normal=1e4",
+                                   "environment.current.velocity=[0.5, 0]",
+                                   "environment.waves={height: 4, period: 8, depth: 80}"});
+    auto sim = buildSimulator(s);
+    ASSERT_TRUE(sim->advanceTo(0.5));  // moving: every velocity term is non-zero
+    const Model& model = sim->model();
+    Kinematics kin(model.bodies());
+    sim->formulation().kinematics(sim->state(), kin);
+    int checked = 0;
+    for (const auto& term : model.terms()) {
+      VecX Q1 = VecX::Zero(model.dofs()), Q2 = VecX::Zero(model.dofs());
+      term->addForces(model, nullptr, kin, sim->time(), Q1);
+      const double p1 = term->power(model, nullptr, kin, sim->time());
+      const double p2 = term->addForcesAndPower(model, nullptr, kin, sim->time(), Q2);
+      const double scale = std::max(Q1.lpNorm<Eigen::Infinity>(), 1.0);
+      EXPECT_LT((Q1 - Q2).lpNorm<Eigen::Infinity>(), 1e-12 * scale) << term->name();
+      EXPECT_NEAR(p1, p2, 1e-12 * std::max(std::abs(p1), 1.0)) << term->name();
+      if (p1 != 0.0) ++checked;
+    }
+    EXPECT_GE(checked, 5) << "terms with power: drag, added mass, flow, springs' damping, seabed";
+  }
 }
 
 }  // namespace

@@ -18,6 +18,8 @@ class HydroInertia : public ForceTerm {
   void addInertia(const Model& model, const Kinematics& kin, double t, AlignedVector<Mat4>& M,
                   VecX& h) const override;
   double power(const Model& model, const TermData*, const Kinematics& kin, double t) const override;
+  double addForcesAndPower(const Model& model, const TermData*, const Kinematics& kin, double t,
+                           VecX& Q) const override;
 
  private:
   WaterKinematics water_;

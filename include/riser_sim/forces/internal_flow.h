@@ -52,6 +52,8 @@ class PipeFlow : public ForceTerm {
   std::string name() const override { return "pipe_flow"; }
   void addForces(const Model& model, const TermData*, const Kinematics& kin, double t, VecX& Q) const override;
   double power(const Model& model, const TermData*, const Kinematics& kin, double t) const override;
+  double addForcesAndPower(const Model& model, const TermData*, const Kinematics& kin, double t,
+                           VecX& Q) const override;
 
  private:
   // Visits every force (rfe, s0, kappa, F) the flow applies.

@@ -13,6 +13,8 @@ class MorisonDrag : public ForceTerm {
   std::string name() const override { return "morison_drag"; }
   void addForces(const Model& model, const TermData*, const Kinematics& kin, double t, VecX& Q) const override;
   double power(const Model& model, const TermData*, const Kinematics& kin, double t) const override;
+  double addForcesAndPower(const Model& model, const TermData*, const Kinematics& kin, double t,
+                           VecX& Q) const override;
 
  private:
   // Drag force [N] on part p of rfe i, its point of application (s0, kappa) and that point's velocity.

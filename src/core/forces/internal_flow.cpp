@@ -101,6 +101,16 @@ void PipeFlow::addForces(const Model& model, const TermData*, const Kinematics& 
   });
 }
 
+double PipeFlow::addForcesAndPower(const Model& model, const TermData*, const Kinematics& kin, double t,
+                                   VecX& Q) const {
+  double pw = 0.0;
+  forces(model, kin, t, [&](int i, double s0, double kappa, const Vec2& F) {
+    Q.segment<4>(4 * i) += pointForce(kin[i], s0, kappa, F);
+    pw += F.dot(kin[i].velocity(s0, kappa));
+  });
+  return pw;
+}
+
 double PipeFlow::power(const Model& model, const TermData*, const Kinematics& kin, double t) const {
   double pw = 0.0;
   forces(model, kin, t, [&](int i, double s0, double kappa, const Vec2& F) {

@@ -34,6 +34,20 @@ void MorisonDrag::addForces(const Model& model, const TermData*, const Kinematic
     }
 }
 
+double MorisonDrag::addForcesAndPower(const Model& model, const TermData*, const Kinematics& kin, double t,
+                                      VecX& Q) const {
+  double pw = 0.0;
+  for (int i = 0; i < model.bodies(); ++i)
+    for (int p = 0; p < 2; ++p) {
+      double s0, kappa;
+      Vec2 v;
+      const Vec2 F = force(model, kin[i], i, p, t, s0, kappa, v);
+      Q.segment<4>(4 * i) += pointForce(kin[i], s0, kappa, F);
+      pw += F.dot(v);
+    }
+  return pw;
+}
+
 double MorisonDrag::power(const Model& model, const TermData*, const Kinematics& kin, double t) const {
   double pw = 0.0;
   for (int i = 0; i < model.bodies(); ++i)
