@@ -12,6 +12,7 @@ add_library(riser_sim_core
   src/core/forces/morison_drag.cpp
   src/core/forces/hydro_inertia.cpp
   src/core/forces/seabed.cpp
+  src/core/forces/end_load.cpp
   src/core/forces/internal_flow.cpp
   src/core/water.cpp
   src/core/absolute_formulation.cpp

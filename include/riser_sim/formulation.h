@@ -8,6 +8,8 @@
 
 namespace riser_sim {
 
+class TermDataSet;
+
 // Results of the last evaluation that outputs need (reactions, constraint error).
 struct Reactions {
   Vec2 top = Vec2::Zero();     // force the line exerts on the hang-off point A_0 [N]
@@ -32,6 +34,8 @@ class Formulation {
   virtual double constraintError(const VecX& y, const PointMotion& top) const = 0;
   // Kinematics of the last derivative() call.
   virtual const Kinematics& lastKinematics() const = 0;
+  // Summed power of the terms' non-conservative parts at the last derivative() call [W].
+  double lastTermPower() const { return last_term_power_; }
   // Largest joint-constraint violation seen by the last derivative() call [m] (0 when exact).
   virtual double lastConstraintError() const = 0;
   // Kinetic energy of the line (with every term's inertia) for state y [J].
@@ -44,6 +48,14 @@ class Formulation {
   // x = (I - c J)^-1 b on [q; v] (the first 2p entries), J ≈ ∂(q', v')/∂(q, v) of that linearisation.
   virtual void factorShifted(double /*c*/) {}
   virtual void solveShifted(const VecX& /*b*/, VecX& /*x*/) {}
+
+  // Run data of the model's terms (history such as the seabed's anchors), owned by the Simulator;
+  // null (the default): the terms are evaluated without history.
+  void setTermData(const TermDataSet* data) { term_data_ = data; }
+
+ protected:
+  const TermDataSet* term_data_ = nullptr;
+  double last_term_power_ = 0.0;
 };
 
 }  // namespace riser_sim

@@ -29,6 +29,9 @@ struct InitialSpec {
   double end_dx = 0.0;           // displaced: x_end - x_top [m]
   double angle = -M_PI / 2;      // straight: φ [rad] (-π/2 = hanging straight down)
   double tolerance = 1e-9;       // statics: residual relative to the line's weight
+  // displaced: "release" drops the statics' horizontal end force at t = 0 (the end is let go);
+  // "hold" keeps it as a constant end load (EndLoad), so the initial state is an exact equilibrium.
+  std::string end_force = "release";
 };
 
 struct HydroSpec {

@@ -6,6 +6,7 @@
 #include <memory>
 #include <string>
 
+#include "riser_sim/force_term.h"
 #include "riser_sim/formulation.h"
 #include "riser_sim/integrator.h"
 #include "riser_sim/model.h"
@@ -93,7 +94,7 @@ class Simulator : private OdeSystem {
   double omega_max_ = 0.0;
   double t_ = 0.0, e0_ = 0.0, energy_scale_ = 1.0, max_constraint_error_ = 0.0;
   long steps_ = 0;
-  bool run_state_ = false;  // some term keeps history (seabed anchors)
+  TermDataSet term_data_;  // the terms' history in this run (seabed anchors); the model stays immutable
   std::string reason_;
   LineOutputs out_;
   Kinematics kin_;

@@ -29,6 +29,9 @@ std::string usage() {
          "  --csv FILE          time series every --output-dt seconds: t,x_top,y_top,x_end,y_end,\n"
          "                      tension_top,tension_max,energy,work,energy_drift,constraint_error\n"
          "  --output-dt S       CSV row interval [s] (default 0.1)\n"
+         "  --probe-rfe K       adds CSV columns x_rfeK,y_rfeK (middle of rfe K, at the arc length\n"
+         "                      of its axial spring) and tension_rfeK (axial force in rfe K) [N];\n"
+         "                      K = 0..line.elements                               [repeatable]\n"
          "  --summary           print one JSON line with the results at the end (stdout)\n"
          "  --quiet             no progress text on stderr\n"
          "  --modes K           statics + the K lowest natural modes about it (table on stdout);\n"
@@ -82,6 +85,13 @@ CliOptions parseOptions(int argc, char** argv) {
       if (text.empty() || *end != '\0' || k < 1 || k > 100000)
         throw UsageError("--modes: expected a whole number of modes >= 1, got '" + text + "'");
       o.modes = static_cast<int>(k);
+    } else if (arg == "--probe-rfe") {
+      const std::string text = takeValue();
+      char* end = nullptr;
+      const long k = std::strtol(text.c_str(), &end, 10);
+      if (text.empty() || *end != '\0' || k < 0 || k > 1000000)
+        throw UsageError("--probe-rfe: expected an rfe index >= 0, got '" + text + "'");
+      o.probe_rfes.push_back(static_cast<int>(k));
     } else if (arg == "--modes-csv") {
       o.modes_csv = takeValue();
       if (o.modes_csv.empty()) throw UsageError("--modes-csv: empty file name");
@@ -94,6 +104,7 @@ CliOptions parseOptions(int argc, char** argv) {
   }
   if (!o.help && o.scene.empty()) throw UsageError("--scene FILE is required (see --help)");
   if (!o.modes_csv.empty() && o.modes == 0) throw UsageError("--modes-csv: needs --modes K");
+  if (!o.probe_rfes.empty() && o.csv.empty()) throw UsageError("--probe-rfe: needs --csv FILE");
   return o;
 }
 

@@ -18,6 +18,7 @@ struct CliOptions {
   bool help = false;                   // --help
   int modes = 0;                       // --modes K: statics + lowest K natural modes (0: off)
   std::string modes_csv;               // --modes-csv FILE: mode shapes (needs --modes)
+  std::vector<int> probe_rfes;         // --probe-rfe K: CSV columns of rfe K (checked against n later)
 };
 
 // Bad command line (exit code 2).

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstring>
 #include <memory>
+#include <time.h>
 
 #include "cli_options.h"
 #include "modal_output.h"
@@ -20,6 +21,13 @@ constexpr int kExitOk = 0;
 constexpr int kExitInternal = 1;
 constexpr int kExitBadInput = 2;
 constexpr int kExitDiverged = 3;
+
+// CPU time of this thread [s] (the stepping's cost on a loaded machine, beside its wall time).
+double threadCpuSeconds() {
+  timespec ts{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return ts.tv_sec + 1e-9 * ts.tv_nsec;
+}
 
 int fail(int code, const std::string& message) {
   std::fprintf(stderr, "riser_sim_cli: error: %s\n", message.c_str());
@@ -62,6 +70,11 @@ int main(int argc, char** argv) {
     return fail(kExitBadInput, e.what());
   }
   if (opt.duration > 0.0) scene.duration = opt.duration;
+  for (const int k : opt.probe_rfes)
+    if (k > scene.elements)
+      return fail(kExitBadInput, "--probe-rfe: rfe " + std::to_string(k) + " does not exist (rfes 0.." +
+                                     std::to_string(scene.elements) + ", line.elements = " +
+                                     std::to_string(scene.elements) + ")");
   info("scene '%s': n = %d, dt = %g s, %s/%s, duration %g s", scene.name.c_str(), scene.elements, scene.solver.dt,
        scene.solver.integrator.c_str(), scene.solver.formulation.c_str(), scene.duration);
   if (scene.top.type == "external") info("top.motion.type external: the top is held at top.position offline");
@@ -95,7 +108,7 @@ int main(int argc, char** argv) {
   if (!opt.csv.empty()) {
     csv.reset(std::fopen(opt.csv.c_str(), "w"));
     if (!csv) return fail(kExitBadInput, "--csv: cannot open '" + opt.csv + "': " + std::strerror(errno));
-    std::fprintf(csv.get(), "%s\n", csvHeader());
+    std::fprintf(csv.get(), "%s\n", csvHeader(opt.probe_rfes).c_str());
   }
 
   // Whole steps: the run ends at the first step at or past the duration; a row every `every` steps.
@@ -104,23 +117,26 @@ int main(int argc, char** argv) {
   const long every = std::max(1L, std::lround(opt.output_dt / dt));
 
   std::string diverged;
-  Sample last = takeSample(*sim);
+  Sample last = takeSample(*sim, opt.probe_rfes);
   if (!allFinite(last)) diverged = "initial state has non-finite outputs";
   if (csv && diverged.empty()) writeCsvRow(csv.get(), last);
 
   // Only the stepping is timed: sampling and writing are excluded from wall_s.
   std::chrono::steady_clock::duration wall{0};
+  double cpu_s = 0.0;
   while (diverged.empty() && sim->steps() < total_steps) {
     const long chunk = std::min(every, total_steps - sim->steps());
     const auto start = std::chrono::steady_clock::now();
+    const double cpu_start = threadCpuSeconds();
     bool ok = true;
     for (long k = 0; k < chunk && ok; ++k) ok = sim->step();
     wall += std::chrono::steady_clock::now() - start;
+    cpu_s += threadCpuSeconds() - cpu_start;
     if (!ok) {
       diverged = sim->divergenceReason();
       break;
     }
-    const Sample s = takeSample(*sim);
+    const Sample s = takeSample(*sim, opt.probe_rfes);
     if (!allFinite(s)) {
       diverged = "outputs are not finite";
       break;
@@ -137,6 +153,7 @@ int main(int argc, char** argv) {
     JsonLine j;
     j.add("status", diverged.empty() ? "ok" : "diverged")
         .add("wall_s", wall_s)
+        .add("cpu_s", cpu_s)
         .add("sim_s", sim_s)
         .add("steps", sim->steps())
         .add("rtf", rtf)

@@ -5,7 +5,7 @@
 namespace riser_sim {
 namespace cli {
 
-Sample takeSample(Simulator& sim) {
+Sample takeSample(Simulator& sim, const std::vector<int>& probe_rfes) {
   const LineOutputs& out = sim.outputs();
   Sample s;
   s.t = out.t;
@@ -19,6 +19,12 @@ Sample takeSample(Simulator& sim) {
   s.work = out.work_in;
   s.energy_drift = sim.energyDrift();
   s.constraint_error = out.constraint_error;
+  for (const int k : probe_rfes) {
+    const double l1 = sim.model().rfe(k).length1, phi = out.angles[k];
+    s.probes.push_back(out.points[k].x() + l1 * std::cos(phi));
+    s.probes.push_back(out.points[k].y() + l1 * std::sin(phi));
+    s.probes.push_back(out.axial_force[k]);
+  }
   return s;
 }
 
@@ -26,16 +32,25 @@ bool allFinite(const Sample& s) {
   for (double v : {s.t, s.x_top, s.y_top, s.x_end, s.y_end, s.tension_top, s.tension_max, s.energy, s.work,
                    s.energy_drift, s.constraint_error})
     if (!std::isfinite(v)) return false;
+  for (double v : s.probes)
+    if (!std::isfinite(v)) return false;
   return true;
 }
 
-const char* csvHeader() {
-  return "t,x_top,y_top,x_end,y_end,tension_top,tension_max,energy,work,energy_drift,constraint_error";
+std::string csvHeader(const std::vector<int>& probe_rfes) {
+  std::string h = "t,x_top,y_top,x_end,y_end,tension_top,tension_max,energy,work,energy_drift,constraint_error";
+  for (const int k : probe_rfes) {
+    const std::string K = std::to_string(k);
+    h += ",x_rfe" + K + ",y_rfe" + K + ",tension_rfe" + K;
+  }
+  return h;
 }
 
 void writeCsvRow(std::FILE* f, const Sample& s) {
-  std::fprintf(f, "%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", s.t, s.x_top, s.y_top, s.x_end,
+  std::fprintf(f, "%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g", s.t, s.x_top, s.y_top, s.x_end,
                s.y_end, s.tension_top, s.tension_max, s.energy, s.work, s.energy_drift, s.constraint_error);
+  for (double v : s.probes) std::fprintf(f, ",%.9g", v);
+  std::fputc('\n', f);
 }
 
 std::string jsonString(const std::string& s) {

@@ -2,6 +2,7 @@
 #pragma once
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include "riser_sim/simulator.h"
 
@@ -19,12 +20,17 @@ struct Sample {
   double work = 0.0;                // work fed in since t = 0 [J]
   double energy_drift = 0.0;        // (E - E0 - W) / max(|E0|, m g L) [-]
   double constraint_error = 0.0;    // largest joint gap [m]
+  // Per probed rfe K (--probe-rfe): x, y of the point at its axial spring (middle of the rfe, arc
+  // length s_begin + l1 from the top) [m] and the axial force in the rfe [N].
+  std::vector<double> probes;
 };
 
-Sample takeSample(Simulator& sim);
+// probe_rfes: rfe indices 0..n (checked by the caller).
+Sample takeSample(Simulator& sim, const std::vector<int>& probe_rfes = {});
 bool allFinite(const Sample& s);
 
-const char* csvHeader();
+// The base columns, then x_rfeK,y_rfeK,tension_rfeK per probed rfe.
+std::string csvHeader(const std::vector<int>& probe_rfes = {});
 // Writes one row (%.9g). The caller checks allFinite() first: no NaN ever reaches the file.
 void writeCsvRow(std::FILE* f, const Sample& s);
 

@@ -154,7 +154,7 @@ void AbsoluteFormulation::derivative(double t, const VecX& y, const PointMotion&
   const bool axial = model_.options().axial_flexibility;
   kinematics(y, kin_);
   Q_.setZero();
-  for (const auto& term : model_.terms()) term->addForces(model_, kin_, t, Q_);
+  last_term_power_ = addTermForcesAndPower(model_, term_data_, kin_, t, Q_);
   if (rigid_only_) {
     for (int i = 0; i < nb; ++i) {
       const BodyKinematics& b = kin_[i];

@@ -78,7 +78,7 @@ void ChainFormulation::updateKinematics(const VecX& y, const PointMotion& top) {
 
 void ChainFormulation::evaluateForces(double t) {
   Q_.setZero();
-  for (const auto& term : model_.terms()) term->addForces(model_, kin_, t, Q_);
+  last_term_power_ = addTermForcesAndPower(model_, term_data_, kin_, t, Q_);
 }
 
 void ChainFormulation::generalMassBlocks(double t) {
@@ -127,7 +127,7 @@ void ChainFormulation::linearize(double t) {
   lin_joint_ = reactions_.joint;
   rfeMassBlocks(model_, lin_kin_, t, lin_M_, lin_h_);
   lin_S_.setZero();
-  for (const auto& term : model_.terms()) term->addStiffness(model_, lin_kin_, t, lin_S_);
+  addTermStiffness(model_, term_data_, lin_kin_, t, lin_S_);
   shifted_.setLinearization(lin_kin_, lin_M_, lin_S_, lin_joint_);
   shifted_c_ = 0.0;
 }

@@ -17,7 +17,7 @@ namespace {
 // θ ↔ kinematics of the chain hanging from A_0 (zero velocities), k = 2 (Δ, φ) or 1 (φ) per rfe.
 class Chain {
  public:
-  Chain(const Model& m, const Vec2& top, double t) : model_(m), top_(top), t_(t) {
+  Chain(const Model& m, const TermDataSet& data, const Vec2& top, double t) : model_(m), data_(data), top_(top), t_(t) {
     k_ = m.options().axial_flexibility ? 2 : 1;
     kin_.resize(m.bodies());
     Q_.setZero(m.dofs());
@@ -51,7 +51,7 @@ class Chain {
   const VecX& absoluteForces(const VecX& theta, const Vec2& end_force) {
     kinematics(theta);
     Q_.setZero();
-    for (const auto& term : model_.terms()) term->addForces(model_, kin_, t_, Q_);
+    addTermForces(model_, &data_, kin_, t_, Q_);
     const int n = model_.bodies() - 1;
     Q_.segment<4>(4 * n) += pointForce(kin_[n], model_.rfe(n).length, 1.0, end_force);
     return Q_;
@@ -71,6 +71,7 @@ class Chain {
 
  private:
   const Model& model_;
+  const TermDataSet& data_;
   Vec2 top_;
   double t_;
   int k_;
@@ -125,11 +126,11 @@ ModalResult computeModes(const Model& model, const Kinematics& equilibrium, cons
   if (!(options.fd_step > 0.0)) throw std::invalid_argument("modal fd_step: must be > 0");
 
   // Terms with history (seabed anchors) start from the static state: contacts stick where they are.
-  for (const auto& term : model.terms())
-    if (term->hasRunState()) term->startRun(model, equilibrium);
+  TermDataSet data(model);
+  data.startRun(model, equilibrium);
 
   const Vec2 top = equilibrium[0].A;
-  Chain chain(model, top, options.time);
+  Chain chain(model, data, top, options.time);
   const int nt = chain.size(), k = chain.k();
   VecX theta0;
   chain.pack(equilibrium, theta0);
@@ -148,9 +149,9 @@ ModalResult computeModes(const Model& model, const Kinematics& equilibrium, cons
   // Equilibrium check: residual generalised forces (forces / F, moments / (F L)) with F the largest
   // force any term applies.
   double F = std::max(model.totalMass() * std::abs(model.gravity()), end_force.norm());
-  for (const auto& term : model.terms()) {
+  for (size_t k = 0; k < model.terms().size(); ++k) {
     VecX Qa = VecX::Zero(model.dofs());
-    term->addForces(model, kin0, options.time, Qa);
+    model.terms()[k]->addForces(model, data.at(k), kin0, options.time, Qa);
     for (int i = 0; i < nb; ++i) F = std::max(F, Qa.segment<3>(4 * i).lpNorm<Eigen::Infinity>());
   }
   Vec2 load = end_force;

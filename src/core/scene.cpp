@@ -5,6 +5,7 @@
 #include "riser_sim/forces/axial_spring.h"
 #include "riser_sim/forces/bending_spring.h"
 #include "riser_sim/forces/buoyancy.h"
+#include "riser_sim/forces/end_load.h"
 #include "riser_sim/forces/gravity.h"
 #include "riser_sim/forces/hydro_inertia.h"
 #include "riser_sim/forces/morison_drag.h"
@@ -34,8 +35,8 @@ std::shared_ptr<Model> buildModel(const Scene& scene) {
   if (scene.seabed.enabled) model->addTerm(std::make_unique<Seabed>(scene.seabed));
   const InternalFlowSpec& f = scene.internal_fluid;
   if (f.density > 0.0 && (f.velocity != 0.0 || f.acceleration != 0.0))
-    f.model == "pipe_flow" ? model->addTerm(std::make_unique<PipeFlow>(f, scene.line.internalArea()))
-                           : model->addTerm(std::make_unique<InternalFlow>(f, scene.line.internalArea()));
+    f.model == "paper" ? model->addTerm(std::make_unique<InternalFlow>(f, scene.line.internalArea()))
+                       : model->addTerm(std::make_unique<PipeFlow>(f, scene.line.internalArea()));
   return model;
 }
 
@@ -68,7 +69,6 @@ StaticsProblem staticsProblem(const Scene& scene) {
 
 std::unique_ptr<Simulator> buildSimulator(const Scene& scene, StaticsResult* statics) {
   std::shared_ptr<Model> model = buildModel(scene);
-  auto sim = std::make_unique<Simulator>(model, buildTopMotion(scene.top), scene.solver);
   const StaticsProblem problem = staticsProblem(scene);
   StaticsResult st;
   if (scene.initial.type == "straight") {
@@ -79,6 +79,9 @@ std::unique_ptr<Simulator> buildSimulator(const Scene& scene, StaticsResult* sta
     st = solveStatics(*model, problem, 0.0);
     if (!st.converged) throw std::runtime_error("initial: " + st.message);
   }
+  if (scene.initial.type == "displaced" && scene.initial.end_force == "hold")
+    model->addTerm(std::make_unique<EndLoad>(st.end_force));
+  auto sim = std::make_unique<Simulator>(model, buildTopMotion(scene.top), scene.solver);
   // A pinned bottom that the statics did not place is held where the initial state puts it.
   sim->setInitialState(st.kin, 0.0);
   if (statics) *statics = st;

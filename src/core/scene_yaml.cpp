@@ -272,13 +272,14 @@ void parseBottom(const Section& root, Scene& s) {
 }
 
 void parseInitial(const Section& root, Scene& s) {
-  const Section initial = root.section("initial", {"type", "end_dx", "angle", "tolerance"});
+  const Section initial = root.section("initial", {"type", "end_dx", "angle", "tolerance", "end_force"});
   s.initial = InitialSpec();
   s.initial.type = initial.choice("type", "hanging", {"hanging", "displaced", "between_points", "straight"});
   s.initial.end_dx = s.initial.type == "displaced" ? initial.number("end_dx") : initial.number("end_dx", 0.0);
   s.initial.angle = initial.number("angle", -90.0) * kDegToRad;
   s.initial.tolerance = initial.number("tolerance", 1e-9);
   requirePositive(initial.key("tolerance"), s.initial.tolerance);
+  s.initial.end_force = initial.choice("end_force", "release", {"release", "hold"});
 }
 
 void parseCurrent(const Section& env, Scene& s) {
@@ -370,7 +371,7 @@ void parseInternalFluid(const Section& root, Scene& s) {
   requireNonNegative(f.key("density"), s.internal_fluid.density);
   s.internal_fluid.velocity = f.number("velocity", 0.0);
   s.internal_fluid.acceleration = f.number("acceleration", 0.0);
-  s.internal_fluid.model = f.choice("model", "paper", {"paper", "pipe_flow"});
+  s.internal_fluid.model = f.choice("model", "pipe_flow", {"pipe_flow", "paper"});
 }
 
 void parseSolver(const Section& root, Scene& s) {

@@ -27,6 +27,8 @@ Simulator::Simulator(std::shared_ptr<const Model> model, std::unique_ptr<TopMoti
     : model_(std::move(model)), top_(std::move(top)), settings_(settings) {
   if (!(settings_.dt > 0.0) || !std::isfinite(settings_.dt)) throw std::invalid_argument("solver.dt: must be > 0");
   formulation_ = makeFormulation(*model_, settings_);
+  term_data_ = TermDataSet(*model_);
+  formulation_->setTermData(&term_data_);
   IntegratorOptions io;
   io.tolerance = settings_.tolerance;
   io.position_size = formulation_->positionSize();
@@ -73,12 +75,7 @@ void Simulator::setInitialState(const Kinematics& kin, double t0) {
   y_.setZero();
   formulation_->packState(kin, y_);
   formulation_->kinematics(y_, kin_);
-  run_state_ = false;
-  for (const auto& term : model_->terms())
-    if (term->hasRunState()) {
-      term->startRun(*model_, kin_);
-      run_state_ = true;
-    }
+  term_data_.startRun(*model_, kin_);
   integrator_->restart();
   estimateHighestFrequency();
   e0_ = totalEnergy();
@@ -125,11 +122,9 @@ void Simulator::rhs(double t, const VecX& y, VecX& dy) {
   last_rhs_y_ = y;
   const PointMotion top = top_->at(t);
   formulation_->derivative(t, y, top, dy);
-  // dW/dt: power of the top motion (force on rfe 0 at A_0 is -λ_0) and of the non-conservative terms.
-  const Kinematics& kin = formulation_->lastKinematics();
-  double power = -formulation_->reactions().top.dot(top.v);
-  for (const auto& term : model_->terms()) power += term->power(*model_, kin, t);
-  dy[dy.size() - 1] = power;
+  // dW/dt: power of the top motion (force on rfe 0 at A_0 is -λ_0) and of the non-conservative terms
+  // (summed by the formulation with the forces, at the same state).
+  dy[dy.size() - 1] = -formulation_->reactions().top.dot(top.v) + formulation_->lastTermPower();
 }
 
 bool Simulator::step() {
@@ -137,9 +132,9 @@ bool Simulator::step() {
   integrator_->step(*this, t_, y_, settings_.dt);
   ++steps_;
   t_ += settings_.dt;
-  if (run_state_) {
+  if (term_data_.any()) {
     formulation_->kinematics(y_, kin_);
-    for (const auto& term : model_->terms()) term->endStep(*model_, kin_);
+    term_data_.endStep(*model_, kin_);
     integrator_->restart();
   }
   checkDivergence();
@@ -187,9 +182,7 @@ void Simulator::checkDivergence() {
 double Simulator::constraintError() const { return formulation_->constraintError(y_, top_->at(t_)); }
 
 double Simulator::potentialEnergy(const Kinematics& kin) const {
-  double v = 0.0;
-  for (const auto& term : model_->terms()) v += term->potentialEnergyAt(*model_, kin, t_);
-  return v;
+  return termPotentialEnergy(*model_, &term_data_, kin, t_);
 }
 
 double Simulator::totalEnergy() {

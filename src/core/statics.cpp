@@ -56,7 +56,7 @@ class StaticResidual {
   void operator()(const VecX& x, VecX& r) {
     toKinematics(x, kin_);
     Q_.setZero();
-    for (const auto& term : model_.terms()) term->addForces(model_, kin_, t_, Q_);
+    addTermForces(model_, nullptr, kin_, t_, Q_);  // no history: the seabed's tangential springs are free
     const int nb = model_.bodies();
     Q_.segment<4>(4 * (nb - 1)) += pointForce(kin_[nb - 1], model_.rfe(nb - 1).length, 1.0, endForce(x));
     Vec2 below = Vec2::Zero();  // net force on the rfes beyond rfe i
@@ -139,7 +139,7 @@ bool catenaryGuess(const Model& model, const StaticsProblem& p, Kinematics& kin,
   VecX Q = VecX::Zero(model.dofs());
   double level = -INFINITY;
   for (const auto& term : model.terms())
-    if (!std::isfinite(term->seabedLevel())) term->addForces(model, probe, 0.0, Q);
+    if (!std::isfinite(term->seabedLevel())) term->addForces(model, nullptr, probe, 0.0, Q);
   for (const auto& term : model.terms()) level = std::max(level, term->seabedLevel());
   double W = 0.0;
   for (int i = 0; i < model.bodies(); ++i) W -= Q[4 * i + kY];

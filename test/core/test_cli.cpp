@@ -146,6 +146,9 @@ TEST(Cli, BadInputExits2) {
       {"--scene " + kChain + " --set solver.integrator=euler", "solver.integrator: unknown integrator 'euler'"},
       {"--scene /nonexistent/riser_sim.yaml", "cannot open scene file"},
       {"--scene " + kChain + " --csv /nonexistent/dir/out.csv", "--csv: cannot open"},
+      {"--scene " + kChain + " --probe-rfe 2", "--probe-rfe: needs --csv"},
+      {"--scene " + kChain + " --csv /dev/null --probe-rfe -1", "--probe-rfe: expected an rfe index"},
+      {"--scene " + kChain + " --csv /dev/null --probe-rfe 9", "--probe-rfe: rfe 9 does not exist (rfes 0..8"},
   };
   for (const auto& c : cases) {
     SCOPED_TRACE(c.first);
@@ -164,7 +167,7 @@ TEST(Cli, ShortRunWritesSummaryAndCsv) {
 
   std::map<std::string, std::string> j;
   ASSERT_TRUE(parseFlatJson(r.out, j)) << r.out;
-  for (const char* key : {"wall_s", "sim_s", "steps", "rtf", "x_end", "y_end", "tension_top", "max_constraint_error",
+  for (const char* key : {"wall_s", "cpu_s", "sim_s", "steps", "rtf", "x_end", "y_end", "tension_top", "max_constraint_error",
                           "energy_drift", "scene", "n", "dt", "integrator", "formulation", "statics_iterations",
                           "end_force_x"})
     EXPECT_EQ(j.count(key), 1u) << "summary lacks " << key << ": " << r.out;
@@ -176,6 +179,7 @@ TEST(Cli, ShortRunWritesSummaryAndCsv) {
   EXPECT_EQ(j["formulation"], "absolute");
   EXPECT_DOUBLE_EQ(std::stod(j["sim_s"]), 0.5);
   EXPECT_GT(std::stod(j["wall_s"]), 0.0);
+  EXPECT_GT(std::stod(j["cpu_s"]), 0.0);
 
   std::string header;
   const auto rows = csvRows(readFile(csv), header);
@@ -191,6 +195,53 @@ TEST(Cli, ShortRunWritesSummaryAndCsv) {
   // Released from a straight line at -45 deg: the start row is that line (L = 10 m).
   EXPECT_NEAR(rows[0][3], 10.0 / std::sqrt(2.0), 1e-6);
   EXPECT_NEAR(rows[0][4], -10.0 / std::sqrt(2.0), 1e-6);
+  std::filesystem::remove(csv);
+}
+
+// --probe-rfe K: the middle of rfe K (its spring, at arc length s_K = s_begin + l1) and the axial force
+// in rfe K. References: the straight unstretched start line (positions exact), and the hanging static
+// state, where the spring of rfe K carries the weight below it: g (mu (L - s_K) + m_end) (a chain,
+// exact at equilibrium up to the statics tolerance 1e-9 of the weight).
+TEST(Cli, ProbeRfeColumns) {
+  const std::string csv = tempPath("probe.csv");
+  // hanging_chain.yaml: L = 10 m, n = 8 (d = 1.25 m, rfe 0 and 8 half length), mu = 2 kg/m, m_end = 5 kg.
+  const double d = 1.25, mu = 2.0, m_end = 5.0, g = 9.81, L = 10.0;
+  const std::vector<int> probes = {0, 4, 8};
+  const auto sK = [&](int k) { return k == 0 ? 0.25 * d : (k - 0.5) * d + (k == 8 ? 0.25 * d : 0.5 * d); };
+  {
+    const CliRun r = runCli("--scene " + kChain + " --duration 0.01 --quiet --probe-rfe 0 --probe-rfe=4 --probe-rfe 8 "
+                            "--csv " + csv);
+    ASSERT_EQ(r.code, 0) << r.err;
+    std::string header;
+    const auto rows = csvRows(readFile(csv), header);
+    EXPECT_EQ(header, std::string(kHeader) + ",x_rfe0,y_rfe0,tension_rfe0,x_rfe4,y_rfe4,tension_rfe4,"
+                                             "x_rfe8,y_rfe8,tension_rfe8");
+    ASSERT_GE(rows.size(), 1u);
+    ASSERT_EQ(rows[0].size(), 20u);
+    for (size_t p = 0; p < probes.size(); ++p) {  // straight at -45 deg, unstretched, at rest
+      const double s = sK(probes[p]);
+      EXPECT_NEAR(rows[0][11 + 3 * p], s / std::sqrt(2.0), 1e-7) << "rfe " << probes[p];
+      EXPECT_NEAR(rows[0][12 + 3 * p], -s / std::sqrt(2.0), 1e-7) << "rfe " << probes[p];
+      EXPECT_NEAR(rows[0][13 + 3 * p], 0.0, 1e-7) << "rfe " << probes[p];
+    }
+  }
+  {
+    const CliRun r = runCli("--scene " + kChain + " --set initial.type=hanging --duration 0.01 --quiet "
+                            "--probe-rfe 0 --probe-rfe 4 --probe-rfe 8 --csv " + csv);
+    ASSERT_EQ(r.code, 0) << r.err;
+    std::string header;
+    const auto rows = csvRows(readFile(csv), header);
+    ASSERT_GE(rows.size(), 1u);
+    ASSERT_EQ(rows[0].size(), 20u);
+    const double weight = g * (mu * L + m_end), strain_max = weight / 1.0e6;  // EA = 1e6 N
+    for (size_t p = 0; p < probes.size(); ++p) {
+      const double s = sK(probes[p]);
+      EXPECT_NEAR(rows[0][11 + 3 * p], 0.0, 1e-9) << "rfe " << probes[p];
+      EXPECT_LE(rows[0][12 + 3 * p], -s) << "rfe " << probes[p];  // stretched, but by less than the top strain
+      EXPECT_GE(rows[0][12 + 3 * p], -s * (1.0 + strain_max)) << "rfe " << probes[p];
+      EXPECT_NEAR(rows[0][13 + 3 * p], g * (mu * (L - s) + m_end), 1e-8 * weight) << "rfe " << probes[p];
+    }
+  }
   std::filesystem::remove(csv);
 }
 

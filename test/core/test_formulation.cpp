@@ -9,6 +9,7 @@
 
 #include "riser_sim/absolute_formulation.h"
 #include "riser_sim/force_term.h"
+#include "riser_sim/forces/end_load.h"
 #include "validation_util.h"
 
 namespace riser_sim {
@@ -73,12 +74,13 @@ VecX randomState(const Model& m, std::mt19937& rng, bool consistent) {
 double potential(const ForceTerm& term, const Model& m, const AbsoluteFormulation& f, const VecX& y) {
   Kinematics kin(m.bodies());
   f.kinematics(y, kin);
-  return term.potentialEnergy(m, kin);
+  return term.potentialEnergy(m, nullptr, kin);
 }
 
 TEST(Formulation, ForcesAreMinusGradientOfPotential) {
   const Scene s = smallScene();
   auto model = buildModel(s);
+  model->addTerm(std::make_unique<EndLoad>(Vec2(3e2, -2e2)));  // initial.end_force: hold
   AbsoluteFormulation f(*model, 50.0);
   std::mt19937 rng(7);
   const int nq = model->dofs();
@@ -89,7 +91,7 @@ TEST(Formulation, ForcesAreMinusGradientOfPotential) {
     f.kinematics(y, kin);
     for (const auto& term : model->terms()) {
       VecX Q = VecX::Zero(nq);
-      term->addForces(*model, kin, 0.0, Q);
+      term->addForces(*model, nullptr, kin, 0.0, Q);
       double worst = 0.0;
       for (int j = 0; j < nq; ++j) {
         VecX yp = y, ym = y;
@@ -165,7 +167,7 @@ TEST(Formulation, AccelerationsSatisfyLagrangeEquations) {
     Kinematics kin(nb);
     f.kinematics(y, kin);
     VecX Q = VecX::Zero(nq);
-    for (const auto& term : model->terms()) term->addForces(*model, kin, 0.0, Q);
+    for (const auto& term : model->terms()) term->addForces(*model, nullptr, kin, 0.0, Q);
     for (int i = 0; i < nb; ++i) {  // joint forces: -λ_i at A_i, +λ_{i+1} at the end of rfe i
       Q.segment<4>(4 * i) += pointForce(kin[i], 0.0, 0.0, -re.joint[i]);
       if (i + 1 < nb) Q.segment<4>(4 * i) += pointForce(kin[i], model->rfe(i).length, 1.0, re.joint[i + 1]);

@@ -39,7 +39,7 @@ class RandomInertia : public ForceTerm {
     }
   }
   std::string name() const override { return "random_inertia"; }
-  void addForces(const Model&, const Kinematics&, double, VecX&) const override {}
+  void addForces(const Model&, const TermData*, const Kinematics&, double, VecX&) const override {}
   bool hasInertia() const override { return true; }
   void addInertia(const Model& model, const Kinematics&, double, AlignedVector<Mat4>& M, VecX& h) const override {
     for (int i = 0; i < model.bodies(); ++i) {

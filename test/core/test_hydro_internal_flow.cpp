@@ -23,7 +23,7 @@ std::string sceneYaml(double u, double ud, int n = 6) {
   return "line: {length: 30, elements: " + std::to_string(n) +
          ", outer_diameter: 0.3, inner_diameter: 0.26, youngs_modulus: 2.07e11, density: 7850}\n"
          "internal_fluid: {density: 840, velocity: " +
-         std::to_string(u) + ", acceleration: " + std::to_string(ud) + "}\n";
+         std::to_string(u) + ", acceleration: " + std::to_string(ud) + ", model: paper}\n";
 }
 
 // Kinematics of the absolute coordinates q = [x, y, Δ, φ] per rfe and their rates v.
@@ -48,7 +48,7 @@ Kinematics kinematics(const Model& model, const VecX& q, const VecX& v) {
 // (InternalFlow::potentialEnergyAt = −T3).
 double lagrangian(const Model& model, const InternalFlow& f, const VecX& q, const VecX& v, double t) {
   const Kinematics kin = kinematics(model, q, v);
-  return kRhoL * f.u(t) * f.sumT2(model, kin) - f.potentialEnergyAt(model, kin, t);
+  return kRhoL * f.u(t) * f.sumT2(model, kin) - f.potentialEnergyAt(model, nullptr, kin, t);
 }
 
 const InternalFlow& flowTerm(const Model& model) {
@@ -73,7 +73,7 @@ TEST(HydroInternalFlow, GeneralisedForcesMatchFiniteDifferencesOfTheLagrangian) 
     }
     const double t = 1.3;
     VecX Q = VecX::Zero(nq);
-    flow.addForces(*model, kinematics(*model, q, v), t, Q);
+    flow.addForces(*model, nullptr, kinematics(*model, q, v), t, Q);
     // Q = ∂L/∂q − d/dt ∂L/∂v. ∂L/∂v does not depend on v (T2 is linear in v), so its time derivative
     // along q(t + τ) = q + v τ needs no acceleration.
     const double hq = 1e-6, hv = 1e-3, ht = 1e-4;
@@ -112,7 +112,7 @@ TEST(HydroInternalFlow, StraightPipeFeelsNoLateralForce) {
     const InternalFlow& flow = flowTerm(*model);
     const Kinematics kin = straightLine(*model, Vec2(0.0, 0.0), -1.1);
     VecX Q = VecX::Zero(model->dofs());
-    flow.addForces(*model, kin, 0.5, Q);
+    flow.addForces(*model, nullptr, kin, 0.5, Q);
     const Vec2 n = kin[0].nrm();
     double lateral = 0.0, moment = 0.0;
     for (int i = 0; i < model->bodies(); ++i) {
@@ -137,7 +137,7 @@ TEST(HydroInternalFlow, TranslatingStraightPipeHasOnlyEndEffects) {
   Kinematics kin = straightLine(*model, Vec2(0.0, 0.0), -1.1);
   for (auto& b : kin) b.A_dot = Vec2(0.4, -0.3);
   VecX Q = VecX::Zero(model->dofs());
-  flowTerm(*model).addForces(*model, kin, 0.5, Q);
+  flowTerm(*model).addForces(*model, nullptr, kin, 0.5, Q);
   const double ref = Q[4 * 2 + kPhi] / model->rfe(2).length;
   for (int i = 2; i < model->bodies() - 2; ++i) {
     EXPECT_NEAR(Q[4 * i + kPhi] / model->rfe(i).length, ref, 1e-9 * std::abs(ref)) << "rfe " << i;  // round-off
@@ -173,7 +173,7 @@ TEST(HydroInternalFlow, BendGivesAMomentProportionalToUSquaredTimesAngle) {
       const Scene su = parseScene(YAML::Load(sceneYaml(u, 0.0)));
       auto mu = buildModel(su);
       VecX Q = VecX::Zero(mu->dofs());
-      flowTerm(*mu).addForces(*mu, bent(alpha), 0.0, Q);
+      flowTerm(*mu).addForces(*mu, nullptr, bent(alpha), 0.0, Q);
       const double expected = kRhoL * u * u / 6.0 * l * std::sin(alpha);
       // Rounding of O(ρ_l u² l) terms: 1e-10 relative to the expected moment (≥ 4e-1 N m).
       EXPECT_NEAR(Q[4 * j + kPhi], -expected, 1e-9 * kRhoL * u * u * l) << "alpha " << alpha << " u " << u;

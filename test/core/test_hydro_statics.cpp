@@ -10,6 +10,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "riser_sim/force_term.h"
 #include "riser_sim/scene_yaml.h"
 
 namespace riser_sim {
@@ -113,9 +114,24 @@ TEST(HydroStatics, UniformCurrentGivesTheDragCableShape) {
     // RFEM vs continuous cable: drag and weight lumped at part centroids, an O(d²) discretisation
     // error (measured 4.3e-4 L at n = 20, 1.5e-4 L at n = 40: order ~1.5). 1e-3 L bounds both.
     EXPECT_LT(err, 1e-3);
-    // Horizontal reaction = integrated normal drag (global balance; same discretisation error).
+    // Horizontal reaction = integrated normal drag: against the continuous cable (same discretisation
+    // error), and against the sum of the model's own drag forces on the static shape (global balance in
+    // x: only the drag pushes sideways; exact up to the statics tolerance, 1e-9 of the weight).
     EXPECT_NEAR(o.top_force.x() / ref.top_force.x(), 1.0, 1e-3);
     EXPECT_NEAR(o.top_force.y() / ref.top_force.y(), 1.0, 1e-3);
+    {
+      const Model& model = sim->model();
+      Kinematics kin(model.bodies());
+      sim->formulation().kinematics(sim->state(), kin);
+      VecX Q = VecX::Zero(model.dofs());
+      ASSERT_NE(model.findTerm("morison_drag"), nullptr);
+      model.findTerm("morison_drag")->addForces(model, nullptr, kin, 0.0, Q);
+      double drag_x = 0.0;
+      for (int i = 0; i < model.bodies(); ++i) drag_x += Q[4 * i + kX];
+      const double weight = w * L + m_s * kG;
+      EXPECT_NEAR(o.top_force.x(), drag_x, 1e-8 * weight) << "integrated drag " << drag_x;
+      EXPECT_GT(drag_x, 0.01 * weight);  // the current really pushes (+x)
+    }
     if (prev_err > 0.0) EXPECT_LT(err, 0.5 * prev_err);  // converges with n (measured ratio 0.34)
     prev_err = err;
     // The shape is an equilibrium of the dynamics: after 5 s the reaction moves by < 1e-6 of itself
@@ -151,6 +167,33 @@ TEST(HydroStatics, LineOnSeabedSinksByWeightPerContactPointOverStiffness) {
     // O(angle²) ~ 4e-7; 1e-4 relative also covers the residual decay after 10 s.
     EXPECT_NEAR(sink / (load / Cy), 1.0, 1e-4) << "contact point " << j;
   }
+}
+
+// --- displaced initial state: the end force released or held ---------------------------------------
+// initial.end_force: hold keeps the statics' end force as a constant load, so the displaced state is an
+// equilibrium: with the top fixed nothing moves (reference: the statics themselves; their residual
+// 1e-9 of the weight moves the line by ~1e-9 m in 1 s). release lets the end swing back (metres).
+TEST(HydroStatics, DisplacedEndHeldStaysReleasedSwings) {
+  const std::string yaml =
+      "line: {length: 100, elements: 10, outer_diameter: 0.3, inner_diameter: 0.26, youngs_modulus: 2.07e11,"
+      " density: 7850, end_mass: 200}\n"
+      "environment: {water: {density: 1025, surface: 0}}\n"
+      "hydrodynamics: {drag_normal: 0.7, inertia_coefficient: 2}\n"
+      "solver: {dt: 1e-3}\n";
+  double moved[2];
+  for (int hold = 0; hold < 2; ++hold) {
+    const Scene s = parseScene(YAML::Load(yaml + "initial: {type: displaced, end_dx: -30, end_force: " +
+                                          (hold ? "hold" : "release") + "}\n"));
+    auto sim = buildSimulator(s);
+    EXPECT_EQ(sim->model().findTerm("end_load") != nullptr, hold == 1);
+    const AlignedVector<Vec2> p0 = sim->outputs().points;
+    ASSERT_TRUE(sim->advanceTo(1.0));
+    moved[hold] = 0.0;
+    for (size_t j = 0; j < p0.size(); ++j) moved[hold] = std::max(moved[hold], (sim->outputs().points[j] - p0[j]).norm());
+  }
+  std::printf("[hydro_statics] largest point motion in 1 s: released %.3g m, held %.3g m\n", moved[0], moved[1]);
+  EXPECT_LT(moved[1], 1e-6);
+  EXPECT_GT(moved[0], 0.1);
 }
 
 // --- terms that are off -------------------------------------------------------------------------------

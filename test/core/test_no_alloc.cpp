@@ -2,11 +2,13 @@
 // new/delete are replaced by counting versions; the count is read around the stepping only.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cstdlib>
 #include <new>
 
 #include "riser_sim/scene.h"
+#include "riser_sim/scene_yaml.h"
 #include "validation_util.h"
 
 namespace {
@@ -78,6 +80,36 @@ std::string caseName(const ::testing::TestParamInfo<Case>& info) {
 }
 
 INSTANTIATE_TEST_SUITE_P(AllIntegrators, NoAlloc, ::testing::ValuesIn(allCases()), caseName);
+
+// Every sea term at once (the J-lay scene: buoyancy, drag, added mass, seabed contacts with their
+// anchors as run data, internal flow of both models, end load, plus current and waves), explicit and
+// implicit with the structured solves.
+TEST(NoAllocSea, StepWithEverySeaTermDoesNotAllocate) {
+  for (const char* flow : {"paper", "pipe_flow"})
+    for (const char* integ : {"rk4", "rosenbrock2"}) {
+      SCOPED_TRACE(std::string(flow) + " / " + integ);
+      const bool implicit = std::string(integ) == "rosenbrock2";
+      Scene s = loadSceneFile(std::string(RISER_SIM_SOURCE_DIR) + "/config/scenes/paper_jlay_170m.yaml",
+                              {"internal_fluid.velocity=5", std::string("internal_fluid.model=") + flow,
+                               "initial.end_force=hold", "environment.current.velocity=[0.5, 0]",
+                               "environment.waves={height: 2, period: 8, depth: 80}",
+                               std::string("solver.integrator=") + integ,
+                               std::string("solver.formulation=") + (implicit ? "recursive" : "absolute"),
+                               "solver.jacobian_interval=0.002"});
+      auto sim = buildSimulator(s);
+      std::vector<std::string> names;
+      for (const auto& t : sim->model().terms()) names.push_back(t->name());
+      for (const char* want : {"buoyancy", "morison_drag", "hydro_inertia", "seabed", "end_load"})
+        EXPECT_NE(std::find(names.begin(), names.end(), want), names.end()) << want;
+      for (int k = 0; k < kWarmupSteps; ++k) ASSERT_TRUE(sim->step()) << sim->divergenceReason();
+      const long before = g_allocations.load();
+      bool ok = true;
+      for (int k = 0; k < kCountedSteps && ok; ++k) ok = sim->step();
+      const long allocations = g_allocations.load() - before;
+      ASSERT_TRUE(ok) << sim->divergenceReason();
+      EXPECT_EQ(allocations, 0);
+    }
+}
 
 }  // namespace
 }  // namespace riser_sim

@@ -26,7 +26,7 @@ TEST(PipeFlow, StraightPipeAtRestFeelsNoForce) {
   ASSERT_NE(flow, nullptr);
   const Kinematics kin = straightLine(*model, Vec2::Zero(), -1.1);
   VecX Q = VecX::Zero(model->dofs());
-  flow->addForces(*model, kin, 0.0, Q);
+  flow->addForces(*model, nullptr, kin, 0.0, Q);
   EXPECT_LT(Q.norm(), 1e-9);
 }
 
@@ -45,7 +45,7 @@ TEST(PipeFlow, BendPushesOutwardWithRhoAU2TimesAngle) {
       kin[i].A = kin[i - 1].end();
     }
     VecX Q = VecX::Zero(model->dofs());
-    flow->addForces(*model, kin, 0.0, Q);
+    flow->addForces(*model, nullptr, kin, 0.0, Q);
     const Vec2 F = Q.segment<2>(4 * k);
     const Vec2 inward = kin[k].e() - kin[k - 1].e();  // towards the centre of curvature
     EXPECT_LT(F.dot(inward), 0.0) << "outward (centrifugal), angle " << angle;
@@ -81,8 +81,8 @@ TEST(PipeFlow, PaperModelStraightensWhereTheOpenSystemBends) {
     kin[i].A = kin[i - 1].end();
   }
   VecX Qp = VecX::Zero(mp->dofs()), Qo = VecX::Zero(mo->dofs());
-  mp->findTerm("internal_flow")->addForces(*mp, kin, 0.0, Qp);
-  mo->findTerm("pipe_flow")->addForces(*mo, kin, 0.0, Qo);
+  mp->findTerm("internal_flow")->addForces(*mp, nullptr, kin, 0.0, Qp);
+  mo->findTerm("pipe_flow")->addForces(*mo, nullptr, kin, 0.0, Qo);
   // Generalised force on φ_4 in independent coordinates ~ moment about A_4 of everything below.
   auto bendMoment = [&](const VecX& Q) {
     double m = 0.0;

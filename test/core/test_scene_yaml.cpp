@@ -115,6 +115,11 @@ const BadScene kBadScenes[] = {
      "(accepted: free, pinned)"},
     {"{line: {length: 1, elements: 1, EA: 1, EI: 0, mass_per_length: 1}, initial: {type: random}}", "initial.type",
      "(accepted: hanging, displaced, between_points, straight)"},
+    {"{line: {length: 1, elements: 1, EA: 1, EI: 0, mass_per_length: 1}, initial: {end_force: keep}}",
+     "initial.end_force", "(accepted: release, hold)"},
+    {"{line: {length: 1, elements: 1, EA: 1, EI: 0, mass_per_length: 1, outer_diameter: 0.3, inner_diameter: 0.2}, "
+     "internal_fluid: {density: 840, model: closed}}",
+     "internal_fluid.model", "(accepted: pipe_flow, paper)"},
     {"{line: {length: 1, elements: 1, EA: 1, EI: 0, mass_per_length: 1}, solver: {integrator: euler}}",
      "solver.integrator", "unknown integrator 'euler' (accepted: rk4, dopri5, rosenbrock2, midpoint)"},
     {"{line: {length: 1, elements: 1, EA: 1, EI: 0, mass_per_length: 1}, solver: {formulation: relative}}",
@@ -199,6 +204,8 @@ TEST(SceneYaml, MinimalSceneTakesDefaults) {
   EXPECT_EQ(s.bottom, BottomBoundary::kFree);
   EXPECT_EQ(s.initial.type, "hanging");
   EXPECT_EQ(s.initial.tolerance, 1e-9);
+  EXPECT_EQ(s.initial.end_force, "release");
+  EXPECT_EQ(s.internal_fluid.model, "pipe_flow");  // the classical limit (docs/limitations.md)
   EXPECT_EQ(s.solver.dt, solver_defaults.dt);
   EXPECT_EQ(s.solver.integrator, "rk4");
   EXPECT_EQ(s.solver.formulation, "absolute");
@@ -276,6 +283,10 @@ TEST(SceneYaml, MotionsBoundariesAndInitialStates) {
     const Scene s = parse(line + "initial: {type: displaced, end_dx: -5}\nenvironment: {gravity: 0}");
     EXPECT_EQ(s.initial.end_dx, -5.0);
     EXPECT_EQ(s.gravity, 0.0);
+  }
+  {
+    const Scene s = parse(line + "initial: {type: displaced, end_dx: -5, end_force: hold}");
+    EXPECT_EQ(s.initial.end_force, "hold");
   }
   {
     // Keys of another motion type are accepted and ignored.

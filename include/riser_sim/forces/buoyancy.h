@@ -11,9 +11,9 @@ class Buoyancy : public ForceTerm {
  public:
   explicit Buoyancy(const WaterSpec& water) : water_(water) {}
   std::string name() const override { return "buoyancy"; }
-  void addForces(const Model& model, const Kinematics& kin, double t, VecX& Q) const override;
-  bool addStiffness(const Model& model, const Kinematics& kin, double t, StiffnessBlocks& S) const override;
-  double potentialEnergy(const Model& model, const Kinematics& kin) const override;
+  void addForces(const Model& model, const TermData*, const Kinematics& kin, double t, VecX& Q) const override;
+  bool addStiffness(const Model& model, const TermData*, const Kinematics& kin, double t, StiffnessBlocks& S) const override;
+  double potentialEnergy(const Model& model, const TermData*, const Kinematics& kin) const override;
 
  private:
   WaterSpec water_;

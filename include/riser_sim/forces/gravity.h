@@ -8,9 +8,9 @@ namespace riser_sim {
 class Gravity : public ForceTerm {
  public:
   std::string name() const override { return "gravity"; }
-  void addForces(const Model& model, const Kinematics& kin, double t, VecX& Q) const override;
-  bool addStiffness(const Model& model, const Kinematics& kin, double t, StiffnessBlocks& S) const override;
-  double potentialEnergy(const Model& model, const Kinematics& kin) const override;
+  void addForces(const Model& model, const TermData*, const Kinematics& kin, double t, VecX& Q) const override;
+  bool addStiffness(const Model& model, const TermData*, const Kinematics& kin, double t, StiffnessBlocks& S) const override;
+  double potentialEnergy(const Model& model, const TermData*, const Kinematics& kin) const override;
 };
 
 }  // namespace riser_sim

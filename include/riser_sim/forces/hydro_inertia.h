@@ -13,11 +13,13 @@ class HydroInertia : public ForceTerm {
   HydroInertia(const WaterKinematics& water, double inertia_coefficient)
       : water_(water), cm_(inertia_coefficient) {}
   std::string name() const override { return "hydro_inertia"; }
-  void addForces(const Model& model, const Kinematics& kin, double t, VecX& Q) const override;
+  void addForces(const Model& model, const TermData*, const Kinematics& kin, double t, VecX& Q) const override;
   bool hasInertia() const override { return cm_ != 1.0; }
   void addInertia(const Model& model, const Kinematics& kin, double t, AlignedVector<Mat4>& M,
                   VecX& h) const override;
-  double power(const Model& model, const Kinematics& kin, double t) const override;
+  double power(const Model& model, const TermData*, const Kinematics& kin, double t) const override;
+  double addForcesAndPower(const Model& model, const TermData*, const Kinematics& kin, double t,
+                           VecX& Q) const override;
 
  private:
   WaterKinematics water_;

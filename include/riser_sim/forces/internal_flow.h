@@ -16,19 +16,21 @@ struct InternalFlowSpec {
   double density = 0.0;       // ρ_f [kg/m^3]
   double velocity = 0.0;      // u0 [m/s]
   double acceleration = 0.0;  // u' [m/s^2]
-  std::string model = "paper";  // paper: closed-system Lagrangian (eqs. 17-24); pipe_flow: open system
+  // pipe_flow: open system, the classical limit (default, docs/limitations.md says why); paper: the
+  // paper's closed-system Lagrangian (eqs. 17-24), kept to reproduce its Fig. 14.
+  std::string model = "pipe_flow";
 };
 
 class InternalFlow : public ForceTerm {
  public:
   InternalFlow(const InternalFlowSpec& spec, double flow_area) : spec_(spec), rho_l_(spec.density * flow_area) {}
   std::string name() const override { return "internal_flow"; }
-  void addForces(const Model& model, const Kinematics& kin, double t, VecX& Q) const override;
-  double potentialEnergy(const Model& model, const Kinematics& kin) const override {
-    return potentialEnergyAt(model, kin, 0.0);
+  void addForces(const Model& model, const TermData*, const Kinematics& kin, double t, VecX& Q) const override;
+  double potentialEnergy(const Model& model, const TermData*, const Kinematics& kin) const override {
+    return potentialEnergyAt(model, nullptr, kin, 0.0);
   }
-  double potentialEnergyAt(const Model& model, const Kinematics& kin, double t) const override;
-  double power(const Model& model, const Kinematics& kin, double t) const override;
+  double potentialEnergyAt(const Model& model, const TermData*, const Kinematics& kin, double t) const override;
+  double power(const Model& model, const TermData*, const Kinematics& kin, double t) const override;
   double u(double t) const { return spec_.velocity + spec_.acceleration * t; }
   // ∂T2/∂q' / (ρ_l u)·q' summed (Σ t2) and T3 / (½ ρ_l u²) (F), for energy bookkeeping and tests.
   double sumT2(const Model& model, const Kinematics& kin) const;
@@ -48,8 +50,10 @@ class PipeFlow : public ForceTerm {
  public:
   PipeFlow(const InternalFlowSpec& spec, double flow_area) : spec_(spec), rho_l_(spec.density * flow_area) {}
   std::string name() const override { return "pipe_flow"; }
-  void addForces(const Model& model, const Kinematics& kin, double t, VecX& Q) const override;
-  double power(const Model& model, const Kinematics& kin, double t) const override;
+  void addForces(const Model& model, const TermData*, const Kinematics& kin, double t, VecX& Q) const override;
+  double power(const Model& model, const TermData*, const Kinematics& kin, double t) const override;
+  double addForcesAndPower(const Model& model, const TermData*, const Kinematics& kin, double t,
+                           VecX& Q) const override;
 
  private:
   // Visits every force (rfe, s0, kappa, F) the flow applies.

@@ -11,8 +11,10 @@ class MorisonDrag : public ForceTerm {
   MorisonDrag(const WaterKinematics& water, double drag_tangential, double drag_normal)
       : water_(water), cd_t_(drag_tangential), cd_n_(drag_normal) {}
   std::string name() const override { return "morison_drag"; }
-  void addForces(const Model& model, const Kinematics& kin, double t, VecX& Q) const override;
-  double power(const Model& model, const Kinematics& kin, double t) const override;
+  void addForces(const Model& model, const TermData*, const Kinematics& kin, double t, VecX& Q) const override;
+  double power(const Model& model, const TermData*, const Kinematics& kin, double t) const override;
+  double addForcesAndPower(const Model& model, const TermData*, const Kinematics& kin, double t,
+                           VecX& Q) const override;
 
  private:
   // Drag force [N] on part p of rfe i, its point of application (s0, kappa) and that point's velocity.

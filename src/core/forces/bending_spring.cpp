@@ -2,7 +2,7 @@
 
 namespace riser_sim {
 
-void BendingSpring::addForces(const Model& model, const Kinematics& kin, double, VecX& Q) const {
+void BendingSpring::addForces(const Model& model, const TermData*, const Kinematics& kin, double, VecX& Q) const {
   const double k = model.bendingStiffness(), c = model.bendingDamping();
   for (int i = 1; i < model.bodies(); ++i) {
     const double m = k * (kin[i].phi - kin[i - 1].phi) + c * (kin[i].phi_dot - kin[i - 1].phi_dot);
@@ -11,7 +11,7 @@ void BendingSpring::addForces(const Model& model, const Kinematics& kin, double,
   }
 }
 
-double BendingSpring::potentialEnergy(const Model& model, const Kinematics& kin) const {
+double BendingSpring::potentialEnergy(const Model& model, const TermData*, const Kinematics& kin) const {
   double v = 0.0;
   for (int i = 1; i < model.bodies(); ++i) {
     const double dphi = kin[i].phi - kin[i - 1].phi;
@@ -20,7 +20,7 @@ double BendingSpring::potentialEnergy(const Model& model, const Kinematics& kin)
   return v;
 }
 
-double BendingSpring::power(const Model& model, const Kinematics& kin, double) const {
+double BendingSpring::power(const Model& model, const TermData*, const Kinematics& kin, double) const {
   double p = 0.0;
   for (int i = 1; i < model.bodies(); ++i) {
     const double w = kin[i].phi_dot - kin[i - 1].phi_dot;
@@ -34,7 +34,7 @@ double BendingSpring::power(const Model& model, const Kinematics& kin, double) c
 namespace riser_sim {
 
 // ½ k (φ_i - φ_{i-1})²: +k on both diagonals, -k between the neighbours (same for the damping).
-bool BendingSpring::addStiffness(const Model& model, const Kinematics&, double, StiffnessBlocks& S) const {
+bool BendingSpring::addStiffness(const Model& model, const TermData*, const Kinematics&, double, StiffnessBlocks& S) const {
   const double k = model.bendingStiffness(), c = model.bendingDamping();
   for (int i = 1; i < model.bodies(); ++i) {
     S.K_diag[i](kPhi, kPhi) += k;

@@ -13,7 +13,7 @@ WetPart wetPart(const Model& model, const BodyKinematics& b, int i, int part, do
   return WetPart{frac * len, start + cen * len, kappa, frac};
 }
 
-void Buoyancy::addForces(const Model& model, const Kinematics& kin, double, VecX& Q) const {
+void Buoyancy::addForces(const Model& model, const TermData*, const Kinematics& kin, double, VecX& Q) const {
   const double f = water_.density * model.line().externalArea() * model.gravity();
   for (int i = 0; i < model.bodies(); ++i)
     for (int p = 0; p < 2; ++p) {
@@ -22,7 +22,7 @@ void Buoyancy::addForces(const Model& model, const Kinematics& kin, double, VecX
     }
 }
 
-double Buoyancy::potentialEnergy(const Model& model, const Kinematics& kin) const {
+double Buoyancy::potentialEnergy(const Model& model, const TermData*, const Kinematics& kin) const {
   const double f = water_.density * model.line().externalArea() * model.gravity();
   double v = 0.0;
   for (int i = 0; i < model.bodies(); ++i)
@@ -39,7 +39,7 @@ namespace riser_sim {
 
 // The geometric part of the lift on each wet part (the change of the wet length at the surface is left
 // to the explicit side).
-bool Buoyancy::addStiffness(const Model& model, const Kinematics& kin, double, StiffnessBlocks& S) const {
+bool Buoyancy::addStiffness(const Model& model, const TermData*, const Kinematics& kin, double, StiffnessBlocks& S) const {
   const double f = water_.density * model.line().externalArea() * model.gravity();
   const Mat2 zero = Mat2::Zero();
   for (int i = 0; i < model.bodies(); ++i)

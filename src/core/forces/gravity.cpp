@@ -2,7 +2,7 @@
 
 namespace riser_sim {
 
-void Gravity::addForces(const Model& model, const Kinematics& kin, double, VecX& Q) const {
+void Gravity::addForces(const Model& model, const TermData*, const Kinematics& kin, double, VecX& Q) const {
   // Σ over parts of B_p^T (0, -m_p g): [0, -m g, -mk g sinφ, -S(Δ) g cosφ].
   const double g = model.gravity();
   for (int i = 0; i < model.bodies(); ++i) {
@@ -15,7 +15,7 @@ void Gravity::addForces(const Model& model, const Kinematics& kin, double, VecX&
   }
 }
 
-double Gravity::potentialEnergy(const Model& model, const Kinematics& kin) const {
+double Gravity::potentialEnergy(const Model& model, const TermData*, const Kinematics& kin) const {
   double v = 0.0;
   for (int i = 0; i < model.bodies(); ++i) {
     const Rfe& r = model.rfe(i);
@@ -30,7 +30,7 @@ double Gravity::potentialEnergy(const Model& model, const Kinematics& kin) const
 namespace riser_sim {
 
 // Only the geometric part: the weights are constant, their lever arms turn with φ and stretch with Δ.
-bool Gravity::addStiffness(const Model& model, const Kinematics& kin, double, StiffnessBlocks& S) const {
+bool Gravity::addStiffness(const Model& model, const TermData*, const Kinematics& kin, double, StiffnessBlocks& S) const {
   const double g = model.gravity();
   for (int i = 0; i < model.bodies(); ++i) {
     const Rfe& r = model.rfe(i);

@@ -4,7 +4,7 @@
 
 namespace riser_sim {
 
-void InternalFlow::addForces(const Model& model, const Kinematics& kin, double t, VecX& Q) const {
+void InternalFlow::addForces(const Model& model, const TermData*, const Kinematics& kin, double t, VecX& Q) const {
   const double u = this->u(t), ud = spec_.acceleration;
   const int nb = model.bodies();
   const double c3 = 0.5 * rho_l_ * u * u / 3.0;
@@ -70,12 +70,12 @@ double InternalFlow::shapeF(const Model& model, const Kinematics& kin) const {
   return f;
 }
 
-double InternalFlow::potentialEnergyAt(const Model& model, const Kinematics& kin, double t) const {
+double InternalFlow::potentialEnergyAt(const Model& model, const TermData*, const Kinematics& kin, double t) const {
   const double u = this->u(t);
   return -0.5 * rho_l_ * u * u * shapeF(model, kin);
 }
 
-double InternalFlow::power(const Model& model, const Kinematics& kin, double t) const {
+double InternalFlow::power(const Model& model, const TermData*, const Kinematics& kin, double t) const {
   const double u = this->u(t);
   return -spec_.acceleration * rho_l_ * (sumT2(model, kin) + u * shapeF(model, kin));
 }
@@ -95,13 +95,23 @@ void PipeFlow::forces(const Model& model, const Kinematics& kin, double t, Visit
   }
 }
 
-void PipeFlow::addForces(const Model& model, const Kinematics& kin, double t, VecX& Q) const {
+void PipeFlow::addForces(const Model& model, const TermData*, const Kinematics& kin, double t, VecX& Q) const {
   forces(model, kin, t, [&](int i, double s0, double kappa, const Vec2& F) {
     Q.segment<4>(4 * i) += pointForce(kin[i], s0, kappa, F);
   });
 }
 
-double PipeFlow::power(const Model& model, const Kinematics& kin, double t) const {
+double PipeFlow::addForcesAndPower(const Model& model, const TermData*, const Kinematics& kin, double t,
+                                   VecX& Q) const {
+  double pw = 0.0;
+  forces(model, kin, t, [&](int i, double s0, double kappa, const Vec2& F) {
+    Q.segment<4>(4 * i) += pointForce(kin[i], s0, kappa, F);
+    pw += F.dot(kin[i].velocity(s0, kappa));
+  });
+  return pw;
+}
+
+double PipeFlow::power(const Model& model, const TermData*, const Kinematics& kin, double t) const {
   double pw = 0.0;
   forces(model, kin, t, [&](int i, double s0, double kappa, const Vec2& F) {
     pw += F.dot(kin[i].velocity(s0, kappa));

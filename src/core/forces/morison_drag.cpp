@@ -24,7 +24,7 @@ Vec2 MorisonDrag::force(const Model& model, const BodyKinematics& b, int i, int 
   return k * (cd_t_ * std::abs(vt) * vt * b.e() + cd_n_ * std::abs(vn) * vn * b.nrm());
 }
 
-void MorisonDrag::addForces(const Model& model, const Kinematics& kin, double t, VecX& Q) const {
+void MorisonDrag::addForces(const Model& model, const TermData*, const Kinematics& kin, double t, VecX& Q) const {
   for (int i = 0; i < model.bodies(); ++i)
     for (int p = 0; p < 2; ++p) {
       double s0, kappa;
@@ -34,7 +34,21 @@ void MorisonDrag::addForces(const Model& model, const Kinematics& kin, double t,
     }
 }
 
-double MorisonDrag::power(const Model& model, const Kinematics& kin, double t) const {
+double MorisonDrag::addForcesAndPower(const Model& model, const TermData*, const Kinematics& kin, double t,
+                                      VecX& Q) const {
+  double pw = 0.0;
+  for (int i = 0; i < model.bodies(); ++i)
+    for (int p = 0; p < 2; ++p) {
+      double s0, kappa;
+      Vec2 v;
+      const Vec2 F = force(model, kin[i], i, p, t, s0, kappa, v);
+      Q.segment<4>(4 * i) += pointForce(kin[i], s0, kappa, F);
+      pw += F.dot(v);
+    }
+  return pw;
+}
+
+double MorisonDrag::power(const Model& model, const TermData*, const Kinematics& kin, double t) const {
   double pw = 0.0;
   for (int i = 0; i < model.bodies(); ++i)
     for (int p = 0; p < 2; ++p) {

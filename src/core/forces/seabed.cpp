@@ -1,5 +1,6 @@
 #include "riser_sim/forces/seabed.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace riser_sim {
@@ -14,14 +15,17 @@ void Seabed::point(const Model& model, const Kinematics& kin, int j, int& body, 
   v = kin[body].velocity(s0, kappa);
 }
 
-Vec2 Seabed::force(int j, const Vec2& p, const Vec2& v, bool damping) const {
+const double* Seabed::anchors(const TermData* data) {
+  return data ? static_cast<const SeabedData*>(data)->anchor.data() : nullptr;
+}
+
+Vec2 Seabed::force(const double* anchor, int j, const Vec2& p, const Vec2& v, bool damping) const {
   const double pen = spec_.level - p.y();
   if (pen <= 0.0) return Vec2::Zero();
   double fy = spec_.stiffness_normal * pen - (damping ? spec_.damping_normal * v.y() : 0.0);
   fy = std::max(fy, 0.0);
   double fx = damping ? -spec_.damping_tangential * v.x() : 0.0;
-  if (j < static_cast<int>(anchor_.size()) && std::isfinite(anchor_[j]))
-    fx -= spec_.stiffness_tangential * (p.x() - anchor_[j]);
+  if (anchor && std::isfinite(anchor[j])) fx -= spec_.stiffness_tangential * (p.x() - anchor[j]);
   return Vec2(fx, fy);
 }
 
@@ -36,45 +40,55 @@ void Seabed::forEachContact(const Model& model, const Kinematics& kin, Visit&& v
   }
 }
 
-void Seabed::addForces(const Model& model, const Kinematics& kin, double, VecX& Q) const {
+void Seabed::addForces(const Model& model, const TermData* data, const Kinematics& kin, double, VecX& Q) const {
+  const double* anchor = anchors(data);
   forEachContact(model, kin, [&](int j, int body, double s0, const Vec2& p, const Vec2& v) {
-    Q.segment<4>(4 * body) += pointForce(kin[body], s0, j < model.bodies() ? 0.0 : 1.0, force(j, p, v, true));
+    Q.segment<4>(4 * body) += pointForce(kin[body], s0, j < model.bodies() ? 0.0 : 1.0, force(anchor, j, p, v, true));
   });
 }
 
-double Seabed::potentialEnergy(const Model& model, const Kinematics& kin) const {
+double Seabed::potentialEnergy(const Model& model, const TermData* data, const Kinematics& kin) const {
+  const double* anchor = anchors(data);
   double e = 0.0;
   forEachContact(model, kin, [&](int j, int, double, const Vec2& p, const Vec2&) {
     const double pen = spec_.level - p.y();
     e += 0.5 * spec_.stiffness_normal * pen * pen;
-    if (j < static_cast<int>(anchor_.size()) && std::isfinite(anchor_[j]))
-      e += 0.5 * spec_.stiffness_tangential * std::pow(p.x() - anchor_[j], 2);
+    if (anchor && std::isfinite(anchor[j])) e += 0.5 * spec_.stiffness_tangential * std::pow(p.x() - anchor[j], 2);
   });
   return e;
 }
 
 // Damping power; the normal clamp (no pull) also removes energy, counted here as the difference.
-double Seabed::power(const Model& model, const Kinematics& kin, double) const {
+double Seabed::power(const Model& model, const TermData* data, const Kinematics& kin, double) const {
+  const double* anchor = anchors(data);
   double pw = 0.0;
   forEachContact(model, kin, [&](int j, int, double, const Vec2& p, const Vec2& v) {
-    pw += (force(j, p, v, true) - force(j, p, v, false)).dot(v);
+    pw += (force(anchor, j, p, v, true) - force(anchor, j, p, v, false)).dot(v);
   });
   return pw;
 }
 
-void Seabed::startRun(const Model& model, const Kinematics& kin) const {
-  anchor_.assign(model.bodies() + 1, NAN);
-  endStep(model, kin);
+std::unique_ptr<TermData> Seabed::makeData(const Model& model) const {
+  auto data = std::make_unique<SeabedData>();
+  data->anchor.assign(model.bodies() + 1, NAN);
+  return data;
 }
 
-void Seabed::endStep(const Model& model, const Kinematics& kin) const {
+void Seabed::startRun(const Model& model, const Kinematics& kin, TermData& data) const {
+  std::vector<double>& anchor = static_cast<SeabedData&>(data).anchor;
+  std::fill(anchor.begin(), anchor.end(), NAN);
+  endStep(model, kin, data);
+}
+
+void Seabed::endStep(const Model& model, const Kinematics& kin, TermData& data) const {
+  std::vector<double>& anchor = static_cast<SeabedData&>(data).anchor;
   for (int j = 0; j <= model.bodies(); ++j) {
     int body;
     double s0;
     Vec2 p, v;
     point(model, kin, j, body, s0, p, v);
-    if (p.y() >= spec_.level) anchor_[j] = NAN;
-    else if (!std::isfinite(anchor_[j])) anchor_[j] = p.x();
+    if (p.y() >= spec_.level) anchor[j] = NAN;
+    else if (!std::isfinite(anchor[j])) anchor[j] = p.x();
   }
 }
 
@@ -90,10 +104,11 @@ namespace riser_sim {
 
 // Contact springs and dampers on each point below the level, as in force(); a clamped normal force
 // (the damper would pull) contributes nothing.
-bool Seabed::addStiffness(const Model& model, const Kinematics& kin, double, StiffnessBlocks& S) const {
+bool Seabed::addStiffness(const Model& model, const TermData* data, const Kinematics& kin, double, StiffnessBlocks& S) const {
+  const double* anchor = anchors(data);
   forEachContact(model, kin, [&](int j, int body, double s0, const Vec2& p, const Vec2& v) {
-    const Vec2 F = force(j, p, v, true);
-    const bool anchored = j < static_cast<int>(anchor_.size()) && std::isfinite(anchor_[j]);
+    const Vec2 F = force(anchor, j, p, v, true);
+    const bool anchored = anchor && std::isfinite(anchor[j]);
     const bool pressing = F.y() > 0.0;
     Mat2 Kp = Mat2::Zero(), Cp = Mat2::Zero();
     Kp(0, 0) = anchored ? spec_.stiffness_tangential : 0.0;
