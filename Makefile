@@ -4,7 +4,7 @@ ROOT := $(abspath .)
 WS := $(ROOT)/.ws
 SETUP := set +u; source $(WS)/devel/setup.bash
 
-.PHONY: deps build test sim bench figures demo modes clean
+.PHONY: deps build test sim bench soak many_risers figures demo modes clean
 
 deps:
 	@scripts/install_deps.sh
@@ -20,6 +20,15 @@ sim: build
 
 bench: build
 	@$(SETUP); bench/run_all.sh
+
+# An hour of simulated time of the J-lay scene through /clock: memory, step time, error bounds
+# -> out/soak/soak.csv, soak.txt (docs/ros_interface.md, "Soak"). ~15-20 min.
+soak: build
+	@bench/soak.sh
+
+# How many risers keep real time, as nodes and as nodelets -> out/bench/many_risers.csv. ~10-20 min.
+many_risers: build
+	@bench/many_risers.sh both
 
 # Lowest 4 mode shapes of the shipped paper scenes -> out/figures/modes_<scene>.png (docs/modal.md).
 modes: build

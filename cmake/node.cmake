@@ -16,11 +16,16 @@ add_dependencies(riser_sim_ros ${PROJECT_NAME}_generate_messages_cpp ${catkin_EX
 
 add_executable(riser_sim_node src/node/main.cpp)
 target_link_libraries(riser_sim_node riser_sim_ros)
-install(TARGETS riser_sim_node riser_sim_ros
+# Nodelets riser_sim/RiserSimNodelet and riser_sim/VesselMotionNodelet (nodelet_plugins.xml).
+add_library(riser_sim_nodelets SHARED src/node/riser_sim_nodelet.cpp src/node/vessel_motion_nodelet.cpp)
+target_link_libraries(riser_sim_nodelets riser_sim_ros ${catkin_LIBRARIES})
+install(TARGETS riser_sim_node riser_sim_ros riser_sim_nodelets
   RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION}
   LIBRARY DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION}
   ARCHIVE DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION})
-install(FILES launch/riser_sim.launch launch/two_risers.launch DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION}/launch)
+install(FILES launch/riser_sim.launch launch/two_risers.launch launch/riser_nodelet.launch launch/many_risers.launch
+  launch/riser_chain.launch DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION}/launch)
+install(FILES nodelet_plugins.xml DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION})
 install(FILES config/node_defaults.yaml DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION}/config)
 
 if(CATKIN_ENABLE_TESTING)
@@ -36,7 +41,7 @@ if(CATKIN_ENABLE_TESTING)
     get_filename_component(t ${test_file} NAME_WE)
     add_rostest_gtest(test_${t} test/ros/${t}.test test/ros/test_${t}.cpp)
     target_link_libraries(test_${t} riser_sim_ros ${catkin_LIBRARIES})
-    add_dependencies(test_${t} riser_sim_node)
+    add_dependencies(test_${t} riser_sim_node riser_sim_nodelets)
     target_compile_definitions(test_${t} PRIVATE RISER_SIM_NODE_BIN="$<TARGET_FILE:riser_sim_node>")
   endforeach()
   # Master restart and security checks: a script, not a rostest (it kills and restarts the master).

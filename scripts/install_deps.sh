@@ -6,7 +6,8 @@ PKGS=(build-essential cmake catkin ros-core-dev libroscpp-dev librostest-dev pyt
   ros-std-srvs libdiagnostic-msgs-dev ros-diagnostic-msgs ros-message-generation ros-message-runtime
   libeigen3-dev libyaml-cpp-dev libgtest-dev googletest python3-rosbag python3-matplotlib python3-numpy
   python3-yaml python3-geometry-msgs python3-visualization-msgs python3-tf2-msgs python3-diagnostic-msgs
-  python3-rostopic python3-rosservice python3-rosmaster python3-roslaunch)
+  python3-rostopic python3-rosservice python3-rosmaster python3-roslaunch
+  libnodeletlib-dev libnodelet-dev libnodeletlib-tools pluginlib-dev libclass-loader-dev)
 if [ "${RISER_SIM_GUI_DEPS:-0}" = 1 ]; then PKGS+=(rviz xvfb xauth ffmpeg); fi
 missing=()
 for p in "${PKGS[@]}"; do

@@ -12,6 +12,7 @@
 #pragma once
 #include <atomic>
 #include <condition_variable>
+#include <memory>
 #include <mutex>
 #include <set>
 #include <string>
@@ -46,5 +47,9 @@ class MasterWatch {
   std::atomic<long> reregistrations_{0};
   std::thread thread_;  // last: started once every other member exists
 };
+
+// The process's one MasterWatch for code that cannot own it (nodelets in a manager): the first caller
+// creates it; it stops when the last holder lets go (the last riser nodelet unloaded).
+std::shared_ptr<MasterWatch> sharedMasterWatch();
 
 }  // namespace riser_sim_ros

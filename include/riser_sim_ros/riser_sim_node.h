@@ -1,13 +1,15 @@
 // riser_sim_node: the riser simulated in real time (ROS time), driven by the vessel's pose.
 // See docs/ros_interface.md for topics, frames, parameters and services.
 //
-// Threads: ROS callbacks (vessel input, ~reset, tf listener) run on an AsyncSpinner and only copy
-// samples into a SampleBuffer; the integration loop runs on the thread that calls spin(): it drains
+// Threads: ROS callbacks (vessel input, ~reset, tf listener) only copy samples into a SampleBuffer; they
+// run on spin()'s AsyncSpinner (the node) or on a nodelet manager's worker threads (RiserSimNodelet).
+// The integration loop runs on the thread that calls run() (spin() calls it): it drains
 // the buffer, steps the simulator by the number of dt that elapsed in ROS time (capped), and publishes
 // whatever is due. Nothing in the stepping loop allocates; messages are sized once. ~modes has its own
 // callback queue and thread: it works on a copy of the static state (never the running simulator).
 #pragma once
 #include <array>
+#include <atomic>
 #include <chrono>
 #include <condition_variable>
 #include <memory>
@@ -41,11 +43,18 @@ riser_sim::Scene loadScene(const ros::NodeHandle& pnh);
 
 class RiserSimNode {
  public:
-  // Throws ParamError for a bad parameter or scene.
+  // Throws ParamError for a bad parameter or scene. The riser's name (diagnostics, log lines, default
+  // tf_prefix) is pnh's namespace: the node's name, or a nodelet's name inside its manager.
   RiserSimNode(ros::NodeHandle nh, ros::NodeHandle pnh);
   ~RiserSimNode();
-  // Runs the integration loop until ROS shuts down.
+  // Runs the integration loop on the calling thread until stop() or ROS shutdown. Whoever owns nh's and
+  // pnh's callback queues must serve them (spin(): an AsyncSpinner; a nodelet: its manager's threads).
+  void run();
+  // Makes run() return after its current cycle; callable from any thread.
+  void stop() { stop_ = true; }
+  // The standalone node: run() with an AsyncSpinner (2 threads) serving the global callback queue.
   void spin();
+  const std::string& name() const { return name_; }
 
  private:
   enum class Mode { kWaiting, kRunning, kDiverged, kStaticsFailed };
@@ -98,6 +107,7 @@ class RiserSimNode {
   ros::ServiceServer reset_srv_, modes_srv_;
   diagnostic_msgs::DiagnosticArray diag_;
 
+  std::atomic<bool> stop_{false};
   Mode mode_ = Mode::kWaiting;
   bool stalled_ = false;           // ROS time has not advanced for ~clock_timeout (wall)
   Clock::time_point last_advance_, next_stalled_diag_;
@@ -109,6 +119,9 @@ class RiserSimNode {
   ros::Time last_now_, last_received_, last_start_attempt_;
   Schedule tension_s_, state_s_, markers_s_, tf_s_, wrench_s_, diag_s_;
   Schedule* reference_ = nullptr;  // fastest data publisher: its period is "one publish period"
+  // Rate limits of repeated warnings, per riser (ROS_WARN_THROTTLE's limit is shared by every riser of
+  // a nodelet manager) and on wall time.
+  WarnThrottle waiting_warn_{5.0}, no_pose_warn_{5.0}, behind_warn_{5.0};
 
   // Statistics over the current diagnostics window.
   ros::Time win_ros_;

@@ -82,7 +82,9 @@ inline Eigen::Vector2d toPaper(const Eigen::Vector3d& w) { return Eigen::Vector2
 
 class VesselInput {
  public:
-  VesselInput(ros::NodeHandle& nh, const NodeParams& params, tf2_ros::Buffer& tf, SampleBuffer& out);
+  // `name` (the riser's) starts each log line.
+  VesselInput(ros::NodeHandle& nh, const NodeParams& params, tf2_ros::Buffer& tf, SampleBuffer& out,
+              const std::string& name);
   // Topic (pose/odom) or "tf <fixed> <- <vessel>" the input listens to, for messages.
   const std::string& source() const { return source_; }
   long accepted() const { return accepted_; }
@@ -99,6 +101,7 @@ class VesselInput {
   void reject(const std::string& why);
 
   const NodeParams& params_;
+  std::string name_;
   tf2_ros::Buffer& tf_;
   SampleBuffer& out_;
   ros::Subscriber sub_;
@@ -108,7 +111,7 @@ class VesselInput {
   ros::Time last_stamp_;
   std::string last_rejection_;
   std::atomic<long> accepted_{0}, rejected_{0};
-  WarnThrottle reject_warn_{2.0};
+  WarnThrottle reject_warn_{2.0}, tf_warn_{5.0}, plane_warn_{5.0};
 };
 
 }  // namespace riser_sim_ros

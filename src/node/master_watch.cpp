@@ -156,4 +156,16 @@ void MasterWatch::reregister() {
            ros::master::getURI().c_str(), pubs, subs, srvs, failures.c_str());
 }
 
+std::shared_ptr<MasterWatch> sharedMasterWatch() {
+  static std::mutex mutex;
+  static std::weak_ptr<MasterWatch> shared;
+  std::lock_guard<std::mutex> lock(mutex);
+  std::shared_ptr<MasterWatch> watch = shared.lock();
+  if (!watch) {
+    watch = std::make_shared<MasterWatch>();
+    shared = watch;
+  }
+  return watch;
+}
+
 }  // namespace riser_sim_ros

@@ -62,10 +62,10 @@ bool RiserSimNode::Schedule::due(const ros::Time& now) {
 }
 
 RiserSimNode::RiserSimNode(ros::NodeHandle nh, ros::NodeHandle pnh)
-    : nh_(nh), pnh_(pnh), params_(loadNodeParams(pnh, ros::this_node::getName())),
-      scene_(loadScene(pnh)), name_(ros::this_node::getName()) {
+    : nh_(nh), pnh_(pnh), params_(loadNodeParams(pnh, pnh.getNamespace())), scene_(loadScene(pnh)),
+      name_(pnh.getNamespace()) {
   if (scene_.top.type != "external" && scene_.top.type != "fixed")
-    ROS_WARN("riser_sim: ~scene/top/motion/type '%s' ignored: the node drives the top from the vessel",
+    ROS_WARN("%s: ~scene/top/motion/type '%s' ignored: the node drives the top from the vessel", name_.c_str(),
              scene_.top.type.c_str());
   // Catch what only building reveals (integrator, formulation, sizes) now, as a configuration error.
   try {
@@ -80,8 +80,11 @@ RiserSimNode::RiserSimNode(ros::NodeHandle nh, ros::NodeHandle pnh)
     throw ParamError("scene", what);
   }
 
-  tf_listener_ = std::make_unique<tf2_ros::TransformListener>(tf_buffer_, nh_);
-  input_ = std::make_unique<VesselInput>(nh_, params_, tf_buffer_, samples_);
+  // tf is only read for tf input or poses in another frame: k risers that each listened to /tf would
+  // each deserialise every riser's transforms (k^2 work).
+  if (params_.vessel_input == "tf" || params_.expected_frame != params_.fixed_frame)
+    tf_listener_ = std::make_unique<tf2_ros::TransformListener>(tf_buffer_, nh_);
+  input_ = std::make_unique<VesselInput>(nh_, params_, tf_buffer_, samples_, name_);
   tension_pub_ = pnh_.advertise<riser_sim::Tension>("tension", 5);
   state_pub_ = pnh_.advertise<riser_sim::LineState>("state", 5);
   markers_pub_ = pnh_.advertise<visualization_msgs::MarkerArray>("markers", 2);
@@ -114,9 +117,9 @@ RiserSimNode::RiserSimNode(ros::NodeHandle nh, ros::NodeHandle pnh)
   st.name = name_.substr(name_.find_first_not_of('/')) + ": riser simulation";
   st.hardware_id = scene_.name.empty() ? "riser_sim" : scene_.name;
 
-  ROS_INFO("riser_sim: scene '%s' (L = %.1f m, n = %d, dt = %g s); vessel input %s, hang-off offset [%g, %g, %g] m; "
+  ROS_INFO("%s: scene '%s' (L = %.1f m, n = %d, dt = %g s); vessel input %s, hang-off offset [%g, %g, %g] m; "
            "frames %s/rfe_<i> in %s",
-           scene_.name.c_str(), scene_.length, scene_.elements, scene_.solver.dt, input_->source().c_str(),
+           name_.c_str(), scene_.name.c_str(), scene_.length, scene_.elements, scene_.solver.dt, input_->source().c_str(),
            params_.hangoff_offset.x(), params_.hangoff_offset.y(), params_.hangoff_offset.z(),
            params_.tf_prefix.c_str(), params_.fixed_frame.c_str());
 }
@@ -129,16 +132,20 @@ RiserSimNode::~RiserSimNode() {
 void RiserSimNode::spin() {
   ros::AsyncSpinner spinner(2);
   spinner.start();
+  run();
+  spinner.stop();
+}
+
+void RiserSimNode::run() {
   const auto period = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(1.0 / params_.loop_rate));
   auto next = Clock::now();
-  while (ros::ok()) {
+  while (ros::ok() && !stop_) {
     cycle();
     next += period;
     const auto now = Clock::now();
     if (next < now) next = now;
     std::this_thread::sleep_until(next);
   }
-  spinner.stop();
   {
     std::lock_guard<std::mutex> lock(reset_mutex_);
     reset_done_ = true;
@@ -156,7 +163,7 @@ bool RiserSimNode::clockAdvanced(const ros::Time& now, Clock::time_point wall) {
                   (last_now_ - now).toSec(), now.toSec());
     clock_note_ = buf;
     ++clock_resets_;
-    ROS_WARN("riser_sim: %s: simulation reset, restarting from the statics at the next vessel pose", buf);
+    ROS_WARN("%s: %s: simulation reset, restarting from the statics at the next vessel pose", name_.c_str(), buf);
     // Keep the poses already stamped on the new timeline; drop the rest.
     const int n = samples_.drain(drained_);
     samples_.clear();
@@ -170,7 +177,7 @@ bool RiserSimNode::clockAdvanced(const ros::Time& now, Clock::time_point wall) {
   const bool advanced = !now.isZero() && now != last_now_;
   if (advanced) {
     if (stalled_) {
-      ROS_INFO("riser_sim: ROS time advances again after %.1f s (wall): simulation resumed",
+      ROS_INFO("%s: ROS time advances again after %.1f s (wall): simulation resumed", name_.c_str(),
                seconds(wall - last_advance_));
       stalled_ = false;
       diag_s_.restart(now);
@@ -180,7 +187,7 @@ bool RiserSimNode::clockAdvanced(const ros::Time& now, Clock::time_point wall) {
   } else if (!stalled_ && seconds(wall - last_advance_) > params_.clock_timeout) {
     stalled_ = true;
     next_stalled_diag_ = wall;
-    ROS_WARN("riser_sim: ROS time has not advanced for %.1f s of wall time (%s): simulation paused",
+    ROS_WARN("%s: ROS time has not advanced for %.1f s of wall time (%s): simulation paused", name_.c_str(),
              seconds(wall - last_advance_), now.isZero() ? "/use_sim_time set, no /clock yet" : "/clock stalled");
   }
   return advanced;
@@ -203,7 +210,7 @@ void RiserSimNode::cycle() {
   const int n = samples_.drain(drained_);
   if (n > 0) {
     if (mode_ == Mode::kRunning && (now - last_received_).toSec() > params_.pose_timeout)
-      ROS_INFO("riser_sim: valid vessel poses again after %.1f s without: tracking them", (now - last_received_).toSec());
+      ROS_INFO("%s: valid vessel poses again after %.1f s without: tracking them", name_.c_str(), (now - last_received_).toSec());
     last_received_ = drained_[n - 1].received;
   }
   switch (mode_) {
@@ -211,18 +218,23 @@ void RiserSimNode::cycle() {
     case Mode::kStaticsFailed:
       if (n > 0 && (mode_ == Mode::kWaiting || (now - last_start_attempt_).toSec() >= 1.0)) {
         std::string message;
-        if (start(drained_[n - 1], now, message)) ROS_INFO("riser_sim: %s", message.c_str());
-        else ROS_ERROR("riser_sim: %s (retrying at the next pose, at most once a second)", message.c_str());
+        if (start(drained_[n - 1], now, message)) ROS_INFO("%s: %s", name_.c_str(), message.c_str());
+        else ROS_ERROR("%s: %s (retrying at the next pose, at most once a second)", name_.c_str(), message.c_str());
       } else if (mode_ == Mode::kWaiting) {
-        ROS_WARN_THROTTLE(5.0, "riser_sim: waiting for the first valid vessel pose (%s)", input_->source().c_str());
+        long held = 0;
+        if (waiting_warn_.allow(held))
+          ROS_WARN("%s: waiting for the first valid vessel pose (%s)", name_.c_str(), input_->source().c_str());
       }
       break;
     case Mode::kRunning:
       for (int i = 0; i < n; ++i)
         motion_->addSample(simTime(drained_[i].stamp), toPaper(drained_[i].hangoff), sim_->time());
-      if ((now - last_received_).toSec() > params_.pose_timeout)
-        ROS_WARN_THROTTLE(5.0, "riser_sim: no valid vessel pose for %.1f s (~pose_timeout %.1f s): holding the last one",
-                          (now - last_received_).toSec(), params_.pose_timeout);
+      if ((now - last_received_).toSec() > params_.pose_timeout) {
+        long held = 0;
+        if (no_pose_warn_.allow(held))
+          ROS_WARN("%s: no valid vessel pose for %.1f s (~pose_timeout %.1f s): holding the last one", name_.c_str(),
+                   (now - last_received_).toSec(), params_.pose_timeout);
+      }
       integrate(now);
       if (mode_ == Mode::kRunning) publish(now);
       break;
@@ -311,8 +323,10 @@ void RiserSimNode::integrate(const ros::Time& now) {
     win_dropped_ += after;
     total_dropped_ += after;
     motion_->shiftSampleTimes(after);
-    ROS_WARN_THROTTLE(5.0, "riser_sim: integration slower than real time (dt %g s, n = %d): dropped %.3f s of backlog",
-                      dt, scene_.elements, after);
+    long held = 0;
+    if (behind_warn_.allow(held))
+      ROS_WARN("%s: integration slower than real time (dt %g s, n = %d): dropped %.3f s of backlog", name_.c_str(), dt,
+               scene_.elements, after);
   }
   const Clock::time_point t0 = Clock::now();
   for (long i = 0; i < n; ++i) {
@@ -368,8 +382,8 @@ void RiserSimNode::publish(const ros::Time& now) {
 void RiserSimNode::fail(const std::string& why) {
   mode_ = Mode::kDiverged;
   reason_ = why;
-  ROS_ERROR("riser_sim: integration diverged: %s. Publishing stopped; call %s/reset to restart from the current "
-            "vessel pose", why.c_str(), name_.c_str());
+  ROS_ERROR("%s: integration diverged: %s. Publishing stopped; call %s/reset to restart from the current "
+            "vessel pose", name_.c_str(), why.c_str(), name_.c_str());
 }
 
 void RiserSimNode::resetWindow(const ros::Time& now) {
@@ -482,7 +496,7 @@ bool RiserSimNode::onModes(riser_sim::Modes::Request& req, riser_sim::Modes::Res
   computeModesResponse(state->scene, state->kin, state->end_force, req.count, res);
   res.header.stamp = state->stamp;
   res.header.frame_id = params_.fixed_frame;
-  ROS_INFO("riser_sim: ~modes (count %d): %s (%.1f ms)", req.count, res.message.c_str(), seconds(Clock::now() - t0) * 1e3);
+  ROS_INFO("%s: ~modes (count %d): %s (%.1f ms)", name_.c_str(), req.count, res.message.c_str(), seconds(Clock::now() - t0) * 1e3);
   return true;
 }
 
@@ -518,7 +532,7 @@ void RiserSimNode::serveReset(const ros::Time& now) {
   } else {
     samples_.drain(drained_);  // older than s: the new start supersedes them
     ok = start(s, now, message);
-    ROS_INFO("riser_sim: ~reset: %s", message.c_str());
+    ROS_INFO("%s: ~reset: %s", name_.c_str(), message.c_str());
   }
   {
     std::lock_guard<std::mutex> lock(reset_mutex_);

@@ -101,8 +101,9 @@ bool WarnThrottle::allow(std::chrono::steady_clock::time_point now, long& suppre
   return true;
 }
 
-VesselInput::VesselInput(ros::NodeHandle& nh, const NodeParams& params, tf2_ros::Buffer& tf, SampleBuffer& out)
-    : params_(params), tf_(tf), out_(out) {
+VesselInput::VesselInput(ros::NodeHandle& nh, const NodeParams& params, tf2_ros::Buffer& tf, SampleBuffer& out,
+                         const std::string& name)
+    : params_(params), name_(name), tf_(tf), out_(out) {
   if (params.vessel_input == "pose") {
     sub_ = nh.subscribe("vessel/pose", 20, &VesselInput::onPose, this, ros::TransportHints().tcpNoDelay());
     source_ = sub_.getTopic();
@@ -124,8 +125,10 @@ void VesselInput::onTfTimer(const ros::TimerEvent&) {
   try {
     tr = tf_.lookupTransform(params_.fixed_frame, params_.vessel_frame, ros::Time(0));
   } catch (const tf2::TransformException& e) {
-    ROS_WARN_THROTTLE(5.0, "riser_sim: waiting for tf %s <- %s: %s", params_.fixed_frame.c_str(),
-                      params_.vessel_frame.c_str(), e.what());
+    long held = 0;
+    if (tf_warn_.allow(held))
+      ROS_WARN("%s: waiting for tf %s <- %s: %s", name_.c_str(), params_.fixed_frame.c_str(),
+               params_.vessel_frame.c_str(), e.what());
     return;
   }
   {
@@ -149,10 +152,10 @@ void VesselInput::reject(const std::string& why) {
   long suppressed = 0;
   if (reject_warn_.allow(suppressed)) {
     if (suppressed > 0)
-      ROS_WARN("riser_sim: vessel pose from %s ignored: %s (and %ld more ignored since the last warning; count "
-               "and last reason on /diagnostics)", source_.c_str(), why.c_str(), suppressed);
+      ROS_WARN("%s: vessel pose from %s ignored: %s (and %ld more ignored since the last warning; count "
+               "and last reason on /diagnostics)", name_.c_str(), source_.c_str(), why.c_str(), suppressed);
     else
-      ROS_WARN("riser_sim: vessel pose from %s ignored: %s", source_.c_str(), why.c_str());
+      ROS_WARN("%s: vessel pose from %s ignored: %s", name_.c_str(), source_.c_str(), why.c_str());
   }
 }
 
@@ -188,11 +191,11 @@ void VesselInput::handle(const std_msgs::Header& header, const geometry_msgs::Po
     if (why.empty()) last_stamp_ = header.stamp;
   }
   if (!why.empty()) return reject(why);
-  if (std::abs(s.hangoff.y()) > params_.max_out_of_plane)
-    ROS_WARN_THROTTLE(5.0,
-                      "riser_sim: hang-off point is %.2f m out of the riser's x-z plane (world y; ~max_out_of_plane "
-                      "%.2f m); it is projected onto the plane (y dropped)",
-                      s.hangoff.y(), params_.max_out_of_plane);
+  long held = 0;
+  if (std::abs(s.hangoff.y()) > params_.max_out_of_plane && plane_warn_.allow(held))
+    ROS_WARN("%s: hang-off point is %.2f m out of the riser's x-z plane (world y; ~max_out_of_plane %.2f m); it is "
+             "projected onto the plane (y dropped)",
+             name_.c_str(), s.hangoff.y(), params_.max_out_of_plane);
   ++accepted_;
   out_.push(s);
 }

@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# Load figure (issue 6): the largest number of risers that run at real-time factor >= 0.99, as separate
+# riser_sim_node processes and as nodelets in one manager, with the vessel at 100 Hz (bench/many_risers.py).
+# Scene: the paper's 500 m riser (config/scenes/paper_riser_500m.yaml: n = 50, rk4, dt = 1 ms, drag and
+# added mass), its top driven by the vessel. Private roscore; out/bench/many_risers.csv and logs.
+#   bench/many_risers.sh [nodes|nodelets|both] [window_s]       (~10-20 min for both; needs make build)
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+ws=${RISER_SIM_WS:-$root/.ws}
+modes=${1:-both}
+window=${2:-20}
+scene=${RISER_SIM_MANY_SCENE:-$root/config/scenes/paper_riser_500m.yaml}
+set +u
+source "$ws/devel/setup.bash"
+set -u
+[ -e "$ws/devel/lib/libriser_sim_nodelets.so" ] || { echo "many_risers: not built (run make build)" >&2; exit 1; }
+out="$root/out/bench"
+mkdir -p "$out"
+rm -f "$out/many_risers.csv"
+
+port=$(/usr/bin/python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')
+export ROS_MASTER_URI=http://127.0.0.1:$port
+export ROS_HOSTNAME=127.0.0.1
+roscore -p "$port" >"$out/many_risers_roscore.log" 2>&1 &
+core_pid=$!
+trap 'kill $core_pid 2>/dev/null; wait $core_pid 2>/dev/null' EXIT
+for _ in $(seq 100); do
+  /usr/bin/python3 -c 'import rosgraph, sys; sys.exit(0 if rosgraph.is_master_online() else 1)' 2>/dev/null && break
+  sleep 0.1
+done
+echo "many_risers: $(nproc) cores, load average $(cut -d' ' -f1-3 /proc/loadavg) at the start; scene $(basename "$scene")"
+[ "$modes" = both ] && modes="nodes nodelets"
+for m in $modes; do
+  /usr/bin/python3 "$root/bench/many_risers.py" --mode "$m" --scene "$scene" --window "$window" --out "$out"
+done
+echo "many_risers: load average $(cut -d' ' -f1-3 /proc/loadavg) at the end; wrote $out/many_risers.csv"
