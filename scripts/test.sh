@@ -4,7 +4,7 @@
 set -uo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 ws=${RISER_SIM_WS:-$root/.ws}
-"$root/scripts/build.sh" -j2 tests || { echo "0 passed, 1 failed"; exit 1; }
+"$root/scripts/build.sh" -j2 all tests || { echo "0 passed, 1 failed"; exit 1; }
 cd "$ws"
 rm -rf build/test_results
 set +u
