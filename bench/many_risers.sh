@@ -10,24 +10,12 @@ ws=${RISER_SIM_WS:-$root/.ws}
 modes=${1:-both}
 window=${2:-20}
 scene=${RISER_SIM_MANY_SCENE:-$root/config/scenes/paper_riser_500m.yaml}
-set +u
-source "$ws/devel/setup.bash"
-set -u
 [ -e "$ws/devel/lib/libriser_sim_nodelets.so" ] || { echo "many_risers: not built (run make build)" >&2; exit 1; }
 out="$root/out/bench"
 mkdir -p "$out"
 rm -f "$out/many_risers.csv"
 
-port=$(/usr/bin/python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')
-export ROS_MASTER_URI=http://127.0.0.1:$port
-export ROS_HOSTNAME=127.0.0.1
-roscore -p "$port" >"$out/many_risers_roscore.log" 2>&1 &
-core_pid=$!
-trap 'kill $core_pid 2>/dev/null; wait $core_pid 2>/dev/null' EXIT
-for _ in $(seq 100); do
-  /usr/bin/python3 -c 'import rosgraph, sys; sys.exit(0 if rosgraph.is_master_online() else 1)' 2>/dev/null && break
-  sleep 0.1
-done
+source "$root/bench/private_master.sh" "$out/many_risers_roscore.log"
 echo "many_risers: $(nproc) cores, load average $(cut -d' ' -f1-3 /proc/loadavg) at the start; scene $(basename "$scene")"
 [ "$modes" = both ] && modes="nodes nodelets"
 for m in $modes; do

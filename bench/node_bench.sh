@@ -9,9 +9,6 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 ws=${RISER_SIM_WS:-$root/.ws}
 window=${1:-10}
-set +u
-source "$ws/devel/setup.bash"
-set -u
 node_bin="$ws/devel/lib/riser_sim/riser_sim_node"
 [ -x "$node_bin" ] || { echo "node_bench: $node_bin not built (run make build)" >&2; exit 1; }
 out="$root/out/bench"
@@ -19,17 +16,7 @@ mkdir -p "$out"
 csv="$out/node.csv"
 rm -f "$csv"
 
-# A private master on a free port, so the benchmark never meets another ROS graph.
-port=$(/usr/bin/python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')
-export ROS_MASTER_URI=http://127.0.0.1:$port
-export ROS_HOSTNAME=127.0.0.1
-roscore -p "$port" >"$out/node_bench_roscore.log" 2>&1 &
-core_pid=$!
-trap 'kill $core_pid 2>/dev/null; wait $core_pid 2>/dev/null' EXIT
-for _ in $(seq 100); do
-  /usr/bin/python3 -c 'import rosgraph, sys; sys.exit(0 if rosgraph.is_master_online() else 1)' 2>/dev/null && break
-  sleep 0.1
-done
+source "$root/bench/private_master.sh" "$out/node_bench_roscore.log"
 
 status=0
 for spec in "40 2e-4" "100 1e-4"; do
