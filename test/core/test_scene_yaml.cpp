@@ -150,6 +150,21 @@ const BadScene kBadScenes[] = {
     {"{line: {length: 10, elements: 2, EA: 1, EI: 0, mass_per_length: 1, axial_flexibility: false}, "
      "bottom: {type: pinned, position: [8, -8]}, initial: {type: between_points}}",
      "bottom.position", "inextensible"},
+    // size limits (docs/scene_keys.md, "Limits"): an error, not an out-of-memory or an endless run
+    {"{line: {length: 1, elements: 2001, EA: 1, EI: 0, mass_per_length: 1}}", "line.elements",
+     "must be <= 2000, got 2001"},
+    {"{line: {length: 1, elements: 1000000000, EA: 1, EI: 0, mass_per_length: 1}}", "line.elements",
+     "must be <= 2000, got 1000000000"},
+    {"{line: {length: 1, elements: 1001, EA: 1, EI: 0, mass_per_length: 1}, solver: {integrator: rosenbrock2}}",
+     "line.elements", "must be <= 1000 with a dense rosenbrock2 Jacobian"},
+    {"{line: {length: 1, elements: 1001, EA: 1, EI: 0, mass_per_length: 1}, "
+     "solver: {integrator: midpoint, formulation: recursive, jacobian: dense}}",
+     "line.elements", "must be <= 1000 with a dense midpoint Jacobian"},
+    {"{line: {length: 1, elements: 1, EA: 1, EI: 0, mass_per_length: 1}, solver: {dt: 1e-6}, run: {duration: 1e4}}",
+     "run.duration", "is 1e+10 steps of solver.dt (1e-06 s), more than 1e+09"},
+    // a key that is not a name
+    {"{line: {length: 1, elements: 1, EA: 1, EI: 0, mass_per_length: 1, [a]: 1}}", "line",
+     "keys must be plain names, got a list of 1 item"},
     // ignored keys of other variants are still type-checked
     {"{line: {length: 1, elements: 1, EA: 1, EI: 0, mass_per_length: 1}, top: {motion: {type: fixed, period: x}}}",
      "top.motion.period", "expected a number"},
@@ -322,6 +337,11 @@ TEST(SceneYaml, MalformedOverrides) {
       {"line.elements=", "line.elements", "has no value"},
       {"line.elements=[1", "line.elements", "cannot parse override value"},
       {"line.length.x=1", "line.length", "is a value, not a section"},
+      // aliases: a cycle, and 8^6 leaves from 50 nodes ("billion laughs")
+      {"line=&a [*a]", "line", "override value is too large"},
+      {"line={a: &a [1,1,1,1,1,1,1,1], b: &b [*a,*a,*a,*a,*a,*a,*a,*a], c: &c [*b,*b,*b,*b,*b,*b,*b,*b], "
+       "d: &d [*c,*c,*c,*c,*c,*c,*c,*c], e: &e [*d,*d,*d,*d,*d,*d,*d,*d], f: [*e,*e,*e,*e,*e,*e,*e,*e]}",
+       "line", "override value is too large"},
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(c.assignment);
