@@ -4,7 +4,7 @@ ROOT := $(abspath .)
 WS := $(ROOT)/.ws
 SETUP := set +u; source $(WS)/devel/setup.bash
 
-.PHONY: deps build test sim bench figures demo modes clean
+.PHONY: deps build test test-sanitize fuzz fuzz-replay sim bench figures demo modes clean
 
 deps:
 	@scripts/install_deps.sh
@@ -14,6 +14,19 @@ build: deps
 
 test: deps
 	@scripts/test.sh
+
+# The core's and the CLI's gtests under ASan + UBSan (part of `make test` too; docs/hardening.md).
+test-sanitize: deps
+	@scripts/test_sanitize.sh
+
+# libFuzzer on the scene loader for FUZZ_SECONDS (default 120); crashers -> out/fuzz/crashers.
+FUZZ_SECONDS ?= 120
+fuzz: deps
+	@$(MAKE) --no-print-directory -f test/fuzz/Makefile run FUZZ_SECONDS=$(FUZZ_SECONDS)
+
+# The fuzzer over its seeds and regressions once, no mutation.
+fuzz-replay: deps
+	@$(MAKE) --no-print-directory -f test/fuzz/Makefile replay
 
 sim: build
 	@$(SETUP); bench/paper_table1.py --sim
