@@ -26,6 +26,7 @@ class SceneError : public std::runtime_error {
 constexpr int kMaxSceneElements = 2000;          // line.elements
 constexpr int kMaxDenseJacobianElements = 1000;  // line.elements with a dense implicit Jacobian
 constexpr double kMaxSceneSteps = 1e9;           // run.duration / solver.dt
+constexpr double kMaxSceneNumber = 1e15;         // |every number|: larger ones overflow the forces
 
 // Parses and validates a scene. Throws SceneError.
 Scene parseScene(const YAML::Node& root);

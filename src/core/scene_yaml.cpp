@@ -78,6 +78,8 @@ double toNumber(const YAML::Node& node, const std::string& key) {
   if (!node.IsScalar() || !YAML::convert<double>::decode(node, v))
     throw SceneError(key, "expected a number, got " + describe(node));
   if (!std::isfinite(v)) throw SceneError(key, "must be a finite number, got " + describe(node));
+  if (std::abs(v) > kMaxSceneNumber)
+    throw SceneError(key, "must be within +-" + formatNumber(kMaxSceneNumber) + ", got " + formatNumber(v));
   return v;
 }
 
@@ -127,8 +129,8 @@ class Section {
     std::vector<std::string> seen;
     for (const auto& kv : node_) {
       if (!kv.first.IsScalar())
-        throw SceneError(path_, (path_.empty() ? "top-level keys" : "keys") + std::string(" must be plain names, got ") +
-                                    describe(kv.first) + where(kv.first));
+        throw SceneError(path_, std::string(path_.empty() ? "top-level keys" : "keys") +
+                                    " must be plain names, got " + describe(kv.first) + where(kv.first));
       const std::string k = kv.first.Scalar();
       if (std::find(seen.begin(), seen.end(), k) != seen.end()) throw SceneError(key(k), "duplicate key");
       seen.push_back(k);
@@ -203,6 +205,14 @@ void parseCrossSection(const Section& line, Scene& s) {
     const double rho = line.number("density");
     requirePositive(line.key("density"), rho);
     s.line = LineProperties::fromGeometry(outer, inner, E, rho);
+    // Each value > 0 and yet a product may round to 0 (1e-200 m): name the key that does it.
+    if (!(s.line.wallArea() > 0.0))
+      throw SceneError(line.key(inner > 0.0 ? "inner_diameter" : "outer_diameter"),
+                       "leaves a wall area of 0 (rounds to 0 in double precision)");
+    if (!(s.line.mass_per_length > 0.0))
+      throw SceneError(line.key("density"), "is too small: mass per length rounds to 0");
+    if (s.options.axial_flexibility && !(s.line.EA > 0.0))
+      throw SceneError(line.key("youngs_modulus"), "is too small: EA rounds to 0");
   } else {
     s.line = LineProperties();
     s.line.outer_diameter = outer;
@@ -418,7 +428,8 @@ void parseSolver(const Section& root, Scene& s) {
     throw SceneError(solver.key("jacobian"),
                      "'structured' needs solver.formulation independent or recursive (absolute has none)");
   const bool implicit = dynamic_cast<ImplicitIntegrator*>(makeIntegrator(s.solver.integrator).get()) != nullptr;
-  const bool dense = s.solver.jacobian == "dense" || (s.solver.jacobian == "auto" && s.solver.formulation == "absolute");
+  const bool dense =
+      s.solver.jacobian == "dense" || (s.solver.jacobian == "auto" && s.solver.formulation == "absolute");
   if (implicit && dense && s.elements > kMaxDenseJacobianElements)
     throw SceneError("line.elements", "must be <= " + std::to_string(kMaxDenseJacobianElements) + " with a dense " +
                                           s.solver.integrator + " Jacobian (O(n^2) memory, O(n^3) time), got " +

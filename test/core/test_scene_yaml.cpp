@@ -162,6 +162,20 @@ const BadScene kBadScenes[] = {
      "line.elements", "must be <= 1000 with a dense midpoint Jacobian"},
     {"{line: {length: 1, elements: 1, EA: 1, EI: 0, mass_per_length: 1}, solver: {dt: 1e-6}, run: {duration: 1e4}}",
      "run.duration", "is 1e+10 steps of solver.dt (1e-06 s), more than 1e+09"},
+    {"{line: {length: 1e300, elements: 1, EA: 1, EI: 0, mass_per_length: 1}}", "line.length",
+     "must be within +-1e+15, got 1e+300"},
+    {"{line: {length: 1, elements: 1, EA: 1, EI: 0, mass_per_length: 1}, "
+     "top: {motion: {type: sinusoid, amplitude: [-2e15, 0], period: 1}}}",
+     "top.motion.amplitude[0]", "must be within +-1e+15, got -2e+15"},
+    // positive values whose products round to 0
+    {"{line: {length: 1, elements: 1, outer_diameter: 1e-200, youngs_modulus: 1e11, density: 1}}",
+     "line.outer_diameter", "leaves a wall area of 0"},
+    {"{line: {length: 1, elements: 1, outer_diameter: 0.1, inner_diameter: 0.09999999999999999, youngs_modulus: 1e11,"
+     " density: 1}}", "line.inner_diameter", "leaves a wall area of 0"},
+    {"{line: {length: 1, elements: 1, outer_diameter: 1e-100, youngs_modulus: 1e11, density: 1e-300}}", "line.density",
+     "mass per length rounds to 0"},
+    {"{line: {length: 1, elements: 1, outer_diameter: 1e-100, youngs_modulus: 1e-300, density: 1}}",
+     "line.youngs_modulus", "EA rounds to 0"},
     // a key that is not a name
     {"{line: {length: 1, elements: 1, EA: 1, EI: 0, mass_per_length: 1, [a]: 1}}", "line",
      "keys must be plain names, got a list of 1 item"},
@@ -442,4 +456,20 @@ TEST(SceneYaml, EveryShippedSceneParsesAndBuilds) {
 int main(int argc, char** argv) {
   testing::InitGoogleTest(&argc, argv);
   return RUN_ALL_TESTS();
+}
+
+// Values the loader would stop can still reach buildSimulator from code (or combine beyond double
+// range within the limits): the run is refused rather than started from non-finite forces.
+TEST(SceneYaml, BuildRefusesNonFiniteInitialForces) {
+  Scene s = parse("{line: {length: 10, elements: 4, EA: 1e6, EI: 0, mass_per_length: 1}}");
+  s.top.type = "sinusoid";
+  s.top.amplitude = Vec2(1e300, 0.0);
+  s.top.period = 1e-300;  // acceleration amplitude ~1e300 * (2 pi 1e300)^2 = inf
+  try {
+    buildSimulator(s);
+    FAIL() << "no error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("initial: the initial state or its forces are not finite", 0), 0u)
+        << e.what();
+  }
 }
