@@ -207,7 +207,7 @@ void parseCrossSection(const Section& line, Scene& s) {
     s.line = LineProperties::fromGeometry(outer, inner, E, rho);
     // Each value > 0 and yet a product may round to 0 (1e-200 m): name the key that does it.
     if (!(s.line.wallArea() > 0.0))
-      throw SceneError(line.key(inner > 0.0 ? "inner_diameter" : "outer_diameter"),
+      throw SceneError(line.key(M_PI / 4.0 * outer * outer > 0.0 ? "inner_diameter" : "outer_diameter"),
                        "leaves a wall area of 0 (rounds to 0 in double precision)");
     if (!(s.line.mass_per_length > 0.0))
       throw SceneError(line.key("density"), "is too small: mass per length rounds to 0");

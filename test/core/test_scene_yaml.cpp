@@ -170,8 +170,8 @@ const BadScene kBadScenes[] = {
     // positive values whose products round to 0
     {"{line: {length: 1, elements: 1, outer_diameter: 1e-200, youngs_modulus: 1e11, density: 1}}",
      "line.outer_diameter", "leaves a wall area of 0"},
-    {"{line: {length: 1, elements: 1, outer_diameter: 0.1, inner_diameter: 0.09999999999999999, youngs_modulus: 1e11,"
-     " density: 1}}", "line.inner_diameter", "leaves a wall area of 0"},
+    {"{line: {length: 1, elements: 1, outer_diameter: 1e-155, inner_diameter: 9.999999999999999e-156, "
+     "youngs_modulus: 1e11, density: 1}}", "line.inner_diameter", "leaves a wall area of 0"},  // same square
     {"{line: {length: 1, elements: 1, outer_diameter: 1e-100, youngs_modulus: 1e11, density: 1e-300}}", "line.density",
      "mass per length rounds to 0"},
     {"{line: {length: 1, elements: 1, outer_diameter: 1e-100, youngs_modulus: 1e-300, density: 1}}",
