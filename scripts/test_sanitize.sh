@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The core's and the CLI's gtests under AddressSanitizer + UndefinedBehaviorSanitizer (gcc, any finding
 # aborts), built without catkin (RISER_SIM_CORE_ONLY) in its own directory. Eigen's and libstdc++'s
-# bounds assertions are on too (no NDEBUG, _GLIBCXX_ASSERTIONS).
+# bounds assertions are on too (no NDEBUG, _GLIBCXX_ASSERTIONS). -O1 (RISER_SIM_SANITIZE_OPT): compiles ~1/3
+# faster than -O2 and the tests ran no slower.
 #   scripts/test_sanitize.sh [RESULTS_DIR]
 # Writes one JUnit XML per test binary to RESULTS_DIR (sanitize-<test>.xml; a binary stopped by a
 # sanitizer gets a failing one), prints "N passed, N failed" and exits non-zero on any failure.
@@ -14,7 +15,8 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 ws=${RISER_SIM_WS:-$root/.ws}
 build=${RISER_SIM_SANITIZE_BUILD:-$ws/sanitize}
 results=${1:-$build/test_results}
-flags="-O2 -g1 -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize-recover=all -D_GLIBCXX_ASSERTIONS"
+flags="${RISER_SIM_SANITIZE_OPT:--O1} -g1 -fno-omit-frame-pointer -D_GLIBCXX_ASSERTIONS"
+flags+=" -fsanitize=address,undefined -fno-sanitize-recover=all"
 
 cmake -S "$root" -B "$build" -DRISER_SIM_CORE_ONLY=ON -DCMAKE_BUILD_TYPE=Sanitize \
   -DCMAKE_CXX_FLAGS_SANITIZE="$flags" -DCMAKE_EXE_LINKER_FLAGS_SANITIZE="-fsanitize=address,undefined" \
