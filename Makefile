@@ -4,7 +4,7 @@ ROOT := $(abspath .)
 WS := $(ROOT)/.ws
 SETUP := set +u; source $(WS)/devel/setup.bash
 
-.PHONY: deps build test sim bench soak many_risers figures demo modes clean
+.PHONY: deps fuzz-deps build test test-sanitize fuzz fuzz-replay sim bench soak many_risers figures demo modes clean
 
 deps:
 	@scripts/install_deps.sh
@@ -12,8 +12,25 @@ deps:
 build: deps
 	@scripts/build.sh -j2
 
-test: deps
+# Every test: gtests, rostests, the core's gtests under sanitizers, a 30 s scene fuzz (docs/hardening.md).
+test: fuzz-deps
 	@scripts/test.sh
+
+# The core's and the CLI's gtests under ASan + UBSan (part of `make test` too; docs/hardening.md).
+test-sanitize: deps
+	@scripts/test_sanitize.sh
+
+# libFuzzer on the scene loader for FUZZ_SECONDS (default 120); crashers -> out/fuzz/crashers.
+FUZZ_SECONDS ?= 120
+fuzz: fuzz-deps
+	@$(MAKE) --no-print-directory -f test/fuzz/Makefile run FUZZ_SECONDS=$(FUZZ_SECONDS)
+
+# The fuzzer over its seeds and regressions once, no mutation.
+fuzz-replay: fuzz-deps
+	@$(MAKE) --no-print-directory -f test/fuzz/Makefile replay
+
+fuzz-deps:
+	@RISER_SIM_FUZZ_DEPS=1 scripts/install_deps.sh
 
 sim: build
 	@$(SETUP); bench/paper_table1.py --sim

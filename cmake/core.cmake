@@ -42,3 +42,9 @@ if(CATKIN_ENABLE_TESTING)
     target_compile_definitions(${test_name} PRIVATE RISER_SIM_SOURCE_DIR="${CMAKE_CURRENT_SOURCE_DIR}")
   endforeach()
 endif()
+
+# The scene fuzzer's replay (test/fuzz/): its input path is compiled into the regression test.
+if(CATKIN_ENABLE_TESTING)
+  target_sources(test_scene_fuzz_regressions PRIVATE test/fuzz/scene_exercise.cpp)
+  target_include_directories(test_scene_fuzz_regressions PRIVATE test/fuzz)
+endif()

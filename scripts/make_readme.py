@@ -14,6 +14,7 @@ PARTS = [  # (file, title in the README or None to keep the file's own top headi
     ("modal.md", "Modal analysis"),
     ("formulations.md", "Formulations: speed against n"),
     ("integrators.md", "Integrators: speed against accuracy"),
+    ("hardening.md", None),
     ("limitations.md", None),
 ]
 

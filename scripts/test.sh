@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Builds and runs every test (gtest + rostest); exits non-zero on any failure and ends with
-# "N passed, N failed".
+# Builds and runs every test (gtest + rostest, the core's gtests under sanitizers, a short scene fuzz);
+# exits non-zero on any failure and ends with "N passed, N failed".
 set -uo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 ws=${RISER_SIM_WS:-$root/.ws}
@@ -12,11 +12,40 @@ source devel/setup.bash
 catkin_make -DPYTHON_EXECUTABLE=/usr/bin/python3 run_tests -j1 >"$ws/run_tests.log" 2>&1
 rc_run=$?
 grep -E "^\[ +(RUN|OK|FAILED|PASSED) +\]|FAILURE|Error|error:" "$ws/run_tests.log" | grep -v "^\[ RUN" | tail -n 200
+# The core's and the CLI's gtests again under ASan + UBSan (docs/hardening.md); their JUnit files go
+# next to catkin's, so the line below counts them. RISER_SIM_SANITIZE=0 skips this step.
+rc_san=0
+if [ "${RISER_SIM_SANITIZE:-1}" != 0 ]; then
+  "$root/scripts/test_sanitize.sh" "$ws/build/test_results/sanitize" >"$ws/test_sanitize.log" 2>&1
+  rc_san=$?
+  grep -E "^sanitize: |ERROR: |runtime error:" "$ws/test_sanitize.log" | head -n 40
+  echo "sanitizers: $(tail -n 1 "$ws/test_sanitize.log") (see $ws/test_sanitize.log)"
+fi
+# A short libFuzzer run on the scene loader (docs/hardening.md): builds out/fuzz/fuzz_scene (clang-14, installed
+# by make test) and fuzzes from the seeds and regressions for RISER_SIM_FUZZ_SECONDS (default 30; 0 skips)
+# with a fixed seed, so a failure reproduces. Counted as one test case.
+rc_fuzz=0
+fuzz_s=${RISER_SIM_FUZZ_SECONDS:-30}
+if [ "$fuzz_s" != 0 ]; then
+  make -C "$root" --no-print-directory -f test/fuzz/Makefile run FUZZ_SECONDS="$fuzz_s" FUZZ_FLAGS=-seed=1 \
+    >"$ws/fuzz.log" 2>&1
+  rc_fuzz=$?
+  mkdir -p build/test_results/fuzz
+  failure=""
+  if [ $rc_fuzz -ne 0 ]; then
+    failure="<failure message=\"exit $rc_fuzz: see $ws/fuzz.log\"/>"
+    grep -E "scene fuzz defect|ERROR: |runtime error:|Test unit written|fuzz: " "$ws/fuzz.log" | head -n 20
+  fi
+  printf '%s\n' '<?xml version="1.0" encoding="UTF-8"?>' "<testsuites><testsuite name=\"fuzz\" tests=\"1\">" \
+    "<testcase name=\"scene_${fuzz_s}s\" classname=\"fuzz\">$failure</testcase></testsuite></testsuites>" \
+    >build/test_results/fuzz/fuzz_scene.xml
+  echo "fuzz: $(grep -E "^Done [0-9]+ runs" "$ws/fuzz.log" | tail -n 1) (see $ws/fuzz.log)"
+fi
 /usr/bin/python3 "$root/scripts/count_results.py" build/test_results
 rc_count=$?
 catkin_test_results build/test_results >/dev/null 2>&1
 rc_res=$?
-if [ $rc_run -ne 0 ] || [ $rc_res -ne 0 ] || [ $rc_count -ne 0 ]; then
+if [ $rc_run -ne 0 ] || [ $rc_res -ne 0 ] || [ $rc_count -ne 0 ] || [ $rc_san -ne 0 ] || [ $rc_fuzz -ne 0 ]; then
   echo "(see $ws/run_tests.log)"
   /usr/bin/python3 "$root/scripts/count_results.py" build/test_results --line-only
   exit 1

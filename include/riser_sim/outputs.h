@@ -1,6 +1,7 @@
 // What the simulator reports after every step (issue: points, angles, elongations, tension,
 // bending moments, reactions at both ends, energy, constraint error).
 #pragma once
+#include <cmath>
 #include <vector>
 
 #include "riser_sim/types.h"
@@ -25,5 +26,19 @@ struct LineOutputs {
   double work_in = 0.0;               // work done on the line by the top motion and non-conservative terms [J]
   double constraint_error = 0.0;      // largest joint-constraint violation [m]
 };
+
+// Every output is finite (what may be published).
+inline bool allFinite(const LineOutputs& o) {
+  for (const auto& p : o.points)
+    if (!p.allFinite()) return false;
+  for (const auto* v : {&o.angles, &o.elongations, &o.axial_force, &o.arc_length, &o.bending_moment})
+    for (double x : *v)
+      if (!std::isfinite(x)) return false;
+  if (!o.top_force.allFinite() || !o.bottom_force.allFinite()) return false;
+  for (double x : {o.t, o.top_tension, o.bottom_tension, o.max_tension, o.kinetic_energy, o.potential_energy,
+                   o.work_in, o.constraint_error})
+    if (!std::isfinite(x)) return false;
+  return true;
+}
 
 }  // namespace riser_sim

@@ -21,10 +21,20 @@ class SceneError : public std::runtime_error {
   std::string key_;
 };
 
+// Size limits of a loaded scene (docs/scene_keys.md, "Limits"): the static initial state is a dense
+// Newton solve on ~2n unknowns, the dense implicit Jacobian four p x p matrices (p ~ 4n on absolute).
+constexpr int kMaxSceneElements = 2000;          // line.elements
+constexpr int kMaxDenseJacobianElements = 1000;  // line.elements with a dense implicit Jacobian
+constexpr double kMaxSceneSteps = 1e9;           // run.duration / solver.dt
+constexpr double kMaxSceneNumber = 1e15;         // |every number|: larger ones overflow the forces
+
 // Parses and validates a scene. Throws SceneError.
 Scene parseScene(const YAML::Node& root);
 // Reads FILE, applies "key.path=value" overrides (value parsed as YAML), parses. Throws SceneError.
 Scene loadSceneFile(const std::string& path, const std::vector<std::string>& overrides = {});
+// The same for scene text; SOURCE names it in syntax errors ("SOURCE:line:column: ...").
+Scene loadSceneText(const std::string& text, const std::string& source,
+                    const std::vector<std::string>& overrides = {});
 // Applies one "key.path=value" override to a YAML tree. Throws SceneError.
 void applyOverride(YAML::Node& root, const std::string& assignment);
 

@@ -8,6 +8,7 @@
 #include <cstring>
 #include <memory>
 #include <time.h>
+#include <sstream>
 
 #include "cli_options.h"
 #include "modal_output.h"
@@ -75,6 +76,11 @@ int main(int argc, char** argv) {
       return fail(kExitBadInput, "--probe-rfe: rfe " + std::to_string(k) + " does not exist (rfes 0.." +
                                      std::to_string(scene.elements) + ", line.elements = " +
                                      std::to_string(scene.elements) + ")");
+  if (!(scene.duration / scene.solver.dt <= kMaxSceneSteps)) {  // run.duration itself is checked by the loader
+    std::ostringstream why;
+    why << "--duration: " << scene.duration / scene.solver.dt << " steps of solver.dt, more than " << kMaxSceneSteps;
+    return fail(kExitBadInput, why.str());
+  }
   info("scene '%s': n = %d, dt = %g s, %s/%s, duration %g s", scene.name.c_str(), scene.elements, scene.solver.dt,
        scene.solver.integrator.c_str(), scene.solver.formulation.c_str(), scene.duration);
   if (scene.top.type == "external") info("top.motion.type external: the top is held at top.position offline");

@@ -4,8 +4,10 @@
 
 namespace riser_sim {
 
+// ldlt_ is sized in the initialiser list: assigning a sized temporary copied its uninitialised m_info
+// (Eigen 3.4's LDLT(Index); UBSan: invalid enum load).
 IndependentFormulation::IndependentFormulation(const Model& model, double stabilization)
-    : ChainFormulation(model, stabilization) {
+    : ChainFormulation(model, stabilization), ldlt_(positionSize()) {
   const int nt = positionSize(), nb = model.bodies();
   Mii_.setZero(nt, nt);
   W_.setZero(2, nt);
@@ -13,7 +15,6 @@ IndependentFormulation::IndependentFormulation(const Model& model, double stabil
   X_.setZero(nt, 2);
   rhs_.setZero(nt);
   qdd_.setZero(nt);
-  ldlt_ = Eigen::LDLT<MatX>(nt);
   abias_.assign(nb + 1, Vec2::Zero());
   f_.assign(nb, Vec4::Zero());
   A_dd_.assign(nb + 1, Vec2::Zero());

@@ -84,6 +84,11 @@ std::unique_ptr<Simulator> buildSimulator(const Scene& scene, StaticsResult* sta
   auto sim = std::make_unique<Simulator>(model, buildTopMotion(scene.top), scene.solver);
   // A pinned bottom that the statics did not place is held where the initial state puts it.
   sim->setInitialState(st.kin, 0.0);
+  // Values within the loader's limits can still combine into forces beyond double range (an extreme
+  // sinusoid, stabilisation or drag): such a run never starts, so nothing non-finite is published.
+  if (!sim->state().allFinite() || !allFinite(sim->outputs()))
+    throw std::runtime_error("initial: the initial state or its forces are not finite (NaN/Inf): the scene's values "
+                             "combine beyond double range");
   if (statics) *statics = st;
   return sim;
 }

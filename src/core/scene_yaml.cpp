@@ -11,6 +11,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "riser_sim/implicit_integrators.h"
 #include "riser_sim/integrator.h"
 
 namespace riser_sim {
@@ -42,6 +43,13 @@ std::string describe(const YAML::Node& node) {
   return "'" + node.Scalar() + "'";
 }
 
+// " (line L, column C)" of a node read from text, "" for one built in code or copied from an override.
+std::string where(const YAML::Node& node) {
+  const YAML::Mark m = node.Mark();
+  if (m.is_null() || m.line < 0) return "";
+  return " (line " + std::to_string(m.line + 1) + ", column " + std::to_string(m.column + 1) + ")";
+}
+
 size_t editDistance(const std::string& a, const std::string& b) {
   std::vector<size_t> row(b.size() + 1);
   for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
@@ -70,6 +78,8 @@ double toNumber(const YAML::Node& node, const std::string& key) {
   if (!node.IsScalar() || !YAML::convert<double>::decode(node, v))
     throw SceneError(key, "expected a number, got " + describe(node));
   if (!std::isfinite(v)) throw SceneError(key, "must be a finite number, got " + describe(node));
+  if (std::abs(v) > kMaxSceneNumber)
+    throw SceneError(key, "must be within +-" + formatNumber(kMaxSceneNumber) + ", got " + formatNumber(v));
   return v;
 }
 
@@ -118,7 +128,9 @@ class Section {
                                             : "expected a map of keys, got " + describe(node_));
     std::vector<std::string> seen;
     for (const auto& kv : node_) {
-      if (!kv.first.IsScalar()) throw SceneError(path_, "keys must be plain names, got " + describe(kv.first));
+      if (!kv.first.IsScalar())
+        throw SceneError(path_, std::string(path_.empty() ? "top-level keys" : "keys") +
+                                    " must be plain names, got " + describe(kv.first) + where(kv.first));
       const std::string k = kv.first.Scalar();
       if (std::find(seen.begin(), seen.end(), k) != seen.end()) throw SceneError(key(k), "duplicate key");
       seen.push_back(k);
@@ -193,6 +205,14 @@ void parseCrossSection(const Section& line, Scene& s) {
     const double rho = line.number("density");
     requirePositive(line.key("density"), rho);
     s.line = LineProperties::fromGeometry(outer, inner, E, rho);
+    // Each value > 0 and yet a product may round to 0 (1e-200 m): name the key that does it.
+    if (!(s.line.wallArea() > 0.0))
+      throw SceneError(line.key(M_PI / 4.0 * outer * outer > 0.0 ? "inner_diameter" : "outer_diameter"),
+                       "leaves a wall area of 0 (rounds to 0 in double precision)");
+    if (!(s.line.mass_per_length > 0.0))
+      throw SceneError(line.key("density"), "is too small: mass per length rounds to 0");
+    if (s.options.axial_flexibility && !(s.line.EA > 0.0))
+      throw SceneError(line.key("youngs_modulus"), "is too small: EA rounds to 0");
   } else {
     s.line = LineProperties();
     s.line.outer_diameter = outer;
@@ -218,6 +238,10 @@ void parseLine(const Section& root, Scene& s) {
   requirePositive(line.key("length"), s.length);
   s.elements = line.integer("elements");
   if (s.elements < 1) throw SceneError(line.key("elements"), "must be >= 1, got " + std::to_string(s.elements));
+  if (s.elements > kMaxSceneElements)
+    throw SceneError(line.key("elements"), "must be <= " + std::to_string(kMaxSceneElements) + ", got " +
+                                               std::to_string(s.elements) + " (the static initial state is a dense "
+                                               "solve: O(n^2) memory, O(n^3) time)");
   s.options.bending = line.boolean("bending", true);
   s.options.axial_flexibility = line.boolean("axial_flexibility", true);
 
@@ -404,12 +428,24 @@ void parseSolver(const Section& root, Scene& s) {
   if (s.solver.jacobian == "structured" && s.solver.formulation == "absolute")
     throw SceneError(solver.key("jacobian"),
                      "'structured' needs solver.formulation independent or recursive (absolute has none)");
+  const bool implicit = dynamic_cast<ImplicitIntegrator*>(makeIntegrator(s.solver.integrator).get()) != nullptr;
+  const bool dense =
+      s.solver.jacobian == "dense" || (s.solver.jacobian == "auto" && s.solver.formulation == "absolute");
+  if (implicit && dense && s.elements > kMaxDenseJacobianElements)
+    throw SceneError("line.elements", "must be <= " + std::to_string(kMaxDenseJacobianElements) + " with a dense " +
+                                          s.solver.integrator + " Jacobian (O(n^2) memory, O(n^3) time), got " +
+                                          std::to_string(s.elements) +
+                                          "; use solver.formulation recursive or independent (structured solves)");
 }
 
 void parseRun(const Section& root, Scene& s) {
   const Section run = root.section("run", {"duration"});
   s.duration = run.number("duration", 20.0);
   requirePositive(run.key("duration"), s.duration);
+  if (!(s.duration / s.solver.dt <= kMaxSceneSteps))
+    throw SceneError(run.key("duration"), "is " + formatNumber(s.duration / s.solver.dt) + " steps of solver.dt (" +
+                                              formatNumber(s.solver.dt) + " s), more than " +
+                                              formatNumber(kMaxSceneSteps));
 }
 
 // Checks that need more than one section.
@@ -450,16 +486,21 @@ const SectionEntry kSections[] = {
 };
 
 // A copy of an override value without the parser's marks (they would point into the --set text).
-YAML::Node plainCopy(const YAML::Node& n) {
+// Aliases can make the tree a cycle (&a [*a]) or exponentially large: the copy is bounded.
+constexpr int kMaxOverrideNodes = 10000, kMaxOverrideDepth = 64;
+YAML::Node plainCopy(const YAML::Node& n, const std::string& path, int& budget, int depth = 0) {
+  if (--budget < 0 || depth > kMaxOverrideDepth)
+    throw SceneError(path, "override value is too large (more than " + std::to_string(kMaxOverrideNodes) +
+                               " nodes or " + std::to_string(kMaxOverrideDepth) + " levels; aliases?)");
   if (n.IsScalar()) return YAML::Node(n.Scalar());
   if (n.IsSequence()) {
     YAML::Node out(YAML::NodeType::Sequence);
-    for (const auto& item : n) out.push_back(plainCopy(item));
+    for (const auto& item : n) out.push_back(plainCopy(item, path, budget, depth + 1));
     return out;
   }
   if (n.IsMap()) {
     YAML::Node out(YAML::NodeType::Map);
-    for (const auto& kv : n) out[kv.first.Scalar()] = plainCopy(kv.second);
+    for (const auto& kv : n) out[kv.first.Scalar()] = plainCopy(kv.second, path, budget, depth + 1);
     return out;
   }
   return YAML::Node(YAML::NodeType::Null);
@@ -503,7 +544,8 @@ void applyOverride(YAML::Node& root, const std::string& assignment) {
   if (text.empty()) throw SceneError(path, "override '" + assignment + "' has no value");
   YAML::Node value;
   try {
-    value = plainCopy(YAML::Load(text));
+    int budget = kMaxOverrideNodes;
+    value = plainCopy(YAML::Load(text), path, budget);
   } catch (const YAML::Exception& e) {
     throw SceneError(path, "cannot parse override value '" + text + "': " + e.msg);
   }
@@ -526,21 +568,28 @@ void applyOverride(YAML::Node& root, const std::string& assignment) {
   cur[parts.back()] = value;
 }
 
+Scene loadSceneText(const std::string& text, const std::string& source, const std::vector<std::string>& overrides) {
+  YAML::Node root;
+  try {
+    root = YAML::Load(text);
+  } catch (const YAML::ParserException& e) {
+    throw SceneError("", source + ":" + std::to_string(e.mark.line + 1) + ":" + std::to_string(e.mark.column + 1) +
+                             ": YAML syntax error: " + e.msg);
+  } catch (const YAML::Exception& e) {
+    throw SceneError("", "cannot read scene '" + source + "': " + e.msg);
+  }
+  for (const auto& o : overrides) applyOverride(root, o);
+  return parseScene(root);
+}
+
 Scene loadSceneFile(const std::string& path, const std::vector<std::string>& overrides) {
   if (std::filesystem::is_directory(path)) throw SceneError("", "scene file '" + path + "' is a directory");
   std::ifstream in(path);
   if (!in) throw SceneError("", "cannot open scene file '" + path + "': " + std::strerror(errno));
-  YAML::Node root;
-  try {
-    root = YAML::Load(in);
-  } catch (const YAML::ParserException& e) {
-    throw SceneError("", path + ":" + std::to_string(e.mark.line + 1) + ":" + std::to_string(e.mark.column + 1) +
-                             ": YAML syntax error: " + e.msg);
-  } catch (const YAML::Exception& e) {
-    throw SceneError("", "cannot read scene file '" + path + "': " + e.msg);
-  }
-  for (const auto& o : overrides) applyOverride(root, o);
-  Scene s = parseScene(root);
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw SceneError("", "cannot read scene file '" + path + "': " + std::strerror(errno));
+  Scene s = loadSceneText(text.str(), path, overrides);
   if (s.name.empty()) s.name = std::filesystem::path(path).stem().string();
   return s;
 }

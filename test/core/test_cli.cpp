@@ -142,6 +142,8 @@ TEST(Cli, BadInputExits2) {
       {"", "--scene FILE is required"},
       {"--scene " + kChain + " --frobnicate", "unknown option '--frobnicate'"},
       {"--scene " + kChain + " --duration 0", "--duration"},
+      // 1e20 s at dt = 1e-4: 1e24 steps, beyond the loader's limit (and a long)
+      {"--scene " + kChain + " --duration 1e20", "--duration: 1e+24 steps of solver.dt, more than 1e+09"},
       {"--scene " + kChain + " --set line.lenght=3", "line.lenght: unknown key"},
       {"--scene " + kChain + " --set solver.integrator=euler", "solver.integrator: unknown integrator 'euler'"},
       {"--scene /nonexistent/riser_sim.yaml", "cannot open scene file"},

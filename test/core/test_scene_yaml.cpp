@@ -155,6 +155,35 @@ const BadScene kBadScenes[] = {
     {"{line: {length: 10, elements: 2, EA: 1, EI: 0, mass_per_length: 1, axial_flexibility: false}, "
      "bottom: {type: pinned, position: [8, -8]}, initial: {type: between_points}}",
      "bottom.position", "inextensible"},
+    // size limits (docs/scene_keys.md, "Limits"): an error, not an out-of-memory or an endless run
+    {"{line: {length: 1, elements: 2001, EA: 1, EI: 0, mass_per_length: 1}}", "line.elements",
+     "must be <= 2000, got 2001"},
+    {"{line: {length: 1, elements: 1000000000, EA: 1, EI: 0, mass_per_length: 1}}", "line.elements",
+     "must be <= 2000, got 1000000000"},
+    {"{line: {length: 1, elements: 1001, EA: 1, EI: 0, mass_per_length: 1}, solver: {integrator: rosenbrock2}}",
+     "line.elements", "must be <= 1000 with a dense rosenbrock2 Jacobian"},
+    {"{line: {length: 1, elements: 1001, EA: 1, EI: 0, mass_per_length: 1}, "
+     "solver: {integrator: midpoint, formulation: recursive, jacobian: dense}}",
+     "line.elements", "must be <= 1000 with a dense midpoint Jacobian"},
+    {"{line: {length: 1, elements: 1, EA: 1, EI: 0, mass_per_length: 1}, solver: {dt: 1e-6}, run: {duration: 1e4}}",
+     "run.duration", "is 1e+10 steps of solver.dt (1e-06 s), more than 1e+09"},
+    {"{line: {length: 1e300, elements: 1, EA: 1, EI: 0, mass_per_length: 1}}", "line.length",
+     "must be within +-1e+15, got 1e+300"},
+    {"{line: {length: 1, elements: 1, EA: 1, EI: 0, mass_per_length: 1}, "
+     "top: {motion: {type: sinusoid, amplitude: [-2e15, 0], period: 1}}}",
+     "top.motion.amplitude[0]", "must be within +-1e+15, got -2e+15"},
+    // positive values whose products round to 0
+    {"{line: {length: 1, elements: 1, outer_diameter: 1e-200, youngs_modulus: 1e11, density: 1}}",
+     "line.outer_diameter", "leaves a wall area of 0"},
+    {"{line: {length: 1, elements: 1, outer_diameter: 1e-155, inner_diameter: 9.999999999999999e-156, "
+     "youngs_modulus: 1e11, density: 1}}", "line.inner_diameter", "leaves a wall area of 0"},  // same square
+    {"{line: {length: 1, elements: 1, outer_diameter: 1e-100, youngs_modulus: 1e11, density: 1e-300}}", "line.density",
+     "mass per length rounds to 0"},
+    {"{line: {length: 1, elements: 1, outer_diameter: 1e-100, youngs_modulus: 1e-300, density: 1}}",
+     "line.youngs_modulus", "EA rounds to 0"},
+    // a key that is not a name
+    {"{line: {length: 1, elements: 1, EA: 1, EI: 0, mass_per_length: 1, [a]: 1}}", "line",
+     "keys must be plain names, got a list of 1 item"},
     // ignored keys of other variants are still type-checked
     {"{line: {length: 1, elements: 1, EA: 1, EI: 0, mass_per_length: 1}, top: {motion: {type: fixed, period: x}}}",
      "top.motion.period", "expected a number"},
@@ -333,6 +362,11 @@ TEST(SceneYaml, MalformedOverrides) {
       {"line.elements=", "line.elements", "has no value"},
       {"line.elements=[1", "line.elements", "cannot parse override value"},
       {"line.length.x=1", "line.length", "is a value, not a section"},
+      // aliases: a cycle, and 8^6 leaves from 50 nodes ("billion laughs")
+      {"line=&a [*a]", "line", "override value is too large"},
+      {"line={a: &a [1,1,1,1,1,1,1,1], b: &b [*a,*a,*a,*a,*a,*a,*a,*a], c: &c [*b,*b,*b,*b,*b,*b,*b,*b], "
+       "d: &d [*c,*c,*c,*c,*c,*c,*c,*c], e: &e [*d,*d,*d,*d,*d,*d,*d,*d], f: [*e,*e,*e,*e,*e,*e,*e,*e]}",
+       "line", "override value is too large"},
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(c.assignment);
@@ -433,4 +467,20 @@ TEST(SceneYaml, EveryShippedSceneParsesAndBuilds) {
 int main(int argc, char** argv) {
   testing::InitGoogleTest(&argc, argv);
   return RUN_ALL_TESTS();
+}
+
+// Values the loader would stop can still reach buildSimulator from code (or combine beyond double
+// range within the limits): the run is refused rather than started from non-finite forces.
+TEST(SceneYaml, BuildRefusesNonFiniteInitialForces) {
+  Scene s = parse("{line: {length: 10, elements: 4, EA: 1e6, EI: 0, mass_per_length: 1}}");
+  s.top.type = "sinusoid";
+  s.top.amplitude = Vec2(1e300, 0.0);
+  s.top.period = 1e-300;  // acceleration amplitude ~1e300 * (2 pi 1e300)^2 = inf
+  try {
+    buildSimulator(s);
+    FAIL() << "no error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("initial: the initial state or its forces are not finite", 0), 0u)
+        << e.what();
+  }
 }

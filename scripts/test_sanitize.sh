@@ -1,0 +1,67 @@
+#!/usr/bin/env bash
+# The core's and the CLI's gtests under AddressSanitizer + UndefinedBehaviorSanitizer (gcc, any finding
+# aborts), built without catkin (RISER_SIM_CORE_ONLY) in its own directory. Eigen's and libstdc++'s
+# bounds assertions are on too (no NDEBUG, _GLIBCXX_ASSERTIONS). -O1 (RISER_SIM_SANITIZE_OPT): compiles ~1/3
+# faster than -O2 and the tests ran no slower.
+#   scripts/test_sanitize.sh [RESULTS_DIR]
+# Writes one JUnit XML per test binary to RESULTS_DIR (sanitize-<test>.xml; a binary stopped by a
+# sanitizer gets a failing one), prints "N passed, N failed" and exits non-zero on any failure.
+# RISER_SIM_SANITIZE_FILTER: gtest filter. The default leaves out the long runs that only repeat per-step
+# code the other tests cover (Table 1: 20 s runs at n = 10..40 and h/2; a simulated hour; 20 s energy and
+# added-mass runs): ~3/4 of the CPU time under ASan. '*' runs everything (docs/hardening.md).
+# RISER_SIM_SANITIZE_JOBS: test binaries run at once (default 2).
+set -uo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+ws=${RISER_SIM_WS:-$root/.ws}
+build=${RISER_SIM_SANITIZE_BUILD:-$ws/sanitize}
+results=${1:-$build/test_results}
+flags="${RISER_SIM_SANITIZE_OPT:--O1} -g1 -fno-omit-frame-pointer -D_GLIBCXX_ASSERTIONS"
+flags+=" -fsanitize=address,undefined -fno-sanitize-recover=all"
+
+cmake -S "$root" -B "$build" -DRISER_SIM_CORE_ONLY=ON -DCMAKE_BUILD_TYPE=Sanitize \
+  -DCMAKE_CXX_FLAGS_SANITIZE="$flags" -DCMAKE_EXE_LINKER_FLAGS_SANITIZE="-fsanitize=address,undefined" \
+  >"$build.cmake.log" 2>&1 || { cat "$build.cmake.log"; echo "0 passed, 1 failed"; exit 1; }
+cmake --build "$build" -j2 >"$build.build.log" 2>&1 || {
+  grep -E "error|Error" "$build.build.log" | head -n 40; echo "(see $build.build.log)"; echo "0 passed, 1 failed"; exit 1; }
+
+rm -rf "$results"
+mkdir -p "$results"
+long="Table1.*:Extremes.OneHourMidpointEnergyBounded"
+long+=":FormulationsAgree.Table1EndPositionAfter20s:FormulationsAgree.EnergyConservedInConservativeCase"
+long+=":Energy.ConservativeRunKeepsEnergy:HydroDynamics.AddedMassAndBuoyancyScaleThePeriod"
+export GTEST_FILTER=${RISER_SIM_SANITIZE_FILTER:--$long}
+export ASAN_OPTIONS="detect_leaks=1:halt_on_error=1:strict_string_checks=1"
+export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+export root build results
+
+# One test binary. A sanitizer stops it before (or after) gtest writes its XML: a failed run without a
+# <failure> in its XML gets a failing one of its own.
+run_one() {
+  local bin=$1 name xml log status reason
+  name=$(basename "$bin")
+  xml="$results/sanitize-$name.xml"
+  log="$build/$name.log"
+  (cd "$root" && "$bin" --gtest_output="xml:$xml") >"$log" 2>&1
+  status=$?
+  [ $status -eq 0 ] && return 0
+  grep -E "^\[  FAILED  \]|ERROR: (Address|Leak)Sanitizer|runtime error:|SUMMARY:" "$log" | head -n 20
+  if ! grep -q "<failure" "$xml" 2>/dev/null; then
+    reason=$(grep -m1 -E "ERROR: (Address|Leak)Sanitizer|runtime error:|SUMMARY:" "$log" | sed 's/[<>&"]/_/g')
+    printf '%s\n' '<?xml version="1.0" encoding="UTF-8"?>' \
+      '<testsuites tests="1" failures="1"><testsuite name="sanitize" tests="1" failures="1">' \
+      "<testcase name=\"$name\" classname=\"sanitize\"><failure message=\"exit status $status: ${reason:-see $log}\"/></testcase>" \
+      '</testsuite></testsuites>' >"$results/sanitize-$name-exit.xml"
+  fi
+  echo "sanitize: $name failed (exit $status, see $log)"
+  return 1
+}
+export -f run_one
+# The longest first, two at a time.
+first=" test_extremes test_formulations_agree test_energy test_hydro_dynamics test_modal "
+{
+  for n in $first; do [ -x "$build/tests/$n" ] && echo "$build/tests/$n"; done
+  for b in "$build"/tests/test_*; do [[ "$first" == *" $(basename "$b") "* ]] || echo "$b"; done
+} | xargs -P "${RISER_SIM_SANITIZE_JOBS:-2}" -I{} bash -c 'run_one "$1"' _ {}
+rc=$?
+/usr/bin/python3 "$root/scripts/count_results.py" "$results" --line-only
+[ $rc -eq 0 ] || exit 1
