@@ -65,8 +65,10 @@ std::vector<Case> allCases(const std::string& root) {
     c.scene = [jlay, axial](int n) { return fromFile(jlay, n, axial); };
     c.duration = 27.0;  // one period of the surge x_0 = 10 cos(2 pi t / 27)
     c.probe_s = 85.0;   // middle of the line (its end lies on the seabed)
-    c.ns = ns;
-    c.ref_runs = {{160, "midpoint", 1e-3}, {320, "midpoint", 1e-3}};
+    // n <= 300: the statics of the initial state (seabed contact) do not converge at n = 256, 320, 400,
+    // 500 (and take minutes at n = 1000), so n = 1000 is left out here.
+    c.ns = {10, 20, 40, 100, 200};
+    c.ref_runs = {{160, "midpoint", 1e-3}, {300, "midpoint", 1e-3}, {300, "midpoint", 5e-4}};
     cases.push_back(c);
   }
   {
@@ -78,7 +80,7 @@ std::vector<Case> allCases(const std::string& root) {
     c.duration = 60.0;  // the vessel's transit (velocity profile) ends at 60 s
     c.probe_s = 500.0;
     c.ns = ns;
-    c.ref_runs = {{200, "midpoint", 5e-3}, {400, "midpoint", 5e-3}};
+    c.ref_runs = {{200, "midpoint", 5e-3}, {400, "midpoint", 5e-3}, {400, "midpoint", 2.5e-3}};
     cases.push_back(c);
   }
   return cases;

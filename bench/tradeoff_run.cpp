@@ -26,6 +26,7 @@ Scene sceneOf(const Config& c) {
   s.solver.formulation = c.formulation;
   s.solver.integrator = c.integrator;
   if (c.tol > 0.0) s.solver.tolerance = c.tol;
+  s.solver.jacobian = c.jacobian;
   return s;
 }
 
