@@ -56,7 +56,7 @@ class Integrator {
 struct IntegratorOptions {
   double tolerance = 1e-6;         // dopri5: atol = rtol on positions and velocities
   int position_size = -1;          // size of q in y = [q; v; rest] (implicit schemes need it)
-  double jacobian_interval = 1.0;  // implicit schemes: Jacobian refresh period [s of simulated time]
+  double jacobian_interval = 0.1;  // implicit schemes: dense Jacobian refresh period [s of simulated time]
   // Implicit schemes: "structured" (the system's O(n) solves, relinearised every step) or "dense"
   // (finite-difference Jacobian, O(p²) per solve).
   std::string jacobian = "structured";

@@ -21,7 +21,11 @@ struct SolverSettings {
   double stabilization = 50.0;          // Baumgarte frequency ω_c [rad/s] (c'' + 2ω_c c' + ω_c² c = 0)
   double max_constraint_error = 0.05;   // divergence when the joint gap exceeds this × d
   double tolerance = 1e-6;              // solver.tolerance: dopri5 error control (atol = rtol)
-  double jacobian_interval = 1.0;       // solver.jacobian_interval [s]: implicit schemes' dense Jacobian refresh
+  // solver.jacobian_interval [s]: refresh period of the implicit schemes' dense Jacobian (the structured
+  // solves relinearise every step). 0.1 s: on the absolute formulation rosenbrock2 needs a Jacobian that
+  // follows the line's rotation (Table 1, n = 10, h = 0.01 s: 1 s lets the joints drift apart, 0.1 s holds
+  // them to 5e-5 m; docs/integrators.md).
+  double jacobian_interval = 0.1;
   // solver.jacobian: implicit schemes' linear solves. "auto": structured (O(n)) when the formulation has
   // them (independent, recursive), else dense; "structured"; "dense" (finite differences, O(p²)).
   std::string jacobian = "auto";
