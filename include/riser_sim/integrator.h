@@ -34,6 +34,10 @@ class Integrator {
   // The system changed outside the integrator (new initial state, a term's history moved): cached
   // derivatives (FSAL, Jacobians) must not be reused.
   virtual void restart() {}
+  // A term's run state moved between steps (seabed anchors): derivative values cached at the old state
+  // (FSAL, f(t, y)) must not be reused; an approximate Jacobian may (the implicit schemes keep their dense
+  // one until its refresh interval instead of an O(p³) refresh every step).
+  virtual void forcesChanged() { restart(); }
   // Non-empty once step() could not meet its contract (Newton failed, step size underflow); y then
   // holds the last good state and the caller must stop. Cleared by reset()/restart(). A reference:
   // no allocation on the hot path.

@@ -162,7 +162,7 @@ bool Simulator::step() {
   if (run_state_) {
     formulation_->kinematics(y_, kin_);
     for (const auto& term : model_->terms()) term->endStep(*model_, kin_);
-    integrator_->restart();
+    integrator_->forcesChanged();
   }
   checkDivergence();
   return !diverged();
