@@ -1,8 +1,10 @@
 // riser_sim_bench_step_cost: cost of one step against n for each integrator x formulation x linear
-// solve (issue 5: "every step costs O(n)"), on the 170 m J-lay scene with every hydro term it has
+// solve (issue 5: "every step costs O(n)"), on three scenes: the 170 m J-lay with every hydro term it has
 // (gravity, axial and bending springs, buoyancy, Morison drag, added mass, internal fluid mass and flow
-// u = 5 m/s, seabed contact) and on the Table 1 line (no water). Each configuration steps from the
-// static state for about --target seconds of thread CPU time (at least 5 steps; the step count
+// u = 5 m/s, seabed contact; n <= 300: its statics fail at n = 256, 320, 400, 500), the 500 m riser with
+// drag, added mass and a 5 m/s internal flow, and the Table 1 line (no water). The static initial state
+// is solved once per scene and n. Each configuration steps from it for about --target seconds of thread
+// CPU time (at least 5 steps; the step count
 // includes the implicit schemes' Jacobian work: structured = relinearised every step, dense = one
 // finite-difference Jacobian + LU per solver.jacobian_interval (default 0.1 s = 10 steps of h = 0.01 s),
 // timed over whole such periods; dopri5: per accepted substep);
@@ -58,6 +60,10 @@ Scene sceneOf(const std::string& which, const std::string& root, int n) {
   if (which == "jlay") {
     s = loadSceneFile(root + "/config/scenes/paper_jlay_170m.yaml");
     s.internal_fluid.velocity = 5.0;  // the flow term too
+  } else if (which == "riser500") {
+    s = loadSceneFile(root + "/config/scenes/paper_riser_500m.yaml");
+    s.internal_fluid.density = 840.0;
+    s.internal_fluid.velocity = 5.0;
   } else {
     s.name = "table1";
     s.length = 100.0;
@@ -71,6 +77,13 @@ Scene sceneOf(const std::string& which, const std::string& root, int n) {
   return s;
 }
 
+// A scene at one n with its static state, shared by every configuration.
+struct Prepared {
+  Scene scene;
+  std::shared_ptr<Model> model;
+  Kinematics kin;
+};
+
 struct Timing {
   bool ok = false;
   double cpu_per_step = 0.0;  // [s]
@@ -79,22 +92,28 @@ struct Timing {
   std::string why;
 };
 
-Timing timeOnce(const Scene& base, const Config& c, double target) {
+std::unique_ptr<Simulator> simulator(const Prepared& p, const SolverSettings& settings) {
+  auto sim = std::make_unique<Simulator>(p.model, buildTopMotion(p.scene.top), settings);
+  sim->setInitialState(p.kin, 0.0);
+  return sim;
+}
+
+Timing timeOnce(const Prepared& p, const Config& c, double target) {
   Timing t;
-  Scene s = base;
-  s.solver.integrator = c.integrator;
-  s.solver.formulation = c.formulation;
-  s.solver.jacobian = c.jacobian;
-  s.solver.dt = c.h > 0.0 ? c.h : 1e-4;
+  SolverSettings settings = p.scene.solver;
+  settings.integrator = c.integrator;
+  settings.formulation = c.formulation;
+  settings.jacobian = c.jacobian;
+  settings.dt = c.h > 0.0 ? c.h : 1e-4;
   try {
-    auto sim = buildSimulator(s);
+    auto sim = simulator(p, settings);
     if (c.h <= 0.0) {
-      s.solver.dt = -c.h * sim->stableStepEstimate();
-      sim = buildSimulator(s);
+      settings.dt = -c.h * sim->stableStepEstimate();
+      sim = simulator(p, settings);
     }
-    t.h = s.solver.dt;
+    t.h = settings.dt;
     // Dense: whole refresh periods (solver.jacobian_interval / h steps hold one Jacobian + LU).
-    const long period = std::lround(s.solver.jacobian_interval / s.solver.dt);
+    const long period = std::lround(settings.jacobian_interval / settings.dt);
     const long min_steps = std::string(c.jacobian) == "dense" ? std::max(5L, period) : 5;
     const double c0 = threadCpu();
     double used = 0.0;
@@ -157,49 +176,72 @@ int main(int argc, char** argv) {
     return 1;
   }
   std::fprintf(csv, "scene,integrator,formulation,jacobian,n,h,steps,cpu_us_per_step,us_per_step_per_rfe\n");
+  const int kConfigs_n = int(sizeof(kConfigs) / sizeof(kConfigs[0]));
   std::printf("Cost of one step (thread CPU time, median of 3; the machine may be shared), growth exponent "
-              "over n:\n\n| scene | integrator / formulation / solve | h [s] | ");
+              "over n (J-lay: the n = 400 column is n = 300, its statics limit):\n\n| scene | integrator / formulation / solve | h [s] | ");
   for (int n : ns) std::printf("n = %d | ", n);
   std::printf("exponent |\n|---|---|---|");
   for (size_t k = 0; k < ns.size(); ++k) std::printf("---|");
   std::printf("---|\n");
-  for (const char* which : {"jlay", "table1"}) {
-    for (const Config& c : kConfigs) {
-      std::vector<double> xs, ys;
-      std::printf("| %s | %s / %s / %s | %s | ", which, c.integrator, c.formulation, c.jacobian,
-                  c.h > 0 ? std::to_string(c.h).substr(0, 4).c_str() : "0.9x limit");
-      for (int n : ns) {
-        if (n > c.max_n || n > max_n) {
-          std::printf("- | ");
-          continue;
-        }
-        const Scene s = sceneOf(which, root, n);
+  for (const char* which : {"jlay", "riser500", "table1"}) {
+    const int scene_max_n = std::string(which) == "jlay" ? 300 : max_n;
+    // cost[config][n index] (0: not measured, < 0: failed)
+    std::vector<std::vector<double>> cost(kConfigs_n, std::vector<double>(ns.size(), 0.0));
+    for (size_t j = 0; j < ns.size(); ++j) {
+      const int n = std::min(ns[j], scene_max_n);
+      if (ns[j] > scene_max_n && (j == 0 || ns[j - 1] >= scene_max_n)) continue;
+      Prepared p;
+      p.scene = sceneOf(which, root, n);
+      p.model = buildModel(p.scene);
+      const StaticsResult st = solveStatics(*p.model, staticsProblem(p.scene), 0.0);
+      if (!st.converged) {
+        std::fprintf(stderr, "%s n = %d: %s\n", which, n, st.message.c_str());
+        continue;
+      }
+      p.kin = st.kin;
+      for (int k = 0; k < kConfigs_n; ++k) {
+        const Config& c = kConfigs[k];
+        if (n > c.max_n || n > max_n) continue;
         std::vector<double> per;
         Timing last;
         for (int r = 0; r < 3; ++r) {
-          last = timeOnce(s, c, target);
+          last = timeOnce(p, c, target);
           if (!last.ok) break;
           per.push_back(last.cpu_per_step);
         }
         if (!last.ok) {
-          std::printf("failed | ");
+          cost[k][j] = -1.0;
           std::fprintf(stderr, "%s %s/%s/%s n = %d: %s\n", which, c.integrator, c.formulation, c.jacobian, n,
                        last.why.c_str());
           continue;
         }
         std::sort(per.begin(), per.end());
         const double med = per[per.size() / 2];
-        xs.push_back(n + 1);
-        ys.push_back(med);
-        std::printf("%.3g us | ", 1e6 * med);
+        cost[k][j] = med;
         std::fprintf(csv, "%s,%s,%s,%s,%d,%.6g,%ld,%.6g,%.6g\n", which, c.integrator, c.formulation, c.jacobian, n,
                      last.h, last.steps, 1e6 * med, 1e6 * med / (n + 1));
-        std::fflush(stdout);
         std::fflush(csv);
       }
-      std::printf("%.2f |\n", slope(xs, ys));
-      std::fflush(stdout);
+      ns[j] = n;  // the jlay cap: the column shows the n measured
     }
+    for (int k = 0; k < kConfigs_n; ++k) {
+      const Config& c = kConfigs[k];
+      std::vector<double> xs, ys;
+      std::printf("| %s | %s / %s / %s | %s | ", which, c.integrator, c.formulation, c.jacobian,
+                  c.h > 0 ? std::to_string(c.h).substr(0, 4).c_str() : "0.9x limit");
+      for (size_t j = 0; j < ns.size(); ++j) {
+        if (cost[k][j] == 0.0) std::printf("- | ");
+        else if (cost[k][j] < 0.0) std::printf("failed | ");
+        else {
+          std::printf("%.3g us | ", 1e6 * cost[k][j]);
+          xs.push_back(ns[j] + 1);
+          ys.push_back(cost[k][j]);
+        }
+      }
+      std::printf("%.2f |\n", slope(xs, ys));
+    }
+    std::fflush(stdout);
+    ns = quick ? std::vector<int>{10, 40, 100} : std::vector<int>{10, 20, 40, 100, 200, 400, 1000};
   }
   std::fclose(csv);
   std::printf("\nwrote %s/step_cost.csv\n", out_dir.c_str());

@@ -1,8 +1,8 @@
 // Cases of the speed/accuracy sweep (riser_sim_bench_tradeoff): each is a scene family in n, a duration,
-// a probe point and a reference. References: the Table 1 line uses docs/validation.md's converged values
-// (rk4 at n = 20..160), its tensions to an rk4 run at n = 100; the paper's riser scenes are referenced
-// to runs of our own at two fine discretisations and two steps (Case::ref_runs), whose largest difference
-// is reported as the reference's spread.
+// a probe point and a reference. References: the Table 1 line's end uses fixed converged values (elastic:
+// rk4 at n = 320; inextensible: docs/validation.md's Richardson value), its tensions an rk4 run at
+// n = 100; the paper's riser scenes are referenced to runs of our own at two fine discretisations and two
+// steps (Case::ref_runs), whose largest difference is reported as the reference's spread.
 #pragma once
 #include <functional>
 #include <string>
