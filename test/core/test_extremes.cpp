@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "riser_sim/scene.h"
+#include "riser_sim/scene_yaml.h"
 #include "validation_util.h"
 
 namespace riser_sim {
@@ -189,6 +190,16 @@ std::vector<Case> cases() {
   };
   c.push_back({"rk4_0.9x_limit_inextensible", inextensible, {"rk4"}, 2.0, Expect::kSound, kEnergyBound, 0.9});
   c.push_back({"rk4_1.5x_limit_inextensible", inextensible, {"rk4"}, 2.0, Expect::kCleanDivergence, 0.0, 1.5});
+  // rosenbrock2 on the J-lay scene at h = 0.1 s: a seabed contact that starts inside the step is a stiff
+  // spring the step's linearisation does not know; the run goes unstable within a few steps and must be
+  // stopped before anything overflows (the check on unresolved motion: an rfe turning > 0.5 rad per step).
+  c.push_back({"jlay_rosenbrock2_h0.1",
+               [] {
+                 Scene s = loadSceneFile(std::string(RISER_SIM_SOURCE_DIR) + "/config/scenes/paper_jlay_170m.yaml");
+                 s.solver.dt = 0.1;
+                 return s;
+               },
+               {"rosenbrock2"}, 27.0, Expect::kCleanDivergence, 0.0, 0.0, nullptr, {"recursive"}});
   // Midpoint's Newton cannot follow the undamped axial mode at h = 1 s (5400x rk4's limit, n = 100),
   // not even on h/8 (h = 0.05 s works through 2-4 substeps): it must stop at once, naming solver.dt,
   // with the last good state kept.
