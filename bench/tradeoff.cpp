@@ -7,7 +7,7 @@
 // are skipped and listed as such. Writes <out>/tradeoff.csv and <out>/references.csv; prints tables.
 // bench/plot_tradeoff.py draws the Pareto plots and picks the cheapest setting per accuracy target.
 //
-//   riser_sim_bench_tradeoff [--quick] [--out DIR] [--cases a,b] [--max-run S] [--root DIR]
+//   riser_sim_bench_tradeoff [--quick] [--out DIR] [--cases a,b] [--ns a,b] [--max-run S] [--root DIR]
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -68,12 +68,13 @@ Ref reference(const Case& c, std::FILE* csv) {
   return ref;
 }
 
-std::vector<Config> sweep(const Case& c, bool quick) {
+std::vector<Config> sweep(const Case& c, bool quick, const std::string& ns) {
   const bool axial = c.scene(10).options.axial_flexibility;
   std::vector<Config> cfg;
   const std::vector<double> hs = {0.1, 0.05, 0.02, 0.01, 0.005, 0.002};
   for (int n : c.ns) {
     if (quick && n > 20) continue;
+    if (!ns.empty() && ns.find("," + std::to_string(n) + ",") == std::string::npos) continue;
     for (double k : {-0.9, -0.3}) cfg.push_back({&c, "recursive", "rk4", n, k, 0.0});
     if (n <= 100) cfg.push_back({&c, "absolute", "rk4", n, -0.9, 0.0});  // the paper's formulation
     if (!axial)
@@ -95,7 +96,7 @@ std::vector<Config> sweep(const Case& c, bool quick) {
 
 int main(int argc, char** argv) {
   bool quick = false;
-  std::string out_dir = "out/bench", root = ".", only;
+  std::string out_dir = "out/bench", root = ".", only, ns;
   double max_run = 20.0;
   for (int i = 1; i < argc; ++i) {
     const bool more = i + 1 < argc;
@@ -104,11 +105,14 @@ int main(int argc, char** argv) {
     else if (!std::strcmp(argv[i], "--root") && more) root = argv[++i];
     else if (!std::strcmp(argv[i], "--cases") && more) only = std::string(",") + argv[++i] + ",";
     else if (!std::strcmp(argv[i], "--max-run") && more) max_run = std::atof(argv[++i]);
+    else if (!std::strcmp(argv[i], "--ns") && more) ns = std::string(",") + argv[++i] + ",";
     else {
       const bool help = !std::strcmp(argv[i], "--help") || !std::strcmp(argv[i], "-h");
       std::fprintf(help ? stdout : stderr,
-                   "usage: riser_sim_bench_tradeoff [--quick] [--out DIR] [--cases a,b] [--max-run S] [--root DIR]\n"
+                   "usage: riser_sim_bench_tradeoff [--quick] [--out DIR] [--cases a,b] [--ns 10,20] [--max-run S] "
+                   "[--root DIR]\n"
                    "  --quick      n <= 20 only\n"
+                   "  --ns a,b     only these n (of 10, 20, 40, 100, 200, 1000)\n"
                    "  --out DIR    tradeoff.csv and references.csv go here (default out/bench)\n"
                    "  --cases a,b  only these cases (table1_elastic, table1_inextensible, jlay_elastic,\n"
                    "               jlay_inextensible, riser500)\n"
@@ -147,7 +151,7 @@ int main(int argc, char** argv) {
               "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (const Case& c : cases) {
     const Ref& R = ref[c.name];
-    for (const Config& k : sweep(c, quick)) {
+    for (const Config& k : sweep(c, quick, ns)) {
       const Result r = run(k, max_run);
       const bool ok = r.status == "ok";
       const double err = ok ? (r.m.probe - R.m.probe).norm() : NAN;
