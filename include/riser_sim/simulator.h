@@ -72,7 +72,8 @@ class Simulator : private OdeSystem {
   // the stiffest element - usually the short end rfes' axial springs - count), and the largest stable
   // step of the fixed-step explicit scheme, stabilityBound / ω_max (rk4: 2√2 / ω_max), times 0.75 when
   // joints are held by Baumgarte stabilisation (absolute formulation or a pinned bottom: their constraint
-  // dynamics are not in the estimate and lower the limit by up to 21 %, measured). Implicit and
+  // dynamics are not in the estimate and lower the limit by up to 21 %, measured), else times 0.85 for an
+  // inextensible line (tension-governed frequencies rise with the tension during the run). Implicit and
   // adaptive schemes have no such limit; stableStepEstimate() still gives rk4's for reference.
   double highestFrequency() const { return omega_max_; }
   double stableStepEstimate() const;

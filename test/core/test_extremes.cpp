@@ -184,11 +184,13 @@ std::vector<Case> cases() {
                  1.5});
   }
   const auto inextensible = [] {
-    Scene s = validation::table1Scene(20);
+    Scene s = validation::table1Scene(40);
     s.options.axial_flexibility = false;
     return s;
   };
-  c.push_back({"rk4_0.9x_limit_inextensible", inextensible, {"rk4"}, 2.0, Expect::kSound, kEnergyBound, 0.9});
+  // The whole 20 s: the swing raises the tension and with it the highest frequency (0.9x the raw estimate,
+  // without the 0.85 for tension-governed lines, diverged at t = 7 s).
+  c.push_back({"rk4_0.9x_limit_inextensible", inextensible, {"rk4"}, 20.0, Expect::kSound, kEnergyBound, 0.9});
   c.push_back({"rk4_1.5x_limit_inextensible", inextensible, {"rk4"}, 2.0, Expect::kCleanDivergence, 0.0, 1.5});
   // rosenbrock2 on the J-lay scene at h = 0.1 s: a seabed contact that starts inside the step is a stiff
   // spring the step's linearisation does not know; the run goes unstable within a few steps and must be
