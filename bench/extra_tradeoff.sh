@@ -7,8 +7,9 @@
 #  3. bench/plot_tradeoff.py -> out/bench/pareto_<case>.png, pareto.png, step_cost.png and the cheapest
 #     setting per accuracy.
 # By default a shorter sweep than the one in docs/integrators.md: n in {10, 20, 40, 100}, runs over 2 s of
-# CPU skipped, step cost to n = 400 (about 12 min on the shared 2-core machine). RISER_SIM_TRADEOFF_FULL=1
-# runs the documented sweep (every n to 1000, 20 s budget per run: ~30 min of wall time, 17 min of CPU).
+# CPU skipped, step cost to n = 400 (11 min on the 2-core machine, 10.5 min of CPU). RISER_SIM_TRADEOFF_FULL=1
+# runs the documented sweep (every n to 1000, 20 s budget per run: 20 min of wall time on a quiet machine,
+# 19 min of CPU, plus the full step cost table).
 set -eo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 cd "$root"
