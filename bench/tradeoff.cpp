@@ -7,7 +7,8 @@
 // are skipped and listed as such. Writes <out>/tradeoff.csv and <out>/references.csv; prints tables.
 // bench/plot_tradeoff.py draws the Pareto plots and picks the cheapest setting per accuracy target.
 //
-//   riser_sim_bench_tradeoff [--quick] [--out DIR] [--cases a,b] [--max-run S] [--root DIR]
+//   riser_sim_bench_tradeoff [--quick] [--out DIR] [--cases a,b] [--ns a,b] [--max-run S] [--root DIR]
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -47,13 +48,13 @@ Ref reference(const Case& c, std::FILE* csv) {
   const Result& last = rs.back();
   ref.m = last.m;
   std::ostringstream src;
-  src << last.stats.substeps << " steps of " << c.ref_runs.back().integrator << ", n = " << c.ref_runs.back().n;
+  src << c.ref_runs.back().integrator << ", n = " << c.ref_runs.back().n << ", h = " << last.h << " s";
   ref.source = src.str();
-  if (rs.size() > 1) {
-    const Result& prev = rs[rs.size() - 2];
-    ref.spread_pos = (last.m.probe - prev.m.probe).norm();
-    ref.spread_peak = std::abs(last.m.peak - prev.m.peak) / last.m.peak;
-    ref.spread_rms = std::abs(last.m.rms - prev.m.rms) / last.m.rms;
+  for (size_t k = 0; k + 1 < rs.size(); ++k) {  // largest difference to the coarser runs
+    const Result& other = rs[k];
+    ref.spread_pos = std::max(ref.spread_pos, (last.m.probe - other.m.probe).norm());
+    ref.spread_peak = std::max(ref.spread_peak, std::abs(last.m.peak - other.m.peak) / last.m.peak);
+    ref.spread_rms = std::max(ref.spread_rms, std::abs(last.m.rms - other.m.rms) / last.m.rms);
   }
   if (c.fixed_probe) {
     ref.m.probe = c.probe_ref;
@@ -67,21 +68,26 @@ Ref reference(const Case& c, std::FILE* csv) {
   return ref;
 }
 
-std::vector<Config> sweep(const Case& c, bool quick) {
+std::vector<Config> sweep(const Case& c, bool quick, const std::string& ns) {
   const bool axial = c.scene(10).options.axial_flexibility;
   std::vector<Config> cfg;
   const std::vector<double> hs = {0.1, 0.05, 0.02, 0.01, 0.005, 0.002};
   for (int n : c.ns) {
     if (quick && n > 20) continue;
+    if (!ns.empty() && ns.find("," + std::to_string(n) + ",") == std::string::npos) continue;
     for (double k : {-0.9, -0.3}) cfg.push_back({&c, "recursive", "rk4", n, k, 0.0});
     if (n <= 100) cfg.push_back({&c, "absolute", "rk4", n, -0.9, 0.0});  // the paper's formulation
     if (!axial)
       for (double h : {0.05, 0.02, 0.01}) cfg.push_back({&c, "recursive", "rk4", n, h, 0.0});
     for (double tol : {1e-4, 1e-6, 1e-8}) cfg.push_back({&c, "recursive", "dopri5", n, 0.01, tol});
-    for (const char* integ : {"rosenbrock2", "midpoint"})
+    for (const char* integ : {"rosenbrock2", "midpoint"})  // structured O(n) solves
       for (double h : hs) cfg.push_back({&c, "recursive", integ, n, h, 0.0});
-    if (n <= 40)  // dense finite-difference Jacobian, Baumgarte-held joints
-      for (double h : {0.01, 0.002}) cfg.push_back({&c, "absolute", "rosenbrock2", n, h, 0.0});
+    if (n <= 40)  // the same schemes with the dense finite-difference Jacobian: same accuracy, cost O(p²)
+      for (const char* integ : {"rosenbrock2", "midpoint"})
+        for (double h : {0.02, 0.005}) cfg.push_back({&c, "recursive", integ, n, h, 0.0, "dense"});
+    if (n <= 40)  // absolute: dense Jacobian only, Baumgarte-held joints
+      for (const char* integ : {"rosenbrock2", "midpoint"})
+        for (double h : {0.01, 0.002}) cfg.push_back({&c, "absolute", integ, n, h, 0.0});
   }
   return cfg;
 }
@@ -90,7 +96,7 @@ std::vector<Config> sweep(const Case& c, bool quick) {
 
 int main(int argc, char** argv) {
   bool quick = false;
-  std::string out_dir = "out/bench", root = ".", only;
+  std::string out_dir = "out/bench", root = ".", only, ns;
   double max_run = 20.0;
   for (int i = 1; i < argc; ++i) {
     const bool more = i + 1 < argc;
@@ -99,10 +105,20 @@ int main(int argc, char** argv) {
     else if (!std::strcmp(argv[i], "--root") && more) root = argv[++i];
     else if (!std::strcmp(argv[i], "--cases") && more) only = std::string(",") + argv[++i] + ",";
     else if (!std::strcmp(argv[i], "--max-run") && more) max_run = std::atof(argv[++i]);
+    else if (!std::strcmp(argv[i], "--ns") && more) ns = std::string(",") + argv[++i] + ",";
     else {
-      std::fprintf(stderr, "usage: riser_sim_bench_tradeoff [--quick] [--out DIR] [--cases a,b] [--max-run S] "
-                           "[--root DIR]\n");
-      return 2;
+      const bool help = !std::strcmp(argv[i], "--help") || !std::strcmp(argv[i], "-h");
+      std::fprintf(help ? stdout : stderr,
+                   "usage: riser_sim_bench_tradeoff [--quick] [--out DIR] [--cases a,b] [--ns 10,20] [--max-run S] "
+                   "[--root DIR]\n"
+                   "  --quick      n <= 20 only\n"
+                   "  --ns a,b     only these n (of 10, 20, 40, 100, 200, 1000)\n"
+                   "  --out DIR    tradeoff.csv and references.csv go here (default out/bench)\n"
+                   "  --cases a,b  only these cases (table1_elastic, table1_inextensible, jlay_elastic,\n"
+                   "               jlay_inextensible, riser500)\n"
+                   "  --max-run S  skip a run predicted to take more than S s of CPU time (default 20)\n"
+                   "  --root DIR   repository root (scene files; default .)\n");
+      return help ? 0 : 2;
     }
   }
   std::filesystem::create_directories(out_dir);
@@ -127,14 +143,15 @@ int main(int argc, char** argv) {
   std::fclose(refs);
 
   std::fprintf(csv,
-               "case,formulation,integrator,n,h,tolerance,status,wall_s,cpu_s,runs,rtf_cpu,steps,substeps,rejected,"
+               "case,formulation,integrator,jacobian,n,h,tolerance,status,wall_s,cpu_s,runs,rtf_cpu,steps,substeps,rejected,"
                "rhs,jacobians,probe_x,probe_y,err_pos_m,ref_spread_m,peak_T,rms_T,err_peak_rel,err_rms_rel,"
                "energy_drift,rk4_limit_h,us_per_step_per_rfe,reason\n");
-  std::printf("\n| case | formulation | integrator | n | h [s] | tol | CPU [s] | RTF | position error [m] | "
-              "peak T err | RMS T err | energy drift |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  std::printf("\n| case | formulation | integrator | solve | n | h [s] | tol | CPU [s] | wall [s] | RTF (CPU) | "
+              "position error [m] | peak T err | RMS T err | energy drift |\n"
+              "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (const Case& c : cases) {
     const Ref& R = ref[c.name];
-    for (const Config& k : sweep(c, quick)) {
+    for (const Config& k : sweep(c, quick, ns)) {
       const Result r = run(k, max_run);
       const bool ok = r.status == "ok";
       const double err = ok ? (r.m.probe - R.m.probe).norm() : NAN;
@@ -143,24 +160,28 @@ int main(int argc, char** argv) {
       const double per = ok ? 1e6 * r.cpu / double(std::max(1L, r.steps)) / double(k.n + 1) : NAN;
       char tol[16] = "";
       if (k.integrator == "dopri5") std::snprintf(tol, sizeof(tol), "%.0e", k.tol);
+      // The linear solve actually used (auto: structured on the chain formulations, dense on absolute).
+      const bool implicit = k.integrator == "rosenbrock2" || k.integrator == "midpoint";
+      const std::string solve = !implicit ? "-" : k.jacobian != "auto" ? k.jacobian
+                                : k.formulation == "absolute" ? "dense" : "structured";
       std::string reason = r.reason;
       for (char& ch : reason)
         if (ch == ',' || ch == '\n') ch = ';';
       std::fprintf(csv,
-                   "%s,%s,%s,%d,%.6g,%s,%s,%.6g,%.6g,%d,%.6g,%ld,%ld,%ld,%ld,%ld,%.9g,%.9g,%.6g,%.3g,%.6f,%.6f,%.6g,"
+                   "%s,%s,%s,%s,%d,%.6g,%s,%s,%.6g,%.6g,%d,%.6g,%ld,%ld,%ld,%ld,%ld,%.9g,%.9g,%.6g,%.3g,%.6f,%.6f,%.6g,"
                    "%.6g,%.6g,%.6g,%.4g,%s\n",
-                   c.name.c_str(), k.formulation.c_str(), k.integrator.c_str(), k.n, r.h, tol, r.status.c_str(),
-                   r.wall, r.cpu, r.runs, ok ? c.duration / r.cpu : 0.0, r.steps, r.stats.substeps, r.stats.rejected,
+                   c.name.c_str(), k.formulation.c_str(), k.integrator.c_str(), solve.c_str(), k.n, r.h, tol,
+                   r.status.c_str(), r.wall, r.cpu, r.runs, ok ? c.duration / r.cpu : 0.0, r.steps, r.stats.substeps, r.stats.rejected,
                    r.stats.rhs, r.stats.jacobians, r.m.probe.x(), r.m.probe.y(), err, R.spread_pos, r.m.peak, r.m.rms,
                    ep, er, r.drift, r.limit, per, reason.c_str());
       std::fflush(csv);
       if (ok)
-        std::printf("| %s | %s | %s | %d | %.3g | %s | %.4f | %.0f | %.2e | %.1e | %.1e | %.1e |\n", c.name.c_str(),
-                    k.formulation.c_str(), k.integrator.c_str(), k.n, r.h, tol, r.cpu, c.duration / r.cpu, err, ep,
-                    er, r.drift);
+        std::printf("| %s | %s | %s | %s | %d | %.3g | %s | %.4f | %.4f | %.0f | %.2e | %.1e | %.1e | %.1e |\n",
+                    c.name.c_str(), k.formulation.c_str(), k.integrator.c_str(), solve.c_str(), k.n, r.h, tol, r.cpu,
+                    r.wall, c.duration / r.cpu, err, ep, er, r.drift);
       else
-        std::printf("| %s | %s | %s | %d | %.3g | %s | %s: %.70s |\n", c.name.c_str(), k.formulation.c_str(),
-                    k.integrator.c_str(), k.n, r.h, tol, r.status.c_str(), reason.c_str());
+        std::printf("| %s | %s | %s | %s | %d | %.3g | %s | %s: %.70s |\n", c.name.c_str(), k.formulation.c_str(),
+                    k.integrator.c_str(), solve.c_str(), k.n, r.h, tol, r.status.c_str(), reason.c_str());
       std::fflush(stdout);
     }
   }

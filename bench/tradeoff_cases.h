@@ -1,8 +1,8 @@
 // Cases of the speed/accuracy sweep (riser_sim_bench_tradeoff): each is a scene family in n, a duration,
-// a probe point and a reference. References: the Table 1 line uses docs/validation.md's converged values
-// (rk4 at n = 20..160), its tensions to an rk4 run at n = 100; the paper's riser scenes are referenced
-// to runs of our own at two fine discretisations (Case::ref_runs), whose difference is reported as the
-// reference's spread.
+// a probe point and a reference. References: the Table 1 line's end uses fixed converged values (elastic:
+// rk4 at n = 320; inextensible: docs/validation.md's Richardson value), its tensions an rk4 run at
+// n = 100; the paper's riser scenes are referenced to runs of our own at two fine discretisations and two
+// steps (Case::ref_runs), whose largest difference is reported as the reference's spread.
 #pragma once
 #include <functional>
 #include <string>
@@ -30,8 +30,8 @@ struct Case {
   double probe_s = 0.0;              // probe at this unstretched arc length from the top [m]
   bool probe_relative = false;       // probe relative to the top point (Table 1: x_s, y_s)
   std::vector<int> ns;               // n of the sweep
-  // Reference runs (recursive formulation): the last one is the reference, the difference to the one
-  // before it its spread. h <= 0 means -h times rk4's estimated stability limit.
+  // Reference runs (recursive formulation): the last one is the reference, its largest difference to
+  // the others (a coarser n, a larger h) its spread. h <= 0 means -h times rk4's estimated stability limit.
   struct RefRun {
     int n;
     std::string integrator;

@@ -26,6 +26,7 @@ Scene sceneOf(const Config& c) {
   s.solver.formulation = c.formulation;
   s.solver.integrator = c.integrator;
   if (c.tol > 0.0) s.solver.tolerance = c.tol;
+  s.solver.jacobian = c.jacobian;
   return s;
 }
 
@@ -37,8 +38,8 @@ Result runOnce(const Config& c, double max_run) {
     s.solver.dt = c.h > 0.0 ? c.h : 1e-3;
     sim = buildSimulator(s);
     r.limit = sim->stableStepEstimate();
-    if (c.h <= 0.0) {
-      s.solver.dt = -c.h * r.limit;
+    if (c.h <= 0.0) {  // -h x the limit, rounded down to a whole number of steps in the duration
+      s.solver.dt = c.c->duration / std::ceil(c.c->duration / (-c.h * r.limit));
       sim = buildSimulator(s);
     }
   } catch (const std::exception& e) {

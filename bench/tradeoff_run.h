@@ -14,6 +14,7 @@ struct Config {
   int n = 0;
   double h = 0.0;    // solver.dt (dopri5: output step) [s]; <= 0: -h x rk4's estimated limit
   double tol = 0.0;  // dopri5 only
+  std::string jacobian = "auto";  // implicit schemes: auto | structured | dense
 };
 
 struct Result {

@@ -11,3 +11,10 @@ target_link_libraries(riser_sim_bench_tradeoff riser_sim_core yaml-cpp)
 target_compile_options(riser_sim_bench_tradeoff PRIVATE -O3)
 set_target_properties(riser_sim_bench_tradeoff PROPERTIES
   RUNTIME_OUTPUT_DIRECTORY ${CATKIN_DEVEL_PREFIX}/${CATKIN_PACKAGE_BIN_DESTINATION})
+
+# Cost of one step against n per integrator / formulation / linear solve (issue 5).
+add_executable(riser_sim_bench_step_cost bench/step_cost.cpp)
+target_link_libraries(riser_sim_bench_step_cost riser_sim_core yaml-cpp)
+target_compile_options(riser_sim_bench_step_cost PRIVATE -O3)
+set_target_properties(riser_sim_bench_step_cost PROPERTIES
+  RUNTIME_OUTPUT_DIRECTORY ${CATKIN_DEVEL_PREFIX}/${CATKIN_PACKAGE_BIN_DESTINATION})

@@ -24,6 +24,7 @@ class ImplicitIntegrator : public Integrator {
   explicit ImplicitIntegrator(const IntegratorOptions& options) : options_(options) {}
   void reset(int n) override;
   void restart() override { jac_valid_ = false; f0_valid_ = false; failure_.clear(); }
+  void forcesChanged() override { f0_valid_ = false; }
   const std::string& failure() const override { return failure_; }
   Stats stats() const override { return stats_; }
 

@@ -34,6 +34,10 @@ class Integrator {
   // The system changed outside the integrator (new initial state, a term's history moved): cached
   // derivatives (FSAL, Jacobians) must not be reused.
   virtual void restart() {}
+  // A term's run state moved between steps (seabed anchors): derivative values cached at the old state
+  // (FSAL, f(t, y)) must not be reused; an approximate Jacobian may (the implicit schemes keep their dense
+  // one until its refresh interval instead of an O(p³) refresh every step).
+  virtual void forcesChanged() { restart(); }
   // Non-empty once step() could not meet its contract (Newton failed, step size underflow); y then
   // holds the last good state and the caller must stop. Cleared by reset()/restart(). A reference:
   // no allocation on the hot path.
@@ -56,7 +60,7 @@ class Integrator {
 struct IntegratorOptions {
   double tolerance = 1e-6;         // dopri5: atol = rtol on positions and velocities
   int position_size = -1;          // size of q in y = [q; v; rest] (implicit schemes need it)
-  double jacobian_interval = 1.0;  // implicit schemes: Jacobian refresh period [s of simulated time]
+  double jacobian_interval = 0.1;  // implicit schemes: dense Jacobian refresh period [s of simulated time]
   // Implicit schemes: "structured" (the system's O(n) solves, relinearised every step) or "dense"
   // (finite-difference Jacobian, O(p²) per solve).
   std::string jacobian = "structured";

@@ -22,7 +22,11 @@ struct SolverSettings {
   double stabilization = 50.0;          // Baumgarte frequency ω_c [rad/s] (c'' + 2ω_c c' + ω_c² c = 0)
   double max_constraint_error = 0.05;   // divergence when the joint gap exceeds this × d
   double tolerance = 1e-6;              // solver.tolerance: dopri5 error control (atol = rtol)
-  double jacobian_interval = 1.0;       // solver.jacobian_interval [s]: implicit schemes' dense Jacobian refresh
+  // solver.jacobian_interval [s]: refresh period of the implicit schemes' dense Jacobian (the structured
+  // solves relinearise every step). 0.1 s: on the absolute formulation rosenbrock2 needs a Jacobian that
+  // follows the line's rotation (Table 1, n = 10, h = 0.01 s: 1 s lets the joints drift apart, 0.1 s holds
+  // them to 5e-5 m; docs/integrators.md).
+  double jacobian_interval = 0.1;
   // solver.jacobian: implicit schemes' linear solves. "auto": structured (O(n)) when the formulation has
   // them (independent, recursive), else dense; "structured"; "dense" (finite differences, O(p²)).
   std::string jacobian = "auto";
@@ -67,7 +71,10 @@ class Simulator : private OdeSystem {
   // Stability of explicit schemes, estimated at the initial state (setInitialState): the highest
   // natural frequency ω_max [rad/s] of the linearised line (power iteration on ∂a/∂q, so every term and
   // the stiffest element - usually the short end rfes' axial springs - count), and the largest stable
-  // step of the fixed-step explicit scheme, stabilityBound / ω_max (rk4: 2√2 / ω_max). Implicit and
+  // step of the fixed-step explicit scheme, stabilityBound / ω_max (rk4: 2√2 / ω_max), times 0.75 when
+  // joints are held by Baumgarte stabilisation (absolute formulation or a pinned bottom: their constraint
+  // dynamics are not in the estimate and lower the limit by up to 21 %, measured), else times 0.85 for an
+  // inextensible line (tension-governed frequencies rise with the tension during the run). Implicit and
   // adaptive schemes have no such limit; stableStepEstimate() still gives rk4's for reference.
   double highestFrequency() const { return omega_max_; }
   double stableStepEstimate() const;

@@ -13,6 +13,19 @@
 namespace riser_sim {
 
 namespace {
+// Largest p for the implicit schemes' dense Jacobian: one refresh is 2p evaluations + an LU of ~(2/3) p³
+// flops (p = 2000: 5 GFlop, seconds on this machine, every solver.jacobian_interval).
+constexpr int kMaxDenseCoordinates = 2000;
+// Divergence by unresolved motion (checkDivergence): an rfe turning by more than 0.5 rad (29 deg) or
+// stretching by more than 10 % in one step: far beyond anything a resolved run does (every sound case of
+// test_extremes, the snap load included, stays below).
+constexpr double kMaxTurnPerStep = 0.5;
+constexpr double kMaxStretchPerStep = 0.1;
+// Shares of the explicit stability estimate kept when joints are held by Baumgarte and when the line is
+// inextensible (see stableStepEstimate).
+constexpr double kBaumgarteStabilityFactor = 0.75;
+constexpr double kTensionStabilityFactor = 0.85;
+
 std::unique_ptr<Formulation> makeFormulation(const Model& model, const SolverSettings& s) {
   if (s.formulation == "absolute") return std::make_unique<AbsoluteFormulation>(model, s.stabilization);
   if (s.formulation == "independent") return std::make_unique<IndependentFormulation>(model, s.stabilization);
@@ -43,6 +56,16 @@ Simulator::Simulator(std::shared_ptr<const Model> model, std::unique_ptr<TopMoti
                                 "' (accepted: auto, structured, dense)");
   else
     io.jacobian = settings_.jacobian;
+  const bool implicit = settings_.integrator == "rosenbrock2" || settings_.integrator == "midpoint";
+  if (implicit && io.jacobian == "dense" && io.position_size > kMaxDenseCoordinates) {
+    std::ostringstream why;
+    why << "solver.jacobian: the implicit " << settings_.integrator << " would use a dense Jacobian of p = "
+        << io.position_size << " coordinates (" << formulation_->name()
+        << " formulation): O(p³) per refresh, O(p²) per step, refused above " << kMaxDenseCoordinates
+        << "; use solver.formulation recursive (structured O(n) solves), fewer line.elements, or "
+           "solver.integrator rk4 / dopri5";
+    throw std::invalid_argument(why.str());
+  }
   if (!(io.tolerance > 0.0)) throw std::invalid_argument("solver.tolerance: must be > 0");
   if (!(io.jacobian_interval >= 0.0)) throw std::invalid_argument("solver.jacobian_interval: must be >= 0");
   integrator_ = makeIntegrator(settings_.integrator, io);
@@ -109,7 +132,18 @@ void Simulator::estimateHighestFrequency() {
 
 double Simulator::stableStepEstimate() const {
   const double bound = integrator_->explicitFixedStep() ? integrator_->stabilityBound() : Rk4().stabilityBound();
-  return omega_max_ > 0.0 ? bound / omega_max_ : std::numeric_limits<double>::infinity();
+  // Joints held by Baumgarte (absolute formulation, pinned bottom): the constraint dynamics c'' + 2ω_c c'
+  // + ω_c² c, a critically damped real pair, couple with the line's modes and are not seen by the power
+  // iteration on ∂a/∂q. Measured on the inextensible Table 1 line (absolute, rk4, 60 s): the largest
+  // stable h is 0.83, 0.79, 0.86, 0.85x the raw estimate at n = 10, 20, 40, 100 (docs/integrators.md).
+  const bool baumgarte = settings_.formulation == "absolute" || model_->bottom() == BottomBoundary::kPinned;
+  // An inextensible line's highest frequencies are set by its tension, which the motion changes (the
+  // swing of Table 1 raises it): measured (recursive, 20 s) 0.8x the raw estimate stable, 0.9x diverging
+  // at n = 20, 40, 100.
+  const bool tension_governed = !model_->options().axial_flexibility;
+  // (The Baumgarte measurements were on the inextensible line over 60 s: they include the swing.)
+  const double factor = baumgarte ? kBaumgarteStabilityFactor : tension_governed ? kTensionStabilityFactor : 1.0;
+  return omega_max_ > 0.0 ? factor * bound / omega_max_ : std::numeric_limits<double>::infinity();
 }
 
 void Simulator::linearize(double t, const VecX& y) {
@@ -135,7 +169,7 @@ bool Simulator::step() {
   if (term_data_.any()) {
     formulation_->kinematics(y_, kin_);
     term_data_.endStep(*model_, kin_);
-    integrator_->restart();
+    integrator_->forcesChanged();
   }
   checkDivergence();
   return !diverged();
@@ -156,10 +190,28 @@ void Simulator::checkDivergence() {
     max_constraint_error_ = std::max(max_constraint_error_, err);
   }
   const double limit = settings_.max_constraint_error * model_->segmentLength();
-  if (finite && err <= limit && integrator_->failure().empty()) return;
+  // Unresolved motion: the chain formulations have no joint gap to watch, so an unstable run would
+  // otherwise grow for many steps until it overflows. An rfe that turns by more than kMaxTurnPerStep or
+  // stretches by more than kMaxStretchPerStep of its length in one step (rates of the last evaluation,
+  // O(n) comparisons) is not being integrated any more.
+  int fast = -1;
+  double turn = 0.0, stretch = 0.0;
+  if (finite) {
+    const Kinematics& kin = formulation_->lastKinematics();
+    for (int i = 0; i < model_->bodies() && fast < 0; ++i) {
+      turn = std::abs(kin[i].phi_dot) * settings_.dt;
+      stretch = std::abs(kin[i].delta_dot) * settings_.dt / model_->rfe(i).length;
+      if (!(turn <= kMaxTurnPerStep && stretch <= kMaxStretchPerStep)) fast = i;
+    }
+  }
+  if (finite && err <= limit && fast < 0 && integrator_->failure().empty()) return;
   std::ostringstream why;
   if (!integrator_->failure().empty())
     why << integrator_->failure();
+  else if (finite && fast >= 0)
+    why << "rfe " << fast << " turns by " << turn << " rad and stretches by " << stretch
+        << " of its length in one step at t = " << t_ << " s (limits " << kMaxTurnPerStep << " rad, "
+        << kMaxStretchPerStep << "): the motion is not resolved (unstable)";
   else if (!finite)
     why << "state is not finite (NaN/Inf) at t = " << t_ << " s";
   else
@@ -173,8 +225,10 @@ void Simulator::checkDivergence() {
           << " s (highest frequency " << omega_max_ << " rad/s): a safe solver.dt is " << 0.8 * limit_h
           << " s, or use solver.integrator rosenbrock2 / midpoint (implicit) or dopri5 (adaptive)";
     else
-      why << " (" << integrator_->name() << "'s stability limit h ~ " << limit_h
-          << " s is not exceeded: look at the input, e.g. a jump in the top motion)";
+      why << " (" << integrator_->name() << "'s stability limit estimated at the initial state, h ~ " << limit_h
+          << " s, is not exceeded: the line's highest frequency can grow with its tension during the run (a "
+             "swing, a snap), or the input jumps; try solver.dt " << 0.5 * settings_.dt
+          << " s, or solver.integrator dopri5 (adaptive) or midpoint (implicit))";
   }
   reason_ = why.str();
 }

@@ -295,6 +295,34 @@ TEST(Cli, EveryShippedSceneRuns) {
   }
 }
 
+// Issue 5: rk4's stability limit is estimated and reported up front; at 0.9x it the run completes, at 1.5x
+// it stops with exit code 3 and a message naming the limit and a safe dt.
+TEST(Cli, StabilityLimitReportedAndEnforced) {
+  const std::string scene = "--scene " + kScenes + "paper_table1.yaml --set line.elements=20 --summary";
+  const CliRun probe = runCli(scene + " --duration 0.001");
+  ASSERT_EQ(probe.code, 0) << probe.err;
+  std::map<std::string, std::string> j;
+  ASSERT_TRUE(parseFlatJson(probe.out, j)) << probe.out;
+  const double limit = std::stod(j["stable_dt_estimate"]);
+  ASSERT_GT(limit, 0.0);
+  EXPECT_NE(probe.err.find("stability: highest frequency"), std::string::npos) << probe.err;
+
+  char dt[64];
+  std::snprintf(dt, sizeof(dt), " --set solver.dt=%.9g", 0.9 * limit);
+  const CliRun below = runCli(scene + dt + " --duration 0.5");
+  EXPECT_EQ(below.code, 0) << below.err;
+
+  std::snprintf(dt, sizeof(dt), " --set solver.dt=%.9g", 1.5 * limit);
+  const CliRun above = runCli(scene + dt + " --duration 0.5");
+  EXPECT_EQ(above.code, 3) << above.err;
+  EXPECT_NE(above.err.find("solver.dt is above it"), std::string::npos) << "not reported up front: " << above.err;
+  EXPECT_NE(above.err.find("stability limit h ~"), std::string::npos) << above.err;
+  EXPECT_NE(above.err.find("a safe solver.dt is"), std::string::npos) << above.err;
+  std::map<std::string, std::string> k;
+  ASSERT_TRUE(parseFlatJson(above.out, k)) << above.out;
+  EXPECT_EQ(k["status"], "diverged");
+}
+
 // catkin_add_gtest links gtest without gtest_main here; a main of our own works either way.
 int main(int argc, char** argv) {
   testing::InitGoogleTest(&argc, argv);

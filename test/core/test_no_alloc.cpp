@@ -1,4 +1,5 @@
-// Every integrator x formulation: Simulator::step() allocates nothing after warm-up. Global operator
+// Every integrator x formulation x linear solve (structured, dense), on the Table 1 line and on the J-lay
+// scene with every hydro term: Simulator::step() allocates nothing after warm-up. Global operator
 // new/delete are replaced by counting versions; the count is read around the stepping only.
 #include <gtest/gtest.h>
 
@@ -42,14 +43,26 @@ struct Case {
   const char* integrator;
   const char* formulation;
   bool axial;
+  const char* jacobian = "auto";  // implicit schemes: auto (structured on the chain formulations) | dense
+  bool hydro = false;             // the J-lay scene: drag, added mass, contents, 5 m/s flow, seabed
 };
+
+// The paper's J-lay scene at n = 10 with every hydro term switched on (flow too).
+Scene jlayScene() {
+  Scene s = loadSceneFile(std::string(RISER_SIM_SOURCE_DIR) + "/config/scenes/paper_jlay_170m.yaml");
+  s.elements = 10;
+  s.internal_fluid.velocity = 5.0;
+  s.solver.dt = kDt;
+  return s;
+}
 
 class NoAlloc : public ::testing::TestWithParam<Case> {};
 
 TEST_P(NoAlloc, StepDoesNotAllocate) {
   const Case c = GetParam();
-  Scene s = validation::table1Scene(10, kDt);
+  Scene s = c.hydro ? jlayScene() : validation::table1Scene(10, kDt);
   s.options.axial_flexibility = c.axial;
+  s.solver.jacobian = c.jacobian;
   s.solver.integrator = c.integrator;
   s.solver.formulation = c.formulation;
   s.solver.jacobian_interval = kJacobianInterval;
@@ -61,7 +74,8 @@ TEST_P(NoAlloc, StepDoesNotAllocate) {
   for (int k = 0; k < kCountedSteps && ok; ++k) ok = sim->step();
   const long allocations = g_allocations.load() - before;
   ASSERT_TRUE(ok) << sim->divergenceReason();
-  EXPECT_EQ(allocations, 0) << c.integrator << " / " << c.formulation << (c.axial ? "" : " (inextensible)");
+  EXPECT_EQ(allocations, 0) << c.integrator << " / " << c.formulation << (c.axial ? "" : " (inextensible)") << " / "
+                            << c.jacobian << (c.hydro ? " / J-lay hydro" : "");
   const std::string name = c.integrator;
   if (name == "rosenbrock2" || name == "midpoint")
     EXPECT_GE(sim->integrator().stats().jacobians, 3) << "the counted steps should include Jacobian refreshes";
@@ -72,11 +86,17 @@ std::vector<Case> allCases() {
   for (const char* i : {"rk4", "dopri5", "rosenbrock2", "midpoint"})
     for (const char* f : {"absolute", "independent", "recursive"})
       for (bool axial : {true, false}) out.push_back({i, f, axial});
+  for (const char* i : {"rosenbrock2", "midpoint"})  // the dense path on the chain formulations
+    for (bool axial : {true, false}) out.push_back({i, "recursive", axial, "dense"});
+  for (const char* i : {"rk4", "dopri5", "rosenbrock2", "midpoint"})  // every hydro term, both solves
+    for (const char* f : {"absolute", "recursive"}) out.push_back({i, f, true, "auto", true});
   return out;
 }
 
 std::string caseName(const ::testing::TestParamInfo<Case>& info) {
-  return std::string(info.param.integrator) + "_" + info.param.formulation + (info.param.axial ? "" : "_inextensible");
+  const Case& c = info.param;
+  return std::string(c.integrator) + "_" + c.formulation + (c.axial ? "" : "_inextensible") +
+         (std::string(c.jacobian) == "dense" ? "_dense" : "") + (c.hydro ? "_jlay_hydro" : "");
 }
 
 INSTANTIATE_TEST_SUITE_P(AllIntegrators, NoAlloc, ::testing::ValuesIn(allCases()), caseName);
