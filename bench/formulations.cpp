@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "riser_sim/scene.h"
+#include "validation_util.h"
 
 namespace {
 
@@ -37,19 +38,7 @@ constexpr double kSimDuration = 20.0;  // [s] the paper's run length
 constexpr double kDt = 1e-4;           // [s] the paper's step
 constexpr int kIndependentMaxN = 100;  // dense O(n³) solve: measured up to here, extrapolated beyond
 
-Scene table1Scene(int n) {
-  Scene s;
-  s.name = "table1";
-  s.length = 100.0;
-  s.elements = n;
-  s.line = LineProperties::fromGeometry(0.05, 0.0, 1e11, 2000.0);
-  s.options.bending = false;
-  s.end_mass = 1000.0;
-  s.initial.type = "displaced";
-  s.initial.end_dx = -50.0;
-  s.solver.dt = kDt;
-  return s;
-}
+Scene table1Scene(int n) { return validation::table1Scene(n, kDt); }
 
 struct Row {
   std::string formulation;

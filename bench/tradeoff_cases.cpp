@@ -1,6 +1,7 @@
 #include "tradeoff_cases.h"
 
 #include "riser_sim/scene_yaml.h"
+#include "validation_util.h"
 
 namespace tradeoff {
 
@@ -8,19 +9,10 @@ using namespace riser_sim;
 
 namespace {
 
-// The paper's Table 1 line: m_s = 1000 kg on L = 100 m, E = 1e11 Pa, no bending, released from 50 m
-// to the side.
+// The paper's Table 1 line (the validation tests' definition).
 Scene table1(int n, bool axial) {
-  Scene s;
-  s.name = "table1";
-  s.length = 100.0;
-  s.elements = n;
-  s.line = LineProperties::fromGeometry(0.05, 0.0, 1e11, 2000.0);
-  s.options.bending = false;
+  Scene s = validation::table1Scene(n);
   s.options.axial_flexibility = axial;
-  s.end_mass = 1000.0;
-  s.initial.type = "displaced";
-  s.initial.end_dx = -50.0;
   return s;
 }
 

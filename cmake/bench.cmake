@@ -1,6 +1,7 @@
 # Benchmarks (ROS-free executables, run by `make bench`); land in devel/lib/riser_sim.
 add_executable(riser_sim_bench_formulations bench/formulations.cpp)
 target_link_libraries(riser_sim_bench_formulations riser_sim_core)
+target_include_directories(riser_sim_bench_formulations PRIVATE test/core)  # validation_util.h: the Table 1 scene
 target_compile_options(riser_sim_bench_formulations PRIVATE -O3)
 set_target_properties(riser_sim_bench_formulations PROPERTIES
   RUNTIME_OUTPUT_DIRECTORY ${CATKIN_DEVEL_PREFIX}/${CATKIN_PACKAGE_BIN_DESTINATION})
@@ -8,6 +9,7 @@ set_target_properties(riser_sim_bench_formulations PROPERTIES
 # Speed against accuracy sweep (issue 5): bench/extra_tradeoff.sh runs it.
 add_executable(riser_sim_bench_tradeoff bench/tradeoff.cpp bench/tradeoff_cases.cpp bench/tradeoff_run.cpp)
 target_link_libraries(riser_sim_bench_tradeoff riser_sim_core yaml-cpp)
+target_include_directories(riser_sim_bench_tradeoff PRIVATE test/core)
 target_compile_options(riser_sim_bench_tradeoff PRIVATE -O3)
 set_target_properties(riser_sim_bench_tradeoff PROPERTIES
   RUNTIME_OUTPUT_DIRECTORY ${CATKIN_DEVEL_PREFIX}/${CATKIN_PACKAGE_BIN_DESTINATION})

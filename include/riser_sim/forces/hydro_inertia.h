@@ -22,6 +22,8 @@ class HydroInertia : public ForceTerm {
                            VecX& Q) const override;
 
  private:
+  // Adds the Froude-Krylov forces to *Q (when Q is given); returns the term's power [W].
+  double sweep(const Model& model, const Kinematics& kin, double t, VecX* Q) const;
   WaterKinematics water_;
   double cm_;
 };

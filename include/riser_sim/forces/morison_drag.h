@@ -20,6 +20,8 @@ class MorisonDrag : public ForceTerm {
   // Drag force [N] on part p of rfe i, its point of application (s0, kappa) and that point's velocity.
   Vec2 force(const Model& model, const BodyKinematics& b, int i, int p, double t, double& s0, double& kappa,
              Vec2& v) const;
+  // Adds the drag forces to *Q (when Q is given); returns their power [W].
+  double sweep(const Model& model, const Kinematics& kin, double t, VecX* Q) const;
   WaterKinematics water_;
   double cd_t_, cd_n_;
 };

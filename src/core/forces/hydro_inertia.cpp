@@ -5,18 +5,7 @@
 namespace riser_sim {
 
 void HydroInertia::addForces(const Model& model, const TermData*, const Kinematics& kin, double t, VecX& Q) const {
-  if (!water_.moving()) return;
-  const double rhoA = water_.spec().density * model.line().externalArea();
-  for (int i = 0; i < model.bodies(); ++i)
-    for (int p = 0; p < 2; ++p) {
-      const BodyKinematics& b = kin[i];
-      const WetPart w = wetPart(model, b, i, p, water_.spec().surface);
-      if (w.length <= 0.0) continue;
-      Vec2 vw, aw;
-      water_.at(b.point(w.s0, w.kappa), t, vw, aw);
-      const Vec2 F = cm_ * rhoA * w.length * b.nrm().dot(aw) * b.nrm();
-      Q.segment<4>(4 * i) += pointForce(b, w.s0, w.kappa, F);
-    }
+  if (water_.moving()) sweep(model, kin, t, &Q);
 }
 
 void HydroInertia::addInertia(const Model& model, const Kinematics& kin, double, AlignedVector<Mat4>& M,
@@ -36,6 +25,16 @@ void HydroInertia::addInertia(const Model& model, const Kinematics& kin, double,
 
 double HydroInertia::addForcesAndPower(const Model& model, const TermData*, const Kinematics& kin, double t,
                                        VecX& Q) const {
+  return sweep(model, kin, t, &Q);
+}
+
+double HydroInertia::power(const Model& model, const TermData*, const Kinematics& kin, double t) const {
+  return sweep(model, kin, t, nullptr);
+}
+
+// With the added-mass energy ½ m_a (n·v)² in the kinetic energy, the balance needs
+// -m_a φ' (n·v)(e·v) (the rotation of n) plus the Froude-Krylov power.
+double HydroInertia::sweep(const Model& model, const Kinematics& kin, double t, VecX* Q) const {
   const double rhoA = water_.spec().density * model.line().externalArea();
   double pw = 0.0;
   for (int i = 0; i < model.bodies(); ++i)
@@ -49,29 +48,8 @@ double HydroInertia::addForcesAndPower(const Model& model, const TermData*, cons
         Vec2 vw, aw;
         water_.at(b.point(w.s0, w.kappa), t, vw, aw);
         const Vec2 F = cm_ * rhoA * w.length * b.nrm().dot(aw) * b.nrm();
-        Q.segment<4>(4 * i) += pointForce(b, w.s0, w.kappa, F);
+        if (Q) Q->segment<4>(4 * i) += pointForce(b, w.s0, w.kappa, F);
         pw += F.dot(v);
-      }
-    }
-  return pw;
-}
-
-// With the added-mass energy ½ m_a (n·v)² in the kinetic energy, the balance needs
-// -m_a φ' (n·v)(e·v) (the rotation of n) plus the Froude-Krylov power.
-double HydroInertia::power(const Model& model, const TermData*, const Kinematics& kin, double t) const {
-  const double rhoA = water_.spec().density * model.line().externalArea();
-  double pw = 0.0;
-  for (int i = 0; i < model.bodies(); ++i)
-    for (int p = 0; p < 2; ++p) {
-      const BodyKinematics& b = kin[i];
-      const WetPart w = wetPart(model, b, i, p, water_.spec().surface);
-      if (w.length <= 0.0) continue;
-      const Vec2 v = b.velocity(w.s0, w.kappa);
-      pw -= (cm_ - 1.0) * rhoA * w.length * b.phi_dot * b.nrm().dot(v) * b.e().dot(v);
-      if (water_.moving()) {
-        Vec2 vw, aw;
-        water_.at(b.point(w.s0, w.kappa), t, vw, aw);
-        pw += cm_ * rhoA * w.length * b.nrm().dot(aw) * b.nrm().dot(v);
       }
     }
   return pw;

@@ -25,36 +25,27 @@ Vec2 MorisonDrag::force(const Model& model, const BodyKinematics& b, int i, int 
 }
 
 void MorisonDrag::addForces(const Model& model, const TermData*, const Kinematics& kin, double t, VecX& Q) const {
-  for (int i = 0; i < model.bodies(); ++i)
-    for (int p = 0; p < 2; ++p) {
-      double s0, kappa;
-      Vec2 v;
-      const Vec2 F = force(model, kin[i], i, p, t, s0, kappa, v);
-      Q.segment<4>(4 * i) += pointForce(kin[i], s0, kappa, F);
-    }
+  sweep(model, kin, t, &Q);
 }
 
 double MorisonDrag::addForcesAndPower(const Model& model, const TermData*, const Kinematics& kin, double t,
                                       VecX& Q) const {
+  return sweep(model, kin, t, &Q);
+}
+
+double MorisonDrag::power(const Model& model, const TermData*, const Kinematics& kin, double t) const {
+  return sweep(model, kin, t, nullptr);
+}
+
+double MorisonDrag::sweep(const Model& model, const Kinematics& kin, double t, VecX* Q) const {
   double pw = 0.0;
   for (int i = 0; i < model.bodies(); ++i)
     for (int p = 0; p < 2; ++p) {
       double s0, kappa;
       Vec2 v;
       const Vec2 F = force(model, kin[i], i, p, t, s0, kappa, v);
-      Q.segment<4>(4 * i) += pointForce(kin[i], s0, kappa, F);
+      if (Q) Q->segment<4>(4 * i) += pointForce(kin[i], s0, kappa, F);
       pw += F.dot(v);
-    }
-  return pw;
-}
-
-double MorisonDrag::power(const Model& model, const TermData*, const Kinematics& kin, double t) const {
-  double pw = 0.0;
-  for (int i = 0; i < model.bodies(); ++i)
-    for (int p = 0; p < 2; ++p) {
-      double s0, kappa;
-      Vec2 v;
-      pw += force(model, kin[i], i, p, t, s0, kappa, v).dot(v);
     }
   return pw;
 }
