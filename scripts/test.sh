@@ -6,12 +6,23 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 ws=${RISER_SIM_WS:-$root/.ws}
 "$root/scripts/build.sh" -j2 all tests || { echo "0 passed, 1 failed"; exit 1; }
 cd "$ws"
+# The sanitizer and fuzzer builds (~10 min of CPU) compile at the lowest priority while the tests below
+# run: the rostests mostly wait on real time. Their steps further down then find them built.
+prebuild_pid=""
+if [ "${RISER_SIM_SANITIZE:-1}" != 0 ] || [ "${RISER_SIM_FUZZ_SECONDS:-30}" != 0 ]; then
+  (
+    [ "${RISER_SIM_SANITIZE:-1}" != 0 ] && RISER_SIM_SANITIZE_BUILD_ONLY=1 nice -n 19 "$root/scripts/test_sanitize.sh"
+    [ "${RISER_SIM_FUZZ_SECONDS:-30}" != 0 ] && nice -n 19 make -C "$root" --no-print-directory -j2 -f test/fuzz/Makefile build
+  ) >"$ws/prebuild.log" 2>&1 &
+  prebuild_pid=$!
+fi
 rm -rf build/test_results
 set +u
 source devel/setup.bash
 catkin_make -DPYTHON_EXECUTABLE=/usr/bin/python3 run_tests -j1 >"$ws/run_tests.log" 2>&1
 rc_run=$?
 grep -E "^\[ +(RUN|OK|FAILED|PASSED) +\]|FAILURE|Error|error:" "$ws/run_tests.log" | grep -v "^\[ RUN" | tail -n 200
+[ -n "$prebuild_pid" ] && wait "$prebuild_pid"  # a failed build is reported by its step below
 # The core's and the CLI's gtests again under ASan + UBSan (docs/hardening.md); their JUnit files go
 # next to catkin's, so the line below counts them. RISER_SIM_SANITIZE=0 skips this step.
 rc_san=0
@@ -27,7 +38,7 @@ fi
 rc_fuzz=0
 fuzz_s=${RISER_SIM_FUZZ_SECONDS:-30}
 if [ "$fuzz_s" != 0 ]; then
-  make -C "$root" --no-print-directory -f test/fuzz/Makefile run FUZZ_SECONDS="$fuzz_s" FUZZ_FLAGS=-seed=1 \
+  make -C "$root" --no-print-directory -j2 -f test/fuzz/Makefile run FUZZ_SECONDS="$fuzz_s" FUZZ_FLAGS=-seed=1 \
     >"$ws/fuzz.log" 2>&1
   rc_fuzz=$?
   mkdir -p build/test_results/fuzz

@@ -56,6 +56,16 @@ Scene jlayScene() {
   return s;
 }
 
+// Warms sim up, then counts the allocations of kCountedSteps steps.
+void countStepAllocations(Simulator& sim, long& allocations) {
+  for (int k = 0; k < kWarmupSteps; ++k) ASSERT_TRUE(sim.step()) << sim.divergenceReason();
+  const long before = g_allocations.load();
+  bool ok = true;
+  for (int k = 0; k < kCountedSteps && ok; ++k) ok = sim.step();
+  allocations = g_allocations.load() - before;
+  ASSERT_TRUE(ok) << sim.divergenceReason();
+}
+
 class NoAlloc : public ::testing::TestWithParam<Case> {};
 
 TEST_P(NoAlloc, StepDoesNotAllocate) {
@@ -68,12 +78,8 @@ TEST_P(NoAlloc, StepDoesNotAllocate) {
   s.solver.jacobian_interval = kJacobianInterval;
   s.solver.tolerance = 1e-7;
   auto sim = buildSimulator(s);
-  for (int k = 0; k < kWarmupSteps; ++k) ASSERT_TRUE(sim->step()) << sim->divergenceReason();
-  const long before = g_allocations.load();
-  bool ok = true;
-  for (int k = 0; k < kCountedSteps && ok; ++k) ok = sim->step();
-  const long allocations = g_allocations.load() - before;
-  ASSERT_TRUE(ok) << sim->divergenceReason();
+  long allocations = -1;
+  ASSERT_NO_FATAL_FAILURE(countStepAllocations(*sim, allocations));
   EXPECT_EQ(allocations, 0) << c.integrator << " / " << c.formulation << (c.axial ? "" : " (inextensible)") << " / "
                             << c.jacobian << (c.hydro ? " / J-lay hydro" : "");
   const std::string name = c.integrator;
@@ -121,12 +127,8 @@ TEST(NoAllocSea, StepWithEverySeaTermDoesNotAllocate) {
       for (const auto& t : sim->model().terms()) names.push_back(t->name());
       for (const char* want : {"buoyancy", "morison_drag", "hydro_inertia", "seabed", "end_load"})
         EXPECT_NE(std::find(names.begin(), names.end(), want), names.end()) << want;
-      for (int k = 0; k < kWarmupSteps; ++k) ASSERT_TRUE(sim->step()) << sim->divergenceReason();
-      const long before = g_allocations.load();
-      bool ok = true;
-      for (int k = 0; k < kCountedSteps && ok; ++k) ok = sim->step();
-      const long allocations = g_allocations.load() - before;
-      ASSERT_TRUE(ok) << sim->divergenceReason();
+      long allocations = -1;
+      ASSERT_NO_FATAL_FAILURE(countStepAllocations(*sim, allocations));
       EXPECT_EQ(allocations, 0);
     }
 }
