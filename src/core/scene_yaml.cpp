@@ -128,7 +128,7 @@ class Section {
                                             : "expected a map of keys, got " + describe(node_));
     std::vector<std::string> seen;
     for (const auto& kv : node_) {
-      if (!kv.first.IsScalar())
+      if (!kv.first.IsScalar() || kv.first.Scalar().empty())  // "! : 5" is a scalar key ''
         throw SceneError(path_, std::string(path_.empty() ? "top-level keys" : "keys") +
                                     " must be plain names, got " + describe(kv.first) + where(kv.first));
       const std::string k = kv.first.Scalar();
