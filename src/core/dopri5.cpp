@@ -21,7 +21,10 @@ constexpr double e1 = 71.0 / 57600, e3 = -71.0 / 16695, e4 = 71.0 / 1920, e5 = -
                  e6 = 22.0 / 525, e7 = -1.0 / 40;
 // PI controller (Hairer II.4, Gustafsson): h_new = h * safety * err^-alpha * err_old^beta.
 constexpr double kBeta = 0.04, kAlpha = 0.2 - 0.75 * kBeta, kSafety = 0.9, kFacMin = 0.2, kFacMax = 10.0;
-constexpr long kMaxSubstepsPerCall = 10000000;  // a stiff line at a tight tolerance stays far below this
+// Substeps in one call (one solver.dt): a stiff line at a tight tolerance takes tens to hundreds; 1e5 means
+// solver.dt is far beyond the dynamics (e.g. 100 s on a steel line) and the call would block its caller (the
+// node's loop) for seconds to minutes.
+constexpr long kMaxSubstepsPerCall = 100000;
 }  // namespace
 
 void Dopri5::reset(int n) {
@@ -93,7 +96,15 @@ void Dopri5::step(OdeSystem& sys, double t, VecX& y, double H) {
     } else if (h > 0.5 * left) {  // avoid a sliver: split what is left in two
       h = 0.5 * left;
     }
-    if (!(h > 1e-14 * std::max(1.0, std::abs(t))) || ++substeps > kMaxSubstepsPerCall || !std::isfinite(h)) {
+    if (++substeps > kMaxSubstepsPerCall) {
+      char buf[200];
+      std::snprintf(buf, sizeof(buf),
+                    "dopri5: more than %ld substeps (h = %.3g s) in one solver.dt = %g s at t = %.9g s",
+                    kMaxSubstepsPerCall, h, H, t);
+      failure_ = buf;
+      return;
+    }
+    if (!(h > 1e-14 * std::max(1.0, std::abs(t))) || !std::isfinite(h)) {
       char buf[160];
       std::snprintf(buf, sizeof(buf), "dopri5: step size underflow (h = %.3g s) at t = %.9g s; loosen solver.tolerance",
                     h, t);

@@ -207,6 +207,11 @@ std::vector<Case> cases() {
   // with the last good state kept.
   c.push_back({"midpoint_beyond_newton", [] { return validation::table1Scene(100, 1.0); }, {"midpoint"}, 2.0,
                Expect::kCleanDivergence, 0.0, 0.0, nullptr, {"recursive"}});
+  // dopri5 with an output step far beyond the dynamics (solver.dt = 1000 s on the elastic steel line, n = 8:
+  // substeps of ~1e-3 s) must stop after its 1e5 substeps per call, naming solver.dt, instead of blocking its
+  // caller for ~1e6 substeps (found by the fuzzer: dt = 100 s took > 25 s per input).
+  c.push_back({"dopri5_dt_beyond_dynamics", [] { return validation::table1Scene(8, 1000.0); }, {"dopri5"}, 1000.0,
+               Expect::kCleanDivergence, 0.0, 0.0, nullptr, {"recursive"}});
   return c;
 }
 

@@ -20,7 +20,7 @@ SceneInput splitInput(const std::string& data);
 // that name their key (or a syntax/override error of the whole text), nothing non-finite out of a
 // built simulator.
 struct Outcome {
-  // kRejected by the loader, kParsed (valid, more than kMaxBuiltElements), kBuildRejected by buildSimulator.
+  // kRejected by the loader, kParsed (valid, more than kMaxBuiltElements or a long dopri5 step), kBuildRejected by buildSimulator.
   enum class Kind { kRejected, kParsed, kBuildRejected, kBuilt } kind = Kind::kRejected;
   std::string message;  // the error, or "built, N steps" / "parsed ..."
   std::string defect;
@@ -28,6 +28,9 @@ struct Outcome {
 
 // Scenes with more elements than this are parsed but not built (keeps one input to milliseconds).
 constexpr int kMaxBuiltElements = 40;
+// dopri5 scenes with a longer output step are parsed but not built: one step may take up to its 1e5
+// substeps (0.3 s in Release, ~50 s under the fuzzer's instrumentation): slow, not a defect.
+constexpr double kMaxBuiltDopri5Dt = 1.0;  // [s]
 // Steps taken after a successful build.
 constexpr int kSteps = 5;
 
