@@ -27,6 +27,7 @@ from tf2_msgs.msg import TFMessage
 from visualization_msgs.msg import MarkerArray
 
 from riser_sim.msg import LineState, Tension
+from proc_util import stop
 
 FIELDS = ["n", "dt", "status", "real_time_factor", "compute_real_time_factor", "cpu_percent", "step_mean_us",
           "step_max_us", "work_per_publish_period_p99_ms", "publish_period_ms", "publish_p99_ms", "tension_hz",
@@ -139,11 +140,7 @@ def main():
                 elif worst == 1:
                     row["status"] = "WARN: " + [d for d in window_diags if d[1] == 1][-1][2]
     finally:
-        node.terminate()
-        try:
-            node.wait(timeout=10)
-        except subprocess.TimeoutExpired:
-            node.kill()
+        stop(node)
         for s in subs:
             s.unregister()
         rospy.delete_param(ns)

@@ -33,6 +33,7 @@ from rosgraph_msgs.msg import Clock
 from tf2_msgs.msg import TFMessage
 
 from riser_sim.msg import LineState, Tension
+from proc_util import stop
 
 FIELDS = ["wall_s", "sim_s", "rss_kib", "hwm_kib", "cpu_s", "cpu_per_sim_s", "load1", "step_mean_us", "compute_rtf", "energy_j",
           "energy_balance_error", "constraint_error_m", "max_constraint_error_m", "dropped_total_s", "level"]
@@ -258,11 +259,7 @@ def main():
         print("soak: %s" % e)
         status = 1
     finally:
-        node.terminate()
-        try:
-            node.wait(timeout=10)
-        except subprocess.TimeoutExpired:
-            node.kill()
+        stop(node)
     if rows:
         text = summarize(rows, args)
         print(text)

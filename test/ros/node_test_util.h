@@ -14,6 +14,7 @@
 #include <geometry_msgs/WrenchStamped.h>
 #include <ros/ros.h>
 #include <tf2_msgs/TFMessage.h>
+#include <tf2_ros/buffer.h>
 #include <visualization_msgs/MarkerArray.h>
 
 #include "riser_sim/LineState.h"
@@ -35,6 +36,15 @@ inline bool waitFor(const std::function<bool()>& cond, double timeout) {
 inline bool waitRosTime(double seconds, double timeout) {
   const ros::Time end = ros::Time::now() + ros::Duration(seconds);
   return waitFor([&] { return ros::Time::now() >= end; }, timeout);
+}
+
+// Waits until every frame can be transformed to `world` (latest data), for up to timeout [s of wall time].
+inline bool waitForFrames(const tf2_ros::Buffer& buffer, const std::vector<std::string>& frames, double timeout) {
+  return waitFor([&] {
+    for (const std::string& f : frames)
+      if (!buffer.canTransform("world", f, ros::Time(0))) return false;
+    return true;
+  }, timeout);
 }
 
 // Keeps every message of type M (with its ROS receipt time) on a topic.

@@ -122,10 +122,7 @@ TEST(Nodelets, TwoRisersAndTheVesselShareOneManager) {
   // Frames carry each nodelet's own prefix (its name, not the manager's).
   tf2_ros::Buffer buffer;
   tf2_ros::TransformListener listener(buffer);
-  ASSERT_TRUE(waitFor([&] {
-    return buffer.canTransform("world", "riser_a/riser_sim/rfe_0", ros::Time(0)) &&
-           buffer.canTransform("world", "riser_b/riser_sim/rfe_0", ros::Time(0));
-  }, 10.0));
+  ASSERT_TRUE(waitForFrames(buffer, {"riser_a/riser_sim/rfe_0", "riser_b/riser_sim/rfe_0"}, 10.0));
   EXPECT_FALSE(buffer.canTransform("world", "riser_manager/rfe_0", ros::Time(0)));
   const double gap = buffer.lookupTransform("world", "riser_b/riser_sim/rfe_0", ros::Time(0)).transform.translation.x -
                      buffer.lookupTransform("world", "riser_a/riser_sim/rfe_0", ros::Time(0)).transform.translation.x;

@@ -42,10 +42,7 @@ TEST(TwoNamespaces, EachNodeHasItsOwnTopicsFramesAndService) {
   // Frames are prefixed by namespace and node name; both sets exist and sit at their own points.
   tf2_ros::Buffer buffer;
   tf2_ros::TransformListener listener(buffer);
-  ASSERT_TRUE(waitFor([&] {
-    return buffer.canTransform("world", "riser_a/riser_sim/rfe_0", ros::Time(0)) &&
-           buffer.canTransform("world", "riser_b/riser_sim/rfe_0", ros::Time(0));
-  }, 10.0));
+  ASSERT_TRUE(waitForFrames(buffer, {"riser_a/riser_sim/rfe_0", "riser_b/riser_sim/rfe_0"}, 10.0));
   for (int i = 0; i <= 10; ++i) {
     const auto ta = buffer.lookupTransform("world", "riser_a/riser_sim/rfe_" + std::to_string(i), ros::Time(0));
     const auto tb = buffer.lookupTransform("world", "riser_b/riser_sim/rfe_" + std::to_string(i), ros::Time(0));
