@@ -82,6 +82,8 @@ class Rk4 : public Integrator {
 
 // Names accepted by solver.integrator; throws std::invalid_argument otherwise.
 std::unique_ptr<Integrator> makeIntegrator(const std::string& name);
+// rosenbrock2 and midpoint: the schemes with linear solves (and the dense-Jacobian size limits).
+bool isImplicitIntegrator(const std::string& name);
 std::unique_ptr<Integrator> makeIntegrator(const std::string& name, const IntegratorOptions& options);
 // Every accepted name, comma separated (for messages and docs).
 const char* integratorNames();

@@ -28,6 +28,8 @@ void Rk4::step(OdeSystem& sys, double t, VecX& y, double h) {
 
 const char* integratorNames() { return "rk4, dopri5, rosenbrock2, midpoint"; }
 
+bool isImplicitIntegrator(const std::string& name) { return name == "rosenbrock2" || name == "midpoint"; }
+
 std::unique_ptr<Integrator> makeIntegrator(const std::string& name) {
   return makeIntegrator(name, IntegratorOptions());
 }

@@ -11,7 +11,6 @@
 #include <fstream>
 #include <sstream>
 
-#include "riser_sim/implicit_integrators.h"
 #include "riser_sim/integrator.h"
 
 namespace riser_sim {
@@ -428,7 +427,7 @@ void parseSolver(const Section& root, Scene& s) {
   if (s.solver.jacobian == "structured" && s.solver.formulation == "absolute")
     throw SceneError(solver.key("jacobian"),
                      "'structured' needs solver.formulation independent or recursive (absolute has none)");
-  const bool implicit = dynamic_cast<ImplicitIntegrator*>(makeIntegrator(s.solver.integrator).get()) != nullptr;
+  const bool implicit = isImplicitIntegrator(s.solver.integrator);
   const bool dense =
       s.solver.jacobian == "dense" || (s.solver.jacobian == "auto" && s.solver.formulation == "absolute");
   if (implicit && dense && s.elements > kMaxDenseJacobianElements)

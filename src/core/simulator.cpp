@@ -56,7 +56,7 @@ Simulator::Simulator(std::shared_ptr<const Model> model, std::unique_ptr<TopMoti
                                 "' (accepted: auto, structured, dense)");
   else
     io.jacobian = settings_.jacobian;
-  const bool implicit = settings_.integrator == "rosenbrock2" || settings_.integrator == "midpoint";
+  const bool implicit = isImplicitIntegrator(settings_.integrator);
   if (implicit && io.jacobian == "dense" && io.position_size > kMaxDenseCoordinates) {
     std::ostringstream why;
     why << "solver.jacobian: the implicit " << settings_.integrator << " would use a dense Jacobian of p = "
