@@ -4,13 +4,18 @@ ROOT := $(abspath .)
 WS := $(ROOT)/.ws
 SETUP := set +u; source $(WS)/devel/setup.bash
 
-.PHONY: deps fuzz-deps build test test-sanitize fuzz fuzz-replay sim bench soak many_risers figures demo modes clean
+.PHONY: deps fuzz-deps build check test test-sanitize fuzz fuzz-replay sim bench soak many_risers figures demo modes clean
 
 deps:
 	@scripts/install_deps.sh
 
 build: deps
 	@scripts/build.sh -j2
+
+# The edit-test loop: build the core + CLI without catkin and run their gtests (~2 min cold, seconds after).
+# CHECK_ARGS go to ctest, e.g. make check CHECK_ARGS='-R statics'.
+check: deps
+	@scripts/check.sh $(CHECK_ARGS)
 
 # Every test: gtests, rostests, the core's gtests under sanitizers, a 30 s scene fuzz (docs/hardening.md).
 test: fuzz-deps
