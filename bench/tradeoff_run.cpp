@@ -6,6 +6,8 @@
 #include <ctime>
 #include <vector>
 
+#include "riser_sim/run_builder.h"
+
 namespace tradeoff {
 
 using namespace riser_sim;

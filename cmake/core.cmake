@@ -24,9 +24,11 @@ add_library(riser_sim_core
   src/core/dopri5.cpp
   src/core/implicit_integrators.cpp
   src/core/simulator.cpp
+  src/core/solver_setup.cpp
   src/core/statics.cpp
   src/core/modal.cpp
   src/core/scene.cpp
+  src/core/run_builder.cpp
   src/core/scene_yaml.cpp
 )
 target_include_directories(riser_sim_core PUBLIC include ${EIGEN3_INCLUDE_DIR})

@@ -67,8 +67,4 @@ std::unique_ptr<TopMotion> buildTopMotion(const TopMotionSpec& spec);
 // Static problem for the scene's initial state (top at the motion's position at t = 0).
 StaticsProblem staticsProblem(const Scene& scene);
 
-// Model, top motion, static initial state: ready to step. Throws std::runtime_error when the
-// statics do not converge.
-std::unique_ptr<Simulator> buildSimulator(const Scene& scene, StaticsResult* statics = nullptr);
-
 }  // namespace riser_sim

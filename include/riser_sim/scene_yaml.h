@@ -24,7 +24,6 @@ class SceneError : public std::runtime_error {
 // Size limits of a loaded scene (docs/scene_keys.md, "Limits"): the static initial state is a dense
 // Newton solve on ~2n unknowns, the dense implicit Jacobian four p x p matrices (p ~ 4n on absolute).
 constexpr int kMaxSceneElements = 2000;          // line.elements
-constexpr int kMaxDenseJacobianElements = 1000;  // line.elements with a dense implicit Jacobian
 constexpr double kMaxSceneSteps = 1e9;           // run.duration / solver.dt
 constexpr double kMaxSceneNumber = 1e15;         // |every number|: larger ones overflow the forces
 

@@ -12,6 +12,7 @@
 
 #include "cli_options.h"
 #include "modal_output.h"
+#include "riser_sim/run_builder.h"
 #include "riser_sim/scene.h"
 #include "riser_sim/scene_yaml.h"
 #include "run_output.h"

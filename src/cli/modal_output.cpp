@@ -6,6 +6,7 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "riser_sim/run_builder.h"
 #include "riser_sim/modal.h"
 
 namespace riser_sim {

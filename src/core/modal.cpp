@@ -8,6 +8,7 @@
 
 #include "riser_sim/force_term.h"
 #include "riser_sim/independent_formulation.h"
+#include "riser_sim/run_builder.h"
 #include "riser_sim/scene.h"
 
 namespace riser_sim {
@@ -249,14 +250,9 @@ ModalResult computeModes(const Model& model, const Kinematics& equilibrium, cons
 
 ModalResult sceneModes(const Scene& scene, const ModalOptions& options, StaticsResult* statics) {
   std::shared_ptr<Model> model = buildModel(scene);
-  StaticsProblem problem = staticsProblem(scene);
-  // A 'straight' initial state is not an equilibrium: the modes are taken about the hanging one.
-  if (scene.initial.type == "straight") problem.kind = StaticsProblem::Kind::kHanging;
-  StaticsResult st = solveStatics(*model, problem, 0.0);
-  if (!st.converged) throw std::runtime_error("initial: " + st.message);
-  if (scene.initial.type == "straight") st.message = "hanging equilibrium (initial.type straight is none); " + st.message;
-  if (statics) *statics = st;
-  return computeModes(*model, st.kin, st.end_force, options);
+  const InitialState init = solveInitialState(scene, *model, buildTopMotion(scene.top)->at(0.0).p, true);
+  if (statics) *statics = init.statics;
+  return computeModes(*model, init.kin, init.end_force, options);
 }
 
 }  // namespace riser_sim

@@ -5,7 +5,6 @@
 #include "riser_sim/forces/axial_spring.h"
 #include "riser_sim/forces/bending_spring.h"
 #include "riser_sim/forces/buoyancy.h"
-#include "riser_sim/forces/end_load.h"
 #include "riser_sim/forces/gravity.h"
 #include "riser_sim/forces/hydro_inertia.h"
 #include "riser_sim/forces/morison_drag.h"
@@ -65,32 +64,6 @@ StaticsProblem staticsProblem(const Scene& scene) {
     p.kind = StaticsProblem::Kind::kHanging;
   }
   return p;
-}
-
-std::unique_ptr<Simulator> buildSimulator(const Scene& scene, StaticsResult* statics) {
-  std::shared_ptr<Model> model = buildModel(scene);
-  const StaticsProblem problem = staticsProblem(scene);
-  StaticsResult st;
-  if (scene.initial.type == "straight") {
-    st.converged = true;
-    st.kin = straightLine(*model, problem.top, scene.initial.angle);
-    st.message = "straight initial state (not an equilibrium)";
-  } else {
-    st = solveStatics(*model, problem, 0.0);
-    if (!st.converged) throw std::runtime_error("initial: " + st.message);
-  }
-  if (scene.initial.type == "displaced" && scene.initial.end_force == "hold")
-    model->addTerm(std::make_unique<EndLoad>(st.end_force));
-  auto sim = std::make_unique<Simulator>(model, buildTopMotion(scene.top), scene.solver);
-  // A pinned bottom that the statics did not place is held where the initial state puts it.
-  sim->setInitialState(st.kin, 0.0);
-  // Values within the loader's limits can still combine into forces beyond double range (an extreme
-  // sinusoid, stabilisation or drag): such a run never starts, so nothing non-finite is published.
-  if (!sim->state().allFinite() || !allFinite(sim->outputs()))
-    throw std::runtime_error("initial: the initial state or its forces are not finite (NaN/Inf): the scene's values "
-                             "combine beyond double range");
-  if (statics) *statics = st;
-  return sim;
 }
 
 }  // namespace riser_sim

@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "riser_sim/integrator.h"
+#include "riser_sim/solver_setup.h"
 
 namespace riser_sim {
 namespace {
@@ -406,14 +407,6 @@ void parseSolver(const Section& root, Scene& s) {
   s.solver.dt = solver.number("dt", defaults.dt);
   requirePositive(solver.key("dt"), s.solver.dt);
   s.solver.integrator = solver.text("integrator", defaults.integrator);
-  try {
-    makeIntegrator(s.solver.integrator);  // the core's list of integrators is the one that counts
-  } catch (const std::invalid_argument& e) {
-    std::string what = e.what();
-    const std::string prefix = solver.key("integrator") + ": ";
-    if (what.rfind(prefix, 0) == 0) what = what.substr(prefix.size());
-    throw SceneError(solver.key("integrator"), what);
-  }
   s.solver.formulation = solver.choice("formulation", defaults.formulation, kFormulations);
   s.solver.stabilization = solver.number("stabilization", defaults.stabilization);
   requireNonNegative(solver.key("stabilization"), s.solver.stabilization);
@@ -424,17 +417,9 @@ void parseSolver(const Section& root, Scene& s) {
   s.solver.jacobian_interval = solver.number("jacobian_interval", defaults.jacobian_interval);
   requireNonNegative(solver.key("jacobian_interval"), s.solver.jacobian_interval);
   s.solver.jacobian = solver.choice("jacobian", defaults.jacobian, {"auto", "structured", "dense"});
-  if (s.solver.jacobian == "structured" && s.solver.formulation == "absolute")
-    throw SceneError(solver.key("jacobian"),
-                     "'structured' needs solver.formulation independent or recursive (absolute has none)");
-  const bool implicit = isImplicitIntegrator(s.solver.integrator);
-  const bool dense =
-      s.solver.jacobian == "dense" || (s.solver.jacobian == "auto" && s.solver.formulation == "absolute");
-  if (implicit && dense && s.elements > kMaxDenseJacobianElements)
-    throw SceneError("line.elements", "must be <= " + std::to_string(kMaxDenseJacobianElements) + " with a dense " +
-                                          s.solver.integrator + " Jacobian (O(n^2) memory, O(n^3) time), got " +
-                                          std::to_string(s.elements) +
-                                          "; use solver.formulation recursive or independent (structured solves)");
+  // The integrator's name, the combination and the size limits: the core's one check.
+  if (const auto error = checkSolverSetup(s.solver, s.elements, s.options.axial_flexibility))
+    throw SceneError(error->key, error->message);
 }
 
 void parseRun(const Section& root, Scene& s) {

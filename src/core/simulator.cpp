@@ -9,13 +9,11 @@
 #include "riser_sim/independent_formulation.h"
 #include "riser_sim/recursive_formulation.h"
 #include "riser_sim/force_term.h"
+#include "riser_sim/solver_setup.h"
 
 namespace riser_sim {
 
 namespace {
-// Largest p for the implicit schemes' dense Jacobian: one refresh is 2p evaluations + an LU of ~(2/3) p³
-// flops (p = 2000: 5 GFlop, seconds on this machine, every solver.jacobian_interval).
-constexpr int kMaxDenseCoordinates = 2000;
 // Divergence by unresolved motion (checkDivergence): an rfe turning by more than 0.5 rad (29 deg) or
 // stretching by more than 10 % in one step: far beyond anything a resolved run does (every sound case of
 // test_extremes, the snap load included, stays below).
@@ -38,7 +36,8 @@ std::unique_ptr<Formulation> makeFormulation(const Model& model, const SolverSet
 Simulator::Simulator(std::shared_ptr<const Model> model, std::unique_ptr<TopMotion> top,
                      const SolverSettings& settings)
     : model_(std::move(model)), top_(std::move(top)), settings_(settings) {
-  if (!(settings_.dt > 0.0) || !std::isfinite(settings_.dt)) throw std::invalid_argument("solver.dt: must be > 0");
+  if (const auto error = checkSolverSetup(settings_, model_->segments(), model_->options().axial_flexibility))
+    throw std::invalid_argument(error->what());
   formulation_ = makeFormulation(*model_, settings_);
   term_data_ = TermDataSet(*model_);
   formulation_->setTermData(&term_data_);
@@ -46,28 +45,7 @@ Simulator::Simulator(std::shared_ptr<const Model> model, std::unique_ptr<TopMoti
   io.tolerance = settings_.tolerance;
   io.position_size = formulation_->positionSize();
   io.jacobian_interval = settings_.jacobian_interval;
-  if (settings_.jacobian == "auto")
-    io.jacobian = formulation_->hasShiftedSolve() ? "structured" : "dense";
-  else if (settings_.jacobian == "structured" && !formulation_->hasShiftedSolve())
-    throw std::invalid_argument("solver.jacobian: 'structured' needs solver.formulation independent or recursive (" +
-                                formulation_->name() + " has no structured solve); use 'dense' or 'auto'");
-  else if (settings_.jacobian != "structured" && settings_.jacobian != "dense")
-    throw std::invalid_argument("solver.jacobian: unknown value '" + settings_.jacobian +
-                                "' (accepted: auto, structured, dense)");
-  else
-    io.jacobian = settings_.jacobian;
-  const bool implicit = isImplicitIntegrator(settings_.integrator);
-  if (implicit && io.jacobian == "dense" && io.position_size > kMaxDenseCoordinates) {
-    std::ostringstream why;
-    why << "solver.jacobian: the implicit " << settings_.integrator << " would use a dense Jacobian of p = "
-        << io.position_size << " coordinates (" << formulation_->name()
-        << " formulation): O(p³) per refresh, O(p²) per step, refused above " << kMaxDenseCoordinates
-        << "; use solver.formulation recursive (structured O(n) solves), fewer line.elements, or "
-           "solver.integrator rk4 / dopri5";
-    throw std::invalid_argument(why.str());
-  }
-  if (!(io.tolerance > 0.0)) throw std::invalid_argument("solver.tolerance: must be > 0");
-  if (!(io.jacobian_interval >= 0.0)) throw std::invalid_argument("solver.jacobian_interval: must be >= 0");
+  io.jacobian = resolvedJacobian(settings_);
   integrator_ = makeIntegrator(settings_.integrator, io);
   const int n = 2 * formulation_->positionSize() + 1;
   y_.setZero(n);

@@ -1,3 +1,4 @@
+#include "riser_sim/run_builder.h"
 #include "riser_sim_ros/modes_service.h"
 
 #include <cmath>

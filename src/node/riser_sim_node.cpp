@@ -6,6 +6,8 @@
 
 #include "riser_sim/integrator.h"
 #include "riser_sim/modal.h"
+#include "riser_sim/run_builder.h"
+#include "riser_sim/solver_setup.h"
 #include "riser_sim/scene_yaml.h"
 #include "riser_sim/statics.h"
 #include "riser_sim_ros/modes_service.h"
@@ -67,18 +69,9 @@ RiserSimNode::RiserSimNode(ros::NodeHandle nh, ros::NodeHandle pnh)
   if (scene_.top.type != "external" && scene_.top.type != "fixed")
     ROS_WARN("%s: ~scene/top/motion/type '%s' ignored: the node drives the top from the vessel", name_.c_str(),
              scene_.top.type.c_str());
-  // Catch what only building reveals (integrator, formulation, sizes) now, as a configuration error.
-  try {
-    riser_sim::Scene trial = scene_;
-    trial.top.type = "fixed";
-    riser_sim::Simulator check(riser_sim::buildModel(trial), riser_sim::buildTopMotion(trial.top), trial.solver);
-  } catch (const std::exception& e) {
-    std::string what = e.what();
-    const auto colon = what.find(": ");
-    if (colon != std::string::npos && what.find(' ') > colon)  // "solver.dt: must be > 0"
-      throw ParamError(paramPath("scene", what.substr(0, colon)), what.substr(colon + 2));
-    throw ParamError("scene", what);
-  }
+  // The loader checked the scene; the solver setup once more with the core's one check, as a parameter error.
+  if (const auto error = riser_sim::checkSolverSetup(scene_.solver, scene_.elements, scene_.options.axial_flexibility))
+    throw ParamError(paramPath("scene", error->key), error->message);
 
   // tf is only read for tf input or poses in another frame: k risers that each listened to /tf would
   // each deserialise every riser's transforms (k^2 work).
@@ -258,25 +251,26 @@ bool RiserSimNode::start(const VesselSample& s, const ros::Time& now, std::strin
     riser_sim::Scene sc = scene_;
     sc.top.type = "fixed";
     sc.top.position = top;
-    std::shared_ptr<riser_sim::Model> model = riser_sim::buildModel(sc);
-    riser_sim::StaticsResult st;
-    if (sc.initial.type == "straight") {
-      st.kin = riser_sim::straightLine(*model, top, sc.initial.angle);
-    } else {
-      st = riser_sim::solveStatics(*model, riser_sim::staticsProblem(sc), 0.0);
-      if (!st.converged) {
-        mode_ = Mode::kStaticsFailed;
-        reason_ = "initial statics at hang-off (" + num(top.x()) + ", " + num(top.y()) + ") failed: " + st.message;
-        message = reason_;
-        std::lock_guard<std::mutex> lock(static_mutex_);
-        if (!static_state_) static_failure_ = reason_;
-        return false;
-      }
+    riser_sim::RunInputs in;
+    in.top = top;
+    auto motion = std::make_unique<riser_sim::ExternalMotion>(top, simTime(s.stamp), params_.motion);
+    riser_sim::ExternalMotion* external = motion.get();
+    in.motion = std::move(motion);
+    riser_sim::Run run;
+    try {
+      run = riser_sim::buildRun(sc, std::move(in));
+    } catch (const std::runtime_error& e) {  // the statics failed, or the start is not finite
+      mode_ = Mode::kStaticsFailed;
+      reason_ = "initial statics at hang-off (" + num(top.x()) + ", " + num(top.y()) + ") failed: " + e.what();
+      message = reason_;
+      std::lock_guard<std::mutex> lock(static_mutex_);
+      if (!static_state_) static_failure_ = reason_;
+      return false;
     }
     auto state = std::make_shared<StaticState>();
     state->scene = sc;
-    state->kin = st.kin;
-    state->end_force = st.end_force;
+    state->kin = run.initial.kin;
+    state->end_force = run.initial.end_force;
     state->stamp = now;
     {
       std::lock_guard<std::mutex> lock(static_mutex_);
@@ -285,10 +279,9 @@ bool RiserSimNode::start(const VesselSample& s, const ros::Time& now, std::strin
     origin_ = ros::Time::now();  // after the statics: their cost is not a backlog to catch up
     if (origin_ < now) origin_ = now;
     dropped_ = 0.0;
-    auto motion = std::make_unique<riser_sim::ExternalMotion>(top, simTime(s.stamp), params_.motion);
-    motion_ = motion.get();
-    sim_ = std::make_unique<riser_sim::Simulator>(model, std::move(motion), sc.solver);
-    sim_->setInitialState(st.kin, 0.0);
+    motion_ = external;
+    std::shared_ptr<const riser_sim::Model> model = run.model;
+    sim_ = std::move(run.sim);
     msgs_ = std::make_unique<LineMessages>(*model, params_.fixed_frame, params_.tf_prefix);
     markers_ = std::make_unique<LineMarkers>(*model, params_.fixed_frame, params_.markers, surfacesOf(sc));
   } catch (const std::exception& e) {

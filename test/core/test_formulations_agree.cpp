@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <random>
 
+#include "riser_sim/run_builder.h"
 #include "riser_sim/absolute_formulation.h"
 #include "riser_sim/force_term.h"
 #include "riser_sim/independent_formulation.h"

@@ -10,6 +10,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "riser_sim/run_builder.h"
 #include "riser_sim/forces/internal_flow.h"
 #include "riser_sim/scene_yaml.h"
 

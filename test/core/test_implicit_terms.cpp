@@ -16,6 +16,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "riser_sim/run_builder.h"
 #include "riser_sim/scene_yaml.h"
 
 namespace riser_sim {

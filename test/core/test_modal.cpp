@@ -4,6 +4,7 @@
 
 #include <cstdio>
 
+#include "riser_sim/run_builder.h"
 #include "riser_sim/modal.h"
 #include "riser_sim/scene_yaml.h"
 #include "validation_util.h"

@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <new>
 
+#include "riser_sim/run_builder.h"
 #include "riser_sim/scene.h"
 #include "riser_sim/scene_yaml.h"
 #include "validation_util.h"

@@ -12,6 +12,7 @@
 
 #include "riser_sim/recursive_formulation.h"
 #include "riser_sim/independent_formulation.h"
+#include "riser_sim/run_builder.h"
 #include "riser_sim/scene.h"
 #include "riser_sim/scene_yaml.h"
 #include "validation_util.h"

@@ -10,6 +10,7 @@
 #include "riser_sim/force_term.h"
 #include "riser_sim/forces/seabed.h"
 #include "riser_sim/modal.h"
+#include "riser_sim/run_builder.h"
 #include "riser_sim/scene.h"
 #include "riser_sim/scene_yaml.h"
 

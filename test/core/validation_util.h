@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "riser_sim/run_builder.h"
 #include "riser_sim/scene.h"
 
 namespace riser_sim {

@@ -6,6 +6,7 @@
 #include <regex>
 #include <sstream>
 
+#include "riser_sim/run_builder.h"
 #include "riser_sim/scene.h"
 #include "riser_sim/scene_yaml.h"
 

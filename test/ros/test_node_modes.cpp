@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "node_test_util.h"
+#include "riser_sim/run_builder.h"
 #include "riser_sim/Modes.h"
 #include "riser_sim/modal.h"
 #include "riser_sim/scene_yaml.h"

@@ -1,0 +1,30 @@
+// Every check of a solver setup in one place. The scene loader (as a SceneError), the Simulator
+// (std::invalid_argument) and the node (a parameter error) all call checkSolverSetup, so their limits
+// cannot disagree.
+#pragma once
+#include <optional>
+#include <string>
+
+namespace riser_sim {
+
+struct SolverSettings;
+
+struct SetupError {
+  std::string key;      // scene key, e.g. "solver.jacobian"
+  std::string message;  // what is wrong and what to do instead
+  std::string what() const { return key + ": " + message; }
+};
+
+// Largest dense implicit Jacobian: p coordinates (four p x p matrices: 128 MB, O(p^3) per refresh).
+constexpr int kMaxDenseCoordinates = 2000;
+
+// Coordinates per rfe of a formulation ("absolute": 4; chains: 2, or 1 for an inextensible line).
+int coordinatesPerRfe(const std::string& formulation, bool axial_flexibility);
+// The linear solves an implicit scheme uses for solver.jacobian (auto -> structured where the
+// formulation has them, else dense).
+std::string resolvedJacobian(const SolverSettings& s);
+
+// Checks integrator, formulation, jacobian and their combination for a line of `elements` segments.
+std::optional<SetupError> checkSolverSetup(const SolverSettings& s, int elements, bool axial_flexibility);
+
+}  // namespace riser_sim

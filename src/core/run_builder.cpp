@@ -1,0 +1,59 @@
+#include "riser_sim/run_builder.h"
+
+#include <stdexcept>
+
+#include "riser_sim/forces/end_load.h"
+
+namespace riser_sim {
+
+InitialState solveInitialState(const Scene& scene, const Model& model, const Vec2& top, bool equilibrium_only) {
+  InitialState init;
+  const bool straight = scene.initial.type == "straight";
+  if (straight && !equilibrium_only) {
+    init.kin = straightLine(model, top, scene.initial.angle);
+    init.equilibrium = false;
+    init.about = "straight line (not an equilibrium)";
+    init.statics.converged = true;
+    init.statics.kin = init.kin;
+    init.statics.message = init.about;
+    return init;
+  }
+  StaticsProblem problem = staticsProblem(scene);
+  problem.top = top;
+  if (straight) problem.kind = StaticsProblem::Kind::kHanging;  // the modes of a straight start
+  init.statics = solveStatics(model, problem, 0.0);
+  if (!init.statics.converged) throw std::runtime_error("initial: " + init.statics.message);
+  init.kin = init.statics.kin;
+  init.end_force = init.statics.end_force;
+  init.about = straight ? "hanging equilibrium (initial.type straight is none)" : scene.initial.type + " equilibrium";
+  if (straight) init.statics.message = init.about + "; " + init.statics.message;
+  return init;
+}
+
+Run buildRun(const Scene& scene, RunInputs inputs) {
+  Run run;
+  run.model = buildModel(scene);
+  if (!inputs.motion) inputs.motion = buildTopMotion(scene.top);
+  const Vec2 top = inputs.top ? *inputs.top : inputs.motion->at(0.0).p;
+  run.initial = solveInitialState(scene, *run.model, top);
+  // The statics' end force stays on as a constant end load, so the start is an exact equilibrium.
+  if (scene.initial.type == "displaced" && scene.initial.end_force == "hold")
+    run.model->addTerm(std::make_unique<EndLoad>(run.initial.end_force));
+  run.sim = std::make_unique<Simulator>(run.model, std::move(inputs.motion), scene.solver);
+  // A pinned bottom that the statics did not place is held where the initial state puts it.
+  run.sim->setInitialState(run.initial.kin, 0.0);
+  // Values within the loader's limits can still combine into forces beyond double range (an extreme
+  // sinusoid, stabilisation or drag): such a run never starts, so nothing non-finite is published.
+  if (!run.sim->state().allFinite() || !allFinite(run.sim->outputs()))
+    throw std::runtime_error("initial: the initial state or its forces are not finite (NaN/Inf): the scene's values "
+                             "combine beyond double range");
+  return run;
+}
+
+std::unique_ptr<Simulator> buildSimulator(const Scene& scene, StaticsResult* statics) {
+  Run run = buildRun(scene);
+  if (statics) *statics = run.initial.statics;
+  return std::move(run.sim);
+}
+
+}  // namespace riser_sim
