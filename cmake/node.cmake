@@ -35,6 +35,9 @@ if(CATKIN_ENABLE_TESTING)
     catkin_add_gtest(test_node_helpers test/ros/test_node_helpers.cpp)
     target_link_libraries(test_node_helpers riser_sim_ros)
   endif()
+  # rosrun finds the programs once and quietly (the workspace is not inside the package tree).
+  catkin_add_gtest(test_rosrun test/ros/test_rosrun.cpp)
+  add_dependencies(test_rosrun riser_sim_cli)
   # Node tests: test/ros/<name>.test launches the node(s) and the gtest built from test/ros/test_<name>.cpp.
   file(GLOB RISER_SIM_ROSTESTS RELATIVE ${CMAKE_CURRENT_SOURCE_DIR}/test/ros ${CMAKE_CURRENT_SOURCE_DIR}/test/ros/*.test)
   foreach(test_file ${RISER_SIM_ROSTESTS})

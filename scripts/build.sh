@@ -1,10 +1,18 @@
 #!/usr/bin/env bash
-# Builds the catkin workspace in .ws/ (the repo root is the package, linked as .ws/src/riser_sim).
+# Builds the catkin workspace in .ws/. The repo root is the package: .ws/src/riser_sim holds a link to each of
+# its top-level entries but not to .ws itself, so tools that search the package tree (rosrun's find -L,
+# rospack) never walk into the workspace (a link to the whole root made a loop and duplicate executables).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 ws=${RISER_SIM_WS:-$root/.ws}
 mkdir -p "$ws/src"
-[ -e "$ws/src/riser_sim" ] || ln -s "$root" "$ws/src/riser_sim"
+pkg=$ws/src/riser_sim
+[ -L "$pkg" ] && rm "$pkg"  # the earlier layout: one link to the whole root
+mkdir -p "$pkg"
+for entry in "$root"/*; do
+  [ "$entry" -ef "$ws" ] || ln -sfn "$entry" "$pkg/$(basename "$entry")"
+done
+find "$pkg" -maxdepth 1 -xtype l -delete  # entries removed from the root
 cd "$ws"
 # ROS setup scripts read unset variables; keep -u off while sourcing them.
 set +u
