@@ -6,7 +6,7 @@
 #     -> out/bench/tradeoff.csv, references.csv;
 #  3. bench/plot_tradeoff.py -> out/bench/pareto_<case>.png, pareto.png, step_cost.png and the cheapest
 #     setting per accuracy.
-# By default a shorter sweep than the one in docs/integrators.md: n in {10, 20, 40, 100}, runs over 2 s of
+# By default a shorter sweep than the one in docs/benchmarks.md: n in {10, 20, 40, 100}, runs over 2 s of
 # CPU skipped, step cost to n = 400 (11 min on the 2-core machine, 10.5 min of CPU). RISER_SIM_TRADEOFF_FULL=1
 # runs the documented sweep (every n to 1000, 20 s budget per run: 20 min of wall time on a quiet machine,
 # 19 min of CPU, plus the full step cost table).
