@@ -44,7 +44,7 @@ bench: build
 	@$(SETUP); bench/run_all.sh
 
 # An hour of simulated time of the J-lay scene through /clock: memory, step time, error bounds
-# -> out/soak/soak.csv, soak.txt (docs/ros_interface.md, "Soak"). ~15-20 min.
+# -> out/soak/soak.csv, soak.txt (docs/benchmarks.md, "Soak"). ~15-20 min.
 soak: build
 	@bench/soak.sh
 

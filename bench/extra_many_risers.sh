@@ -4,8 +4,8 @@
 set -eo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 if [ "${RISER_SIM_BENCH_MANY:-0}" != 1 ]; then
-  echo "== Many risers (issue 6): skipped; RISER_SIM_BENCH_MANY=1 make bench runs it (10-20 min) =="
+  echo "== Many risers: skipped; RISER_SIM_BENCH_MANY=1 make bench runs it (10-20 min) =="
   exit 0
 fi
-echo "== Many risers at real time: nodes and nodelets (issue 6) =="
+echo "== Many risers at real time: nodes and nodelets =="
 "$root/bench/many_risers.sh" both

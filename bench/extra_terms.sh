@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Cost of each force term (issue 4): steps per second of the 500 m riser (n = 50, h = 1e-3 s, 20 s,
+# Cost of each force term: steps per second of the 500 m riser (n = 50, h = 1e-3 s, 20 s,
 # absolute, rk4) with gravity, springs and buoyancy, then with each sea/flow term switched on alone.
 # Median of 3 runs of riser_sim_cli --summary, steps per second of thread CPU time (cpu_s; the wall
 # time is listed beside it: the machine may be shared); writes out/bench/terms.csv.

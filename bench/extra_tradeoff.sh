@@ -1,12 +1,12 @@
 #!/usr/bin/env bash
-# Speed against accuracy (issue 5), part of `make bench`:
+# Speed against accuracy, part of `make bench`:
 #  1. riser_sim_bench_step_cost: cost of one step vs n per integrator / formulation / linear solve
 #     -> out/bench/step_cost.csv;
 #  2. riser_sim_bench_tradeoff: integrator x formulation x n x h (or tolerance) on the five cases
 #     -> out/bench/tradeoff.csv, references.csv;
 #  3. bench/plot_tradeoff.py -> out/bench/pareto_<case>.png, pareto.png, step_cost.png and the cheapest
 #     setting per accuracy.
-# By default a shorter sweep than the one in docs/integrators.md: n in {10, 20, 40, 100}, runs over 2 s of
+# By default a shorter sweep than the one in docs/benchmarks.md: n in {10, 20, 40, 100}, runs over 2 s of
 # CPU skipped, step cost to n = 400 (11 min on the 2-core machine, 10.5 min of CPU). RISER_SIM_TRADEOFF_FULL=1
 # runs the documented sweep (every n to 1000, 20 s budget per run: 20 min of wall time on a quiet machine,
 # 19 min of CPU, plus the full step cost table).
@@ -27,9 +27,9 @@ else
   cost_args=(--max-n 400 --target 0.2)
   sweep_args=(--ns 10,20,40,100 --max-run 2)
 fi
-echo "== Speed against accuracy: cost of one step vs n (issue 5) =="
+echo "== Speed against accuracy: cost of one step vs n =="
 "$bin/riser_sim_bench_step_cost" --out out/bench "${cost_args[@]}"
 echo
-echo "== Speed against accuracy: the trade per case (issue 5) =="
+echo "== Speed against accuracy: the trade per case =="
 "$bin/riser_sim_bench_tradeoff" --out out/bench "${sweep_args[@]}"
 /usr/bin/python3 bench/plot_tradeoff.py out/bench/tradeoff.csv out/bench

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Load figure (issue 6): the largest number of risers that run at real-time factor >= 0.99, as separate
+# Load figure: the largest number of risers that run at real-time factor >= 0.99, as separate
 # riser_sim_node processes and as nodelets in one manager, with the vessel at 100 Hz (bench/many_risers.py).
 # Scene: the paper's 500 m riser (config/scenes/paper_riser_500m.yaml: n = 50, rk4, dt = 1 ms, drag and
 # added mass), its top driven by the vessel. Private roscore; out/bench/many_risers.csv and logs.

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """The paper's Table 1 (m_s = 1000 kg on a 100 m line, RK4, h = 1e-4 s, 20 s) run with riser_sim_cli:
 our x_s(20), y_s(20) and wall time (median of --repeat runs) beside the paper's.
---sim: one run each for n = 10, 20, 40 (the README's quick check)."""
+--sim: one run each for n = 10, 20, 40 (make sim: a quick check)."""
 import argparse
 import json
 import os

@@ -1,9 +1,10 @@
 #!/usr/bin/env python3
 """Pareto plots of riser_sim_bench_tradeoff's CSV (out/bench/tradeoff.csv): for every case the probe
 position error against the run's time, one curve (its Pareto front) per integrator / formulation /
-linear solve, every run drawn faintly; the reference's own spread shaded; the issue's targets as lines.
-Writes <out>/pareto_<case>.png, <out>/pareto.png (all cases) and, from step_cost.csv when present,
-<out>/step_cost.png. Prints, per case and accuracy, the cheapest setting that reaches it.
+linear solve, every run drawn faintly; the reference's own spread shaded; the speed/accuracy targets
+(docs/benchmarks.md) as lines. Writes <out>/pareto_<case>.png, <out>/pareto.png (all cases) and, from
+step_cost.csv when present, <out>/step_cost.png. Prints, per case and accuracy, the cheapest setting
+that reaches it.
 
   plot_tradeoff.py [--clock=cpu|wall] [CSV [OUT_DIR]]
 
@@ -26,7 +27,7 @@ src = args[0] if len(args) > 0 else "out/bench/tradeoff.csv"
 out = args[1] if len(args) > 1 else os.path.dirname(src) or "."
 tcol = "cpu_s" if clock == "cpu" else "wall_s"
 
-# Per case: simulated duration, title, targets (error [m], time [s]) from issue 5.
+# Per case: simulated duration, title, targets (error [m], time [s]): docs/benchmarks.md, "Targets".
 CASES = {
     "table1_elastic": (20.0, "Table 1 line, elastic: end at 20 s", [(1e-3, 0.1), (1e-2, 0.02)]),
     "table1_inextensible": (20.0, "Table 1 line, inextensible: end at 20 s", [(1e-3, 0.1), (1e-2, 0.02)]),

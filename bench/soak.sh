@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Soak run (issue 6): riser_sim_node on the J-lay scene for an hour of simulated time, driven through
+# Soak run: riser_sim_node on the J-lay scene for an hour of simulated time, driven through
 # /clock as fast as it keeps up (bench/soak.py), on a private roscore. Writes out/soak/soak.csv and
 # out/soak/soak.txt (summary: RSS, step time first vs last 5 min, energy and constraint error bounds).
 #   bench/soak.sh [simulated_seconds] [scene]        (make soak; needs make build)

@@ -1,5 +1,5 @@
 // riser_sim_bench_step_cost: cost of one step against n for each integrator x formulation x linear
-// solve (issue 5: "every step costs O(n)"), on three scenes: the 170 m J-lay with every hydro term it has
+// solve (is every step O(n)?), on three scenes: the 170 m J-lay with every hydro term it has
 // (gravity, axial and bending springs, buoyancy, Morison drag, added mass, internal fluid mass and flow
 // u = 5 m/s, seabed contact; n <= 300: its statics fail at n = 256, 320, 400, 500), the 500 m riser with
 // drag, added mass and a 5 m/s internal flow, and the Table 1 line (no water). The static initial state

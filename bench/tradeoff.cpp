@@ -1,4 +1,4 @@
-// riser_sim_bench_tradeoff: speed against accuracy (issue 5). For each case (bench/tradeoff_cases.cpp:
+// riser_sim_bench_tradeoff: speed against accuracy. For each case (bench/tradeoff_cases.cpp:
 // the paper's Table 1 line elastic and inextensible, the 170 m J-lay elastic and inextensible, the 500 m
 // riser) it first computes the references, then sweeps integrator x formulation x n x h (or tolerance)
 // and measures each run against them: the probe point's position at the end of the run, the peak and

@@ -39,7 +39,7 @@ std::vector<Case> allCases(const std::string& root) {
     c.ns = ns;
     // Elastic: rk4 at half its limit, recursive, n = 320 (-49.917961, -86.604043); n = 240 differs by
     // 0.09 mm, n = 160 by 1.1 mm (the undamped axial end-mass mode's phase converges non-monotonically in
-    // n; docs/integrators.md "References"). Inextensible: docs/validation.md, Richardson from n = 80/160.
+    // n; docs/benchmarks.md "Speed against accuracy"). Inextensible: docs/validation.md, Richardson from n = 80/160.
     c.fixed_probe = true;
     c.probe_ref = axial ? Vec2(-49.917961, -86.604043) : Vec2(-49.91890, -86.59851);
     c.probe_spread = axial ? 9e-5 : 1e-5;

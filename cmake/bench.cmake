@@ -6,7 +6,7 @@ target_compile_options(riser_sim_bench_formulations PRIVATE -O3)
 set_target_properties(riser_sim_bench_formulations PROPERTIES
   RUNTIME_OUTPUT_DIRECTORY ${CATKIN_DEVEL_PREFIX}/${CATKIN_PACKAGE_BIN_DESTINATION})
 
-# Speed against accuracy sweep (issue 5): bench/extra_tradeoff.sh runs it.
+# Speed against accuracy sweep: bench/extra_tradeoff.sh runs it.
 add_executable(riser_sim_bench_tradeoff bench/tradeoff.cpp bench/tradeoff_cases.cpp bench/tradeoff_run.cpp)
 target_link_libraries(riser_sim_bench_tradeoff riser_sim_core yaml-cpp)
 target_include_directories(riser_sim_bench_tradeoff PRIVATE test/core)
@@ -14,7 +14,7 @@ target_compile_options(riser_sim_bench_tradeoff PRIVATE -O3)
 set_target_properties(riser_sim_bench_tradeoff PROPERTIES
   RUNTIME_OUTPUT_DIRECTORY ${CATKIN_DEVEL_PREFIX}/${CATKIN_PACKAGE_BIN_DESTINATION})
 
-# Cost of one step against n per integrator / formulation / linear solve (issue 5).
+# Cost of one step against n per integrator / formulation / linear solve.
 add_executable(riser_sim_bench_step_cost bench/step_cost.cpp)
 target_link_libraries(riser_sim_bench_step_cost riser_sim_core yaml-cpp)
 target_compile_options(riser_sim_bench_step_cost PRIVATE -O3)

@@ -10,7 +10,7 @@
 // Newton stalls. The linear systems (I - c J) x = b reduce to the p x p matrix
 //   S = I - c A_v - c² A_q,   u = S^-1 (b_v + c A_q b_q),   x_q = b_q + c u,   x_v = u,
 // factored by partial-pivot LU (O(p³) per refresh, O(p²) per solve). This is not O(n) per step: the
-// cost is stated (measured) in docs/integrators.md. Workspaces are sized in reset(); step() does not
+// cost is stated (measured) in docs/benchmarks.md. Workspaces are sized in reset(); step() does not
 // allocate.
 #pragma once
 #include <Eigen/LU>

@@ -1,4 +1,4 @@
-// Modal analysis about a static equilibrium (issue 8): natural periods and mode shapes of the RFEM
+// Modal analysis about a static equilibrium: natural periods and mode shapes of the RFEM
 // model linearised in the independent coordinates θ = [Δ_0, φ_0, …, Δ_n, φ_n] (Δ dropped when the
 // line is inextensible), with A_0 held at its static position.
 //

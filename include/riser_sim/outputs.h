@@ -1,4 +1,4 @@
-// What the simulator reports after every step (issue: points, angles, elongations, tension,
+// What the simulator reports after every step (points, angles, elongations, tension,
 // bending moments, reactions at both ends, energy, constraint error).
 #pragma once
 #include <cmath>

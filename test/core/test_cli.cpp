@@ -295,7 +295,7 @@ TEST(Cli, EveryShippedSceneRuns) {
   }
 }
 
-// Issue 5: rk4's stability limit is estimated and reported up front; at 0.9x it the run completes, at 1.5x
+// rk4's stability limit is estimated and reported up front; at 0.9x it the run completes, at 1.5x
 // it stops with exit code 3 and a message naming the limit and a safe dt.
 TEST(Cli, StabilityLimitReportedAndEnforced) {
   const std::string scene = "--scene " + kScenes + "paper_table1.yaml --set line.elements=20 --summary";

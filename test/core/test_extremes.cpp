@@ -1,4 +1,4 @@
-// Stability at the extremes (issue 5), table-driven: every integrator on the absolute and the recursive
+// Stability at the extremes, table-driven: every integrator on the absolute and the recursive
 // formulation through n = 1 and 1000, soft and stiff material on short elements, no and huge end mass,
 // all-bending and no-bending lines, slack/compression, a teleporting top, a top shaken at the line's
 // highest natural frequency, internal flow at 50 m/s, drag coefficients 10 in a current, and h around
@@ -340,7 +340,7 @@ namespace {
 // One hour of the conservative Table 1 case (inextensible, n = 10, recursive) with the symmetric
 // midpoint rule at h = 0.02 s: the energy error must stay bounded, not drift. Measured: |E - E0| ≤
 // 2.4e-8 m g L at every 10-minute mark (docs/integrators.md); the bound leaves 4x for platforms.
-constexpr double kLongRunDuration = 3600.0;  // [s] issue 5: "1 hour of simulated time"
+constexpr double kLongRunDuration = 3600.0;  // [s] one hour of simulated time
 constexpr double kLongRunEnergyBound = 1e-7;
 
 // Runs the hour; worst = the largest |energy drift| at the 10-minute marks.

@@ -1,4 +1,4 @@
-// The implicit integrators with every force term (issue 5: "works with every force term"). A 60 m pipe
+// The implicit integrators with every force term (each must work with every one). A 60 m pipe
 // hangs in water from a top moving on an ellipse; one term is switched on at a time, then all together.
 // Reference: rk4 at a step 40x below the implicit schemes' (error ~1e-9 m). Checks, per term:
 // - rosenbrock2 and midpoint with the structured O(n) solves converge at second order: the error of the

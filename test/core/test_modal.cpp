@@ -1,4 +1,4 @@
-// Modal analysis (issue 8) against independent references, with observed convergence orders in n,
+// Modal analysis against independent references, with observed convergence orders in n,
 // and against the frequencies of small free oscillations of the nonlinear model.
 #include <gtest/gtest.h>
 

@@ -71,7 +71,7 @@ TEST(PipeFlow, EnergyBalanceClosesWithFlowPower) {
 
 TEST(PipeFlow, PaperModelStraightensWhereTheOpenSystemBends) {
   // The paper's closed-system Lagrangian (T3 = ½ ρ_l u² Σ∫|t|²) gives a couple that straightens a bend and
-  // vanishes as d -> 0 (README, internal flow). Here: a restoring couple vs an outward force.
+  // vanishes as d -> 0 (docs/limitations.md, internal flow). Here: a restoring couple vs an outward force.
   const Scene sp = pipeScene("paper"), so = pipeScene("pipe_flow");
   auto mp = buildModel(sp), mo = buildModel(so);
   Kinematics kin = straightLine(*mp, Vec2::Zero(), -M_PI / 2);

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Master restart and security checks of riser_sim_node (issue 6), outside rostest (the test kills and
+"""Master restart and security checks of riser_sim_node, outside rostest (the test kills and
 restarts the master, which rostest owns). Writes a JUnit file (one test case per check) for
 catkin_test_results; registered in cmake/node.cmake, run by scripts/test.sh.
 

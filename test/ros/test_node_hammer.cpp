@@ -1,4 +1,4 @@
-// Issue 6, topic data: a driver publishes the vessel path interleaved with every kind of bad pose, in
+// Bad topic data: a driver publishes the vessel path interleaved with every kind of bad pose, in
 // bursts and with a silence, on wall-time phases; the test then checks the node's outputs over the run.
 #include <rosgraph_msgs/Log.h>
 #include <tf2_msgs/TFMessage.h>
