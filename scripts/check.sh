@@ -5,6 +5,7 @@
 set -uo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${RISER_SIM_CHECK_DIR:-$root/.ws/check}
+mkdir -p "$(dirname "$build")"  # a fresh clone has no .ws: the cmake log goes beside the build
 cmake -S "$root" -B "$build" -DRISER_SIM_CORE_ONLY=ON -DCMAKE_BUILD_TYPE=Release >"$build.cmake.log" 2>&1 ||
   { cat "$build.cmake.log"; echo "0 passed, 1 failed"; exit 1; }
 cmake --build "$build" -j"$(nproc)" 2>&1 | grep -E "error|warning:" | head -n 40
