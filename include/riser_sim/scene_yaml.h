@@ -1,6 +1,7 @@
 // Scene files (YAML): the same format for the CLI and for the node's private parameters.
 // Every error names the offending key path (e.g. "line.outer_diameter").
 #pragma once
+#include <cstddef>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -26,6 +27,7 @@ class SceneError : public std::runtime_error {
 constexpr int kMaxSceneElements = 2000;          // line.elements
 constexpr double kMaxSceneSteps = 1e9;           // run.duration / solver.dt
 constexpr double kMaxSceneNumber = 1e15;         // |every number|: larger ones overflow the forces
+constexpr size_t kMaxSceneFileBytes = 1u << 20;  // a scene file (1 MiB): yaml-cpp takes ~250x that
 
 // Parses and validates a scene. Throws SceneError.
 Scene parseScene(const YAML::Node& root);

@@ -39,7 +39,9 @@ std::string usage() {
          "  --modes-csv FILE    mode shapes: mode,period_s,frequency_hz,character,point,s,x,y,dx,dy\n"
          "  --help              this text\n"
          "\n"
-         "exit codes: 0 ok, 2 bad input, 3 diverged or initial statics failed\n";
+         "exit codes: 0 ok, 2 bad input (option, scene, an output file that cannot be opened),\n"
+         "3 diverged or initial statics failed, 4 an output could not be written (disk full, I/O error;\n"
+         "the message names the file or stdout)\n";
 }
 
 CliOptions parseOptions(int argc, char** argv) {

@@ -21,6 +21,13 @@ struct CliOptions {
   std::vector<int> probe_rfes;         // --probe-rfe K: CSV columns of rfe K (checked against n later)
 };
 
+// Exit codes (usage() and docs/overview.md list them).
+constexpr int kExitOk = 0;
+constexpr int kExitInternal = 1;
+constexpr int kExitBadInput = 2;     // bad option, scene or value; an output file that cannot be opened
+constexpr int kExitDiverged = 3;     // the run diverged, or the initial statics failed
+constexpr int kExitWriteFailed = 4;  // an output (file or stdout) could not be written completely
+
 // Bad command line (exit code 2).
 class UsageError : public std::runtime_error {
  public:

@@ -1,28 +1,23 @@
 // riser_sim_cli: runs a scene offline (no roscore), writes an optional CSV time series and a JSON
-// summary. Exit codes: 0 ok, 1 internal error, 2 bad input, 3 diverged or initial statics failed.
+// summary. Exit codes (cli_options.h): 0 ok, 1 internal error, 2 bad input, 3 diverged or initial statics
+// failed, 4 an output could not be written.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cerrno>
 #include <cstdio>
-#include <cstring>
 #include <memory>
 #include <time.h>
 #include <sstream>
 
 #include "cli_options.h"
 #include "modal_output.h"
+#include "output_file.h"
 #include "riser_sim/run_builder.h"
 #include "riser_sim/scene.h"
 #include "riser_sim/scene_yaml.h"
 #include "run_output.h"
 
 namespace {
-
-constexpr int kExitOk = 0;
-constexpr int kExitInternal = 1;
-constexpr int kExitBadInput = 2;
-constexpr int kExitDiverged = 3;
 
 // CPU time of this thread [s] (the stepping's cost on a loaded machine, beside its wall time).
 double threadCpuSeconds() {
@@ -35,12 +30,6 @@ int fail(int code, const std::string& message) {
   std::fprintf(stderr, "riser_sim_cli: error: %s\n", message.c_str());
   return code;
 }
-
-struct FileCloser {
-  void operator()(std::FILE* f) const {
-    if (f) std::fclose(f);
-  }
-};
 
 }  // namespace
 
@@ -55,8 +44,10 @@ int main(int argc, char** argv) {
     return fail(kExitBadInput, e.what());
   }
   if (opt.help) {
+    OutputFile out;
+    out.useStdout();
     std::fputs(usage().c_str(), stdout);
-    return kExitOk;
+    return out.close() ? kExitOk : fail(kExitWriteFailed, out.error());
   }
   const auto info = [&](const char* fmt, auto... args) {
     if (opt.quiet) return;
@@ -111,27 +102,26 @@ int main(int argc, char** argv) {
     info("stability: highest frequency %g rad/s (rk4 would need solver.dt <= ~%g s); %s has no such limit",
          sim->highestFrequency(), sim->stableStepEstimate(), scene.solver.integrator.c_str());
 
-  std::unique_ptr<std::FILE, FileCloser> csv;
+  OutputFile csv;  // every row batch is checked: a full disk stops the run with exit code 4
   if (!opt.csv.empty()) {
-    csv.reset(std::fopen(opt.csv.c_str(), "w"));
-    if (!csv) return fail(kExitBadInput, "--csv: cannot open '" + opt.csv + "': " + std::strerror(errno));
+    if (!csv.open("--csv", opt.csv)) return fail(kExitBadInput, csv.error());
     std::fprintf(csv.get(), "%s\n", csvHeader(opt.probe_rfes).c_str());
   }
 
   // Whole steps: the run ends at the first step at or past the duration; a row every `every` steps.
   const double dt = sim->dt();
   const long total_steps = std::max(1L, static_cast<long>(std::ceil(scene.duration / dt - 1e-9)));
-  const long every = std::max(1L, std::lround(opt.output_dt / dt));
+  const long every = outputStride(opt.output_dt, dt, total_steps);
 
   std::string diverged;
   Sample last = takeSample(*sim, opt.probe_rfes);
   if (!allFinite(last)) diverged = "initial state has non-finite outputs";
-  if (csv && diverged.empty()) writeCsvRow(csv.get(), last);
+  if (csv.isOpen() && diverged.empty()) writeCsvRow(csv.get(), last);
 
   // Only the stepping is timed: sampling and writing are excluded from wall_s.
   std::chrono::steady_clock::duration wall{0};
   double cpu_s = 0.0;
-  while (diverged.empty() && sim->steps() < total_steps) {
+  while (diverged.empty() && csv.ok() && sim->steps() < total_steps) {
     const long chunk = std::min(every, total_steps - sim->steps());
     const auto start = std::chrono::steady_clock::now();
     const double cpu_start = threadCpuSeconds();
@@ -149,16 +139,18 @@ int main(int argc, char** argv) {
       break;
     }
     last = s;
-    if (csv) writeCsvRow(csv.get(), last);
+    if (csv.isOpen()) writeCsvRow(csv.get(), last);
   }
-  csv.reset();  // flush and close before reporting
+  const bool written = csv.close();  // flush and close before reporting
+  const std::string write_error = csv.error();
 
   const double wall_s = std::chrono::duration<double>(wall).count();
   const double sim_s = sim->time();
   const double rtf = wall_s > 0.0 ? sim_s / wall_s : NAN;  // null in JSON when too fast to time
+  bool summary_written = true;
   if (opt.summary) {
     JsonLine j;
-    j.add("status", diverged.empty() ? "ok" : "diverged")
+    j.add("status", !diverged.empty() ? "diverged" : written ? "ok" : "write_failed")
         .add("wall_s", wall_s)
         .add("cpu_s", cpu_s)
         .add("sim_s", sim_s)
@@ -183,15 +175,27 @@ int main(int argc, char** argv) {
         .add("end_force_x", statics.end_force.x())
         .add("end_force_y", statics.end_force.y());
     if (!diverged.empty()) j.add("diverged_at", sim_s).add("reason", diverged);
+    if (!written) j.add("write_error", write_error);
+    OutputFile out;
+    out.useStdout();
     std::printf("%s\n", j.str().c_str());
-    std::fflush(stdout);
+    summary_written = out.close();
+    if (!summary_written) fail(kExitWriteFailed, "--summary: " + out.error());
   }
+  int rc = summary_written ? kExitOk : kExitWriteFailed;
   if (!diverged.empty()) {
     char when[64];
     std::snprintf(when, sizeof(when), "diverged at t = %.9g s (step %ld): ", sim_s, sim->steps());
-    return fail(kExitDiverged,
-                when + diverged + (opt.csv.empty() ? "" : "; the CSV stops at the last finite row"));
+    rc = fail(kExitDiverged, when + diverged + (opt.csv.empty() ? "" : "; the CSV stops at the last finite row"));
   }
+  if (!written) {  // a lost output wins over a divergence: nothing written can be trusted
+    char when[96];
+    std::snprintf(when, sizeof(when), "; the file is incomplete%s (t = %.9g s reached)",
+                  diverged.empty() && sim->steps() < total_steps ? " and the run was stopped" : "", sim_s);
+    rc = fail(kExitWriteFailed, write_error + when);
+  }
+  if (!summary_written) rc = kExitWriteFailed;
+  if (rc != kExitOk) return rc;
   info("done: %g s simulated in %.3f s of stepping (RTF %.3g), %ld steps; end at (%.6g, %.6g) m", sim_s, wall_s,
        rtf, sim->steps(), last.x_end, last.y_end);
   return kExitOk;

@@ -1,11 +1,11 @@
 #include "modal_output.h"
 
-#include <cerrno>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <stdexcept>
 
+#include "cli_options.h"
+#include "output_file.h"
 #include "riser_sim/run_builder.h"
 #include "riser_sim/modal.h"
 
@@ -32,9 +32,9 @@ int runModes(const Scene& scene, int count, const std::string& csv_path, bool qu
   try {
     r = sceneModes(scene, o, &st);
   } catch (const std::invalid_argument& e) {
-    return fail(2, e.what());
+    return fail(kExitBadInput, e.what());
   } catch (const std::exception& e) {
-    return fail(3, e.what());
+    return fail(kExitDiverged, e.what());
   }
   if (!quiet) {
     std::fprintf(stderr,
@@ -48,6 +48,8 @@ int runModes(const Scene& scene, int count, const std::string& csv_path, bool qu
   if (r.equilibrium_residual > 1e-6)  // even with --quiet
     std::fprintf(stderr, "riser_sim_cli: warning: the state is not an equilibrium (residual %.2e); the modes are "
                  "not meaningful\n", r.equilibrium_residual);
+  OutputFile table;
+  table.useStdout();
   double big = 0.0;
   for (const Mode& m : r.modes) big = std::max(big, std::abs(m.omega2));
   std::printf("%4s %14s %16s %14s  %-10s %11s\n", "mode", "period [s]", "frequency [Hz]", "omega [rad/s]",
@@ -62,10 +64,11 @@ int runModes(const Scene& scene, int count, const std::string& csv_path, bool qu
     std::printf("%4zu %14.6g %16.6g %14.6g  %-10s %11.3f\n", k + 1, m.period, m.frequency, m.omega,
                 m.character.c_str(), m.axial_fraction);
   }
-  std::fflush(stdout);
-  if (csv_path.empty()) return 0;
-  std::FILE* f = std::fopen(csv_path.c_str(), "w");
-  if (!f) return fail(2, "--modes-csv: cannot open '" + csv_path + "': " + std::strerror(errno));
+  if (!table.close()) return fail(kExitWriteFailed, "--modes: " + table.error());
+  if (csv_path.empty()) return kExitOk;
+  OutputFile csv;
+  if (!csv.open("--modes-csv", csv_path)) return fail(kExitBadInput, csv.error());
+  std::FILE* f = csv.get();
   // Displacements are unitless (largest point displacement of each mode = 1).
   std::fprintf(f, "mode,period_s,frequency_hz,character,point,s,x,y,dx,dy\n");
   for (size_t k = 0; k < r.modes.size(); ++k) {
@@ -74,9 +77,9 @@ int runModes(const Scene& scene, int count, const std::string& csv_path, bool qu
       std::fprintf(f, "%zu,%.10g,%.10g,%s,%zu,%.10g,%.10g,%.10g,%.10g,%.10g\n", k + 1, m.period, m.frequency,
                    m.character.c_str(), p, r.arc_length[p], r.points[p].x() + 0.0, r.points[p].y() + 0.0,
                    m.displacement[p].x() + 0.0, m.displacement[p].y() + 0.0);  // + 0.0: no "-0"
+    if (!csv.ok()) break;
   }
-  const bool ok = std::fclose(f) == 0;
-  return ok ? 0 : fail(2, "--modes-csv: write to '" + csv_path + "' failed");
+  return csv.close() ? kExitOk : fail(kExitWriteFailed, csv.error());
 }
 
 }  // namespace cli

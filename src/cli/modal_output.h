@@ -8,7 +8,8 @@
 namespace riser_sim {
 namespace cli {
 
-// Returns the exit code: 0 ok, 2 bad input (CSV not writable, bad scene value), 3 statics failed.
+// Returns the exit code (cli_options.h): 0 ok, 2 bad input (CSV cannot be opened, bad scene value), 3 statics
+// failed, 4 the table or the CSV could not be written.
 int runModes(const Scene& scene, int count, const std::string& csv_path, bool quiet);
 
 }  // namespace cli

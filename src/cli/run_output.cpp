@@ -53,6 +53,12 @@ void writeCsvRow(std::FILE* f, const Sample& s) {
   std::fputc('\n', f);
 }
 
+long outputStride(double output_dt, double dt, long total_steps) {
+  const double ratio = std::round(output_dt / dt);
+  if (!(ratio < static_cast<double>(total_steps))) return total_steps;
+  return ratio < 1.0 ? 1L : static_cast<long>(ratio);
+}
+
 std::string jsonString(const std::string& s) {
   std::string out = "\"";
   for (const char c : s) {

@@ -34,6 +34,10 @@ std::string csvHeader(const std::vector<int>& probe_rfes = {});
 // Writes one row (%.9g). The caller checks allFinite() first: no NaN ever reaches the file.
 void writeCsvRow(std::FILE* f, const Sample& s);
 
+// Steps between CSV rows: output_dt / dt rounded, at least 1, at most total_steps (an output_dt beyond
+// the run gives its first and last rows only; the ratio can exceed a long).
+long outputStride(double output_dt, double dt, long total_steps);
+
 // Builds one line of JSON; non-finite numbers are written as null.
 class JsonLine {
  public:

@@ -48,30 +48,35 @@ double Dopri5::errorNorm(const VecX& y0, const VecX& y1) const {
   return std::sqrt(s / controlled_);
 }
 
-// Hairer's starting step (II.4): from |y|, |f| and a trial Euler step.
+// Hairer's starting step (II.4): from |y|, |f| and a trial Euler step. The norms are taken without the
+// tolerance factor (sc = 1 + |y|, then / tol): with tol = 1e-300 the scaled norms would overflow to
+// inf / inf = NaN; this way h stays finite and tiny, and step() reports the underflow with numbers.
 double Dopri5::initialStep(OdeSystem& sys, double t, const VecX& y, double h_max) {
   const double tol = options_.tolerance;
   double d0 = 0.0, d1 = 0.0;
   for (int i = 0; i < controlled_; ++i) {
-    const double sc = tol + tol * std::abs(y[i]);
+    const double sc = 1.0 + std::abs(y[i]);
     d0 += (y[i] / sc) * (y[i] / sc);
     d1 += (k1_[i] / sc) * (k1_[i] / sc);
   }
-  d0 = std::sqrt(d0 / controlled_);
+  d0 = std::sqrt(d0 / controlled_);  // |y| / tol in Hairer's terms: d0 / tol
   d1 = std::sqrt(d1 / controlled_);
-  double h0 = (d0 < 1e-5 || d1 < 1e-5) ? 1e-6 : 0.01 * d0 / d1;
+  double h0 = (d0 < 1e-5 * tol || d1 < 1e-5 * tol) ? 1e-6 : 0.01 * d0 / d1;
+  if (!(h0 > 0.0)) h0 = 1e-6;  // d1 not finite: the first substep shrinks from here
   h0 = std::min(h0, h_max);
   tmp_ = y + h0 * k1_;
   sys.rhs(t + h0, tmp_, k2_);
   ++stats_.rhs;
   double d2 = 0.0;
   for (int i = 0; i < controlled_; ++i) {
-    const double sc = tol + tol * std::abs(y[i]);
+    const double sc = 1.0 + std::abs(y[i]);
     const double r = (k2_[i] - k1_[i]) / sc;
     d2 += r * r;
   }
   d2 = std::sqrt(d2 / controlled_) / h0;
-  const double h1 = std::max(d1, d2) <= 1e-15 ? std::max(1e-6, h0 * 1e-3) : std::pow(0.01 / std::max(d1, d2), 0.2);
+  const double dmax = std::max(d1, d2);  // / tol in Hairer's terms
+  double h1 = dmax <= 1e-15 * tol ? std::max(1e-6, h0 * 1e-3) : std::pow(0.01 * tol / dmax, 0.2);
+  if (!(h1 > 0.0)) h1 = h0;  // dmax not finite
   return std::min({100.0 * h0, h1, h_max});
 }
 
@@ -105,9 +110,17 @@ void Dopri5::step(OdeSystem& sys, double t, VecX& y, double H) {
       return;
     }
     if (!(h > 1e-14 * std::max(1.0, std::abs(t))) || !std::isfinite(h)) {
-      char buf[160];
-      std::snprintf(buf, sizeof(buf), "dopri5: step size underflow (h = %.3g s) at t = %.9g s; loosen solver.tolerance",
-                    h, t);
+      char buf[240];
+      if (std::isfinite(h))
+        std::snprintf(buf, sizeof(buf),
+                      "dopri5: step size underflow (h = %.3g s, below 1e-14 max(1, |t|)) at t = %.9g s: "
+                      "solver.tolerance = %g cannot be met; loosen solver.tolerance",
+                      h, t, options_.tolerance);
+      else
+        std::snprintf(buf, sizeof(buf),
+                      "dopri5: the step size controller produced a non-finite step at t = %.9g s "
+                      "(solver.tolerance = %g); loosen solver.tolerance",
+                      t, options_.tolerance);
       failure_ = buf;  // y keeps the last accepted substep: finite; the caller stops on failure()
       return;
     }

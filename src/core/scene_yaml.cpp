@@ -568,12 +568,19 @@ Scene loadSceneText(const std::string& text, const std::string& source, const st
 
 Scene loadSceneFile(const std::string& path, const std::vector<std::string>& overrides) {
   if (std::filesystem::is_directory(path)) throw SceneError("", "scene file '" + path + "' is a directory");
-  std::ifstream in(path);
+  std::ifstream in(path, std::ios::binary);
   if (!in) throw SceneError("", "cannot open scene file '" + path + "': " + std::strerror(errno));
-  std::ostringstream text;
-  text << in.rdbuf();
+  // Bounded read: an endless input (/dev/zero, a pipe) must not grow memory until the process is killed.
+  std::string text;
+  char chunk[1 << 16];
+  while (in.read(chunk, sizeof(chunk)) || in.gcount() > 0) {
+    text.append(chunk, static_cast<size_t>(in.gcount()));
+    if (text.size() > kMaxSceneFileBytes)
+      throw SceneError("", "scene file '" + path + "' is larger than " + std::to_string(kMaxSceneFileBytes >> 20) +
+                               " MiB (" + std::to_string(kMaxSceneFileBytes) + " bytes), the limit for a scene file");
+  }
   if (in.bad()) throw SceneError("", "cannot read scene file '" + path + "': " + std::strerror(errno));
-  Scene s = loadSceneText(text.str(), path, overrides);
+  Scene s = loadSceneText(text, path, overrides);
   if (s.name.empty()) s.name = std::filesystem::path(path).stem().string();
   return s;
 }

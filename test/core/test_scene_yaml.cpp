@@ -417,6 +417,31 @@ TEST(SceneYaml, LoadFileReportsMissingFileAndSyntaxErrors) {
   std::filesystem::remove(path);
 }
 
+// The size limit is on the bytes read: a scene padded with a comment to exactly kMaxSceneFileBytes loads,
+// one byte more is refused naming the file and the limit.
+TEST(SceneYaml, LoadFileSizeLimit) {
+  const std::string path = tempPath("padded.yaml");
+  const std::string scene = std::string(kMinimal) + "\n#";
+  ASSERT_LT(scene.size() + 1, kMaxSceneFileBytes);
+  for (const size_t size : {kMaxSceneFileBytes, kMaxSceneFileBytes + 1}) {
+    SCOPED_TRACE(size);
+    std::ofstream(path) << scene << std::string(size - scene.size() - 1, 'x') << "\n";
+    ASSERT_EQ(std::filesystem::file_size(path), size);
+    if (size <= kMaxSceneFileBytes) {
+      EXPECT_NO_THROW(loadSceneFile(path));
+      continue;
+    }
+    try {
+      loadSceneFile(path);
+      FAIL() << "no SceneError";
+    } catch (const SceneError& e) {
+      EXPECT_EQ(std::string(e.what()), "scene file '" + path + "' is larger than 1 MiB (1048576 bytes), the limit "
+                                       "for a scene file");
+    }
+  }
+  std::filesystem::remove(path);
+}
+
 TEST(SceneYaml, NameDefaultsToTheFileStem) {
   const std::string path = tempPath("stem_test.yaml");
   std::ofstream(path) << kMinimal;
