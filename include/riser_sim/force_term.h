@@ -42,14 +42,15 @@ class ForceTerm {
                             StiffnessBlocks&) const {
     return false;
   }
-  // Potential energy of the conservative part [J].
-  virtual double potentialEnergy(const Model&, const TermData*, const Kinematics&) const { return 0.0; }
+  // Energy report (pure: a term states both, 0 where it has none; test_term_power checks
+  // Q·q' = -dV/dt + P). Potential energy of the conservative part [J].
+  virtual double potentialEnergy(const Model&, const TermData*, const Kinematics&) const = 0;
   // Same at time t [s], for terms whose potential depends on time (internal flow u(t)).
   virtual double potentialEnergyAt(const Model& m, const TermData* d, const Kinematics& k, double /*t*/) const {
     return potentialEnergy(m, d, k);
   }
   // Power [W] of the non-conservative part (damping, drag, ...) fed into the line.
-  virtual double power(const Model&, const TermData*, const Kinematics&, double /*t*/) const { return 0.0; }
+  virtual double power(const Model&, const TermData*, const Kinematics&, double t) const = 0;
   // addForces() and returns power() in one pass: the simulation's derivative needs both at every stage.
   // Terms whose power repeats the work of their forces (drag, flow) override it.
   virtual double addForcesAndPower(const Model& model, const TermData* data, const Kinematics& kin, double t,

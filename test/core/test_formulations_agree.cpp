@@ -41,6 +41,8 @@ class RandomInertia : public ForceTerm {
   }
   std::string name() const override { return "random_inertia"; }
   void addForces(const Model&, const TermData*, const Kinematics&, double, VecX&) const override {}
+  double potentialEnergy(const Model&, const TermData*, const Kinematics&) const override { return 0.0; }
+  double power(const Model&, const TermData*, const Kinematics&, double) const override { return 0.0; }
   bool hasInertia() const override { return true; }
   void addInertia(const Model& model, const Kinematics&, double, AlignedVector<Mat4>& M, VecX& h) const override {
     for (int i = 0; i < model.bodies(); ++i) {

@@ -13,6 +13,7 @@ class EndLoad : public ForceTerm {
   void addForces(const Model& model, const TermData*, const Kinematics& kin, double t, VecX& Q) const override;
   bool addStiffness(const Model& model, const TermData*, const Kinematics& kin, double t, StiffnessBlocks& S) const override;
   double potentialEnergy(const Model& model, const TermData*, const Kinematics& kin) const override;
+  double power(const Model&, const TermData*, const Kinematics&, double) const override { return 0.0; }  // conservative
   const Vec2& force() const { return force_; }
 
  private:

@@ -13,6 +13,7 @@ class MorisonDrag : public ForceTerm {
   std::string name() const override { return "morison_drag"; }
   void addForces(const Model& model, const TermData*, const Kinematics& kin, double t, VecX& Q) const override;
   double power(const Model& model, const TermData*, const Kinematics& kin, double t) const override;
+  double potentialEnergy(const Model&, const TermData*, const Kinematics&) const override { return 0.0; }  // dissipative: power() only
   double addForcesAndPower(const Model& model, const TermData*, const Kinematics& kin, double t,
                            VecX& Q) const override;
 
