@@ -11,8 +11,8 @@
 // W x = r is the stationarity condition of ½ xᵀ W x - rᵀ x; with stage i's input z_i = q_{i-1}
 // (rfe i-1's absolute coordinates) the chain is a discrete-time LQ problem, q_i = E_i z_i + F u_i, solved
 // by a backward Riccati sweep (value ½ zᵀ S_i z + s_iᵀ z) and a forward sweep. A pinned bottom adds the
-// multiplier of A_{n+1} = 0, affine in every stage (one 2x2 solve). Workspaces are sized in the
-// constructor; factor() and solve() allocate nothing.
+// multiplier μ of the end condition G x = g (G = ∂A_{n+1}/∂θ, g given per solve), affine in every stage
+// (one 2x2 solve). Workspaces are sized in the constructor; factor() and solve() allocate nothing.
 #pragma once
 #include "riser_sim/model.h"
 #include "riser_sim/stiffness.h"
@@ -29,8 +29,10 @@ class ChainShiftedSolver {
                         const AlignedVector<Vec2>& joint);
   // Backward Riccati sweep for W = M_θ + c C_θ + c² K_θ.
   void factor(double c);
-  // x = W^-1 r (size p = k (n+1)).
-  void solve(const VecX& r, VecX& x);
+  // x = W^-1 r (size p = k (n+1)); pinned bottom: x = W^-1 (r + Gᵀ μ) with G x = end.
+  void solve(const VecX& r, VecX& x, const Vec2& end = Vec2::Zero());
+  // G w = ∂A_{n+1}/∂θ w: the end's displacement (or velocity) for chain increments (rates) w.
+  Vec2 endMotion(const Eigen::Ref<const VecX>& w) const;
   // y = M_θ a - c K_θ b (the right-hand side of the shifted system), size p.
   void massMinusStiffness(const Eigen::Ref<const VecX>& a, const Eigen::Ref<const VecX>& b, double c, VecX& y);
 

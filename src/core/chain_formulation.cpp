@@ -138,12 +138,19 @@ void ChainFormulation::factorShifted(double c) {
 }
 
 // (I - cJ) x = b with J = [[0, I], [-W_M^-1 K, -W_M^-1 C]]:  (M + cC + c²K) x_v = M b_v - c K b_q,
-// x_q = b_q + c x_v.
+// x_q = b_q + c x_v. A pinned end adds Gᵀ μ and the linearised Baumgarte row of the ODE,
+// G a = -2ω G v - ω² G q (G = ∂A_{n+1}/∂θ, A_0 prescribed), on the increment: with c G a(x) = G x_v - G b_v
+// and x_q = b_q + c x_v,  G x_v (1 + ωc)² = G b_v - ω² c G b_q.
 void ChainFormulation::solveShifted(const VecX& b, VecX& x) {
   const int p = positionSize();
   const double c = shifted_c_;
   shifted_.massMinusStiffness(b.segment(p, p), b.head(p), c, lin_r_);
-  shifted_.solve(lin_r_, lin_x_);
+  Vec2 end = Vec2::Zero();
+  if (pinned()) {
+    const double wc = 1.0 + omega_ * c;
+    end = (shifted_.endMotion(b.segment(p, p)) - (omega_ * omega_ * c) * shifted_.endMotion(b.head(p))) / (wc * wc);
+  }
+  shifted_.solve(lin_r_, lin_x_, end);
   x.segment(p, p) = lin_x_;
   x.head(p) = b.head(p) + c * lin_x_;
 }

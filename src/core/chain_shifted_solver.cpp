@@ -118,7 +118,7 @@ void ChainShiftedSolver::factor(double c) {
   Sm_inv_ = (endMap(kin[nb_ - 1]).topRows<2>() * Zm).inverse();
 }
 
-void ChainShiftedSolver::solve(const VecX& r, VecX& x) {
+void ChainShiftedSolver::solve(const VecX& r, VecX& x, const Vec2& end) {
   Vec4 s = Vec4::Zero();
   for (int i = nb_ - 1; i >= 0; --i) {
     Stage& st = st_[i];
@@ -135,13 +135,23 @@ void ChainShiftedSolver::solve(const VecX& r, VecX& x) {
     z = st.E * z + lift(st.x);
   }
   Vec2 mu = Vec2::Zero();
-  if (pinned_) mu = -Sm_inv_ * (endMap((*kin_)[nb_ - 1]).topRows<2>() * z);
+  if (pinned_) mu = Sm_inv_ * (end - endMap((*kin_)[nb_ - 1]).topRows<2>() * z);
   for (int i = 0; i < nb_; ++i) {
     Stage& st = st_[i];
     const Vec2 u = pinned_ ? Vec2(st.x + st.Um * mu) : st.x;
     x[k_ * i + k_ - 1] = u[k_ - 1];
     if (k_ == 2) x[2 * i] = u[0];
   }
+}
+
+Vec2 ChainShiftedSolver::endMotion(const Eigen::Ref<const VecX>& w) const {
+  Vec2 A = Vec2::Zero();
+  for (int i = 0; i < nb_; ++i) {
+    const BodyKinematics& b = (*kin_)[i];
+    const double d = k_ == 2 ? w[2 * i] : 0.0, p = w[k_ * i + k_ - 1];
+    A += d * b.e() + (b.len * p) * b.nrm();
+  }
+  return A;
 }
 
 void ChainShiftedSolver::toAbsolute(const Eigen::Ref<const VecX>& w) {

@@ -1,5 +1,6 @@
-// Every integrator x formulation x linear solve (structured, dense), on the Table 1 line and on the J-lay
-// scene with every hydro term: Simulator::step() allocates nothing after warm-up. Global operator
+// Every integrator x formulation x linear solve (structured, dense), on the Table 1 line, on the J-lay
+// scene with every hydro term and on a pinned chain (the structured solve's end row): Simulator::step()
+// allocates nothing after warm-up. Global operator
 // new/delete are replaced by counting versions; the count is read around the stepping only.
 #include <gtest/gtest.h>
 
@@ -46,6 +47,7 @@ struct Case {
   bool axial;
   const char* jacobian = "auto";  // implicit schemes: auto (structured on the chain formulations) | dense
   bool hydro = false;             // the J-lay scene: drag, added mass, contents, 5 m/s flow, seabed
+  bool pinned = false;            // the 10 m chain pinned at (6, -6) m, its top on a sinusoid
 };
 
 // The paper's J-lay scene at n = 10 with every hydro term switched on (flow too).
@@ -53,6 +55,15 @@ Scene jlayScene() {
   Scene s = loadSceneFile(std::string(RISER_SIM_SOURCE_DIR) + "/config/scenes/paper_jlay_170m.yaml");
   s.elements = 10;
   s.internal_fluid.velocity = 5.0;
+  s.solver.dt = kDt;
+  return s;
+}
+
+// config/scenes/hanging_chain.yaml pinned at the bottom, moving (the pinned end's Baumgarte row is active).
+Scene pinnedScene() {
+  Scene s = loadSceneFile(std::string(RISER_SIM_SOURCE_DIR) + "/config/scenes/hanging_chain.yaml",
+                          {"bottom.type=pinned", "bottom.position=[6, -6]", "initial.type=between_points",
+                           "line.end_mass=0", "top.motion={type: sinusoid, amplitude: [0.5, 0.3], period: 2}"});
   s.solver.dt = kDt;
   return s;
 }
@@ -71,7 +82,7 @@ class NoAlloc : public ::testing::TestWithParam<Case> {};
 
 TEST_P(NoAlloc, StepDoesNotAllocate) {
   const Case c = GetParam();
-  Scene s = c.hydro ? jlayScene() : validation::table1Scene(10, kDt);
+  Scene s = c.hydro ? jlayScene() : c.pinned ? pinnedScene() : validation::table1Scene(10, kDt);
   s.options.axial_flexibility = c.axial;
   s.solver.jacobian = c.jacobian;
   s.solver.integrator = c.integrator;
@@ -82,7 +93,7 @@ TEST_P(NoAlloc, StepDoesNotAllocate) {
   long allocations = -1;
   ASSERT_NO_FATAL_FAILURE(countStepAllocations(*sim, allocations));
   EXPECT_EQ(allocations, 0) << c.integrator << " / " << c.formulation << (c.axial ? "" : " (inextensible)") << " / "
-                            << c.jacobian << (c.hydro ? " / J-lay hydro" : "");
+                            << c.jacobian << (c.hydro ? " / J-lay hydro" : "") << (c.pinned ? " / pinned" : "");
   const std::string name = c.integrator;
   if (name == "rosenbrock2" || name == "midpoint")
     EXPECT_GE(sim->integrator().stats().jacobians, 3) << "the counted steps should include Jacobian refreshes";
@@ -97,13 +108,17 @@ std::vector<Case> allCases() {
     for (bool axial : {true, false}) out.push_back({i, "recursive", axial, "dense"});
   for (const char* i : {"rk4", "dopri5", "rosenbrock2", "midpoint"})  // every hydro term, both solves
     for (const char* f : {"absolute", "recursive"}) out.push_back({i, f, true, "auto", true});
+  for (const char* i : {"rosenbrock2", "midpoint"})  // pinned bottom: both solves, both chain formulations
+    for (const char* f : {"independent", "recursive"})
+      for (const char* j : {"auto", "dense"}) out.push_back({i, f, true, j, false, true});
   return out;
 }
 
 std::string caseName(const ::testing::TestParamInfo<Case>& info) {
   const Case& c = info.param;
   return std::string(c.integrator) + "_" + c.formulation + (c.axial ? "" : "_inextensible") +
-         (std::string(c.jacobian) == "dense" ? "_dense" : "") + (c.hydro ? "_jlay_hydro" : "");
+         (std::string(c.jacobian) == "dense" ? "_dense" : "") + (c.hydro ? "_jlay_hydro" : "") +
+         (c.pinned ? "_pinned" : "");
 }
 
 INSTANTIATE_TEST_SUITE_P(AllIntegrators, NoAlloc, ::testing::ValuesIn(allCases()), caseName);
