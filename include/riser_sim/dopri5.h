@@ -11,8 +11,8 @@ class Dopri5 : public Integrator {
  public:
   explicit Dopri5(const IntegratorOptions& options) : options_(options) {}
   std::string name() const override { return "dopri5"; }
-  void reset(int n) override;
-  void step(OdeSystem& sys, double t, VecX& y, double h) override;
+  void reset(const StateLayout& layout) override;
+  bool step(OdeSystem& sys, double t, VecX& y, double h) override;
   int stages() const override { return 6; }  // per accepted substep (FSAL)
   void restart() override { fsal_valid_ = false; failure_.clear(); }
   const std::string& failure() const override { return failure_; }
@@ -24,7 +24,7 @@ class Dopri5 : public Integrator {
   double errorNorm(const VecX& y0, const VecX& y1) const;
 
   IntegratorOptions options_;
-  int controlled_ = 0;  // entries under error control: 2 * position_size, or all but the last
+  int controlled_ = 0;  // entries under error control: q and v
   VecX k1_, k2_, k3_, k4_, k5_, k6_, k7_, tmp_, y1_, err_, y_last_;
   double h_ = 0.0, err_old_ = 1e-4, t_last_ = 0.0;
   bool fsal_valid_ = false;

@@ -22,7 +22,7 @@ namespace riser_sim {
 class ImplicitIntegrator : public Integrator {
  public:
   explicit ImplicitIntegrator(const IntegratorOptions& options) : options_(options) {}
-  void reset(int n) override;
+  void reset(const StateLayout& layout) override;
   void restart() override { jac_valid_ = false; f0_valid_ = false; failure_.clear(); }
   void forcesChanged() override { f0_valid_ = false; }
   const std::string& failure() const override { return failure_; }
@@ -62,9 +62,9 @@ class ImplicitMidpoint : public ImplicitIntegrator {
  public:
   using ImplicitIntegrator::ImplicitIntegrator;
   std::string name() const override { return "midpoint"; }
-  void reset(int n) override;
+  void reset(const StateLayout& layout) override;
   void restart() override { ImplicitIntegrator::restart(); have_prev_ = false; }
-  void step(OdeSystem& sys, double t, VecX& y, double h) override;
+  bool step(OdeSystem& sys, double t, VecX& y, double h) override;
   int stages() const override { return 3; }  // typical: 2 Newton iterations + the end evaluation
 
  private:
@@ -84,8 +84,8 @@ class Rosenbrock2 : public ImplicitIntegrator {
  public:
   using ImplicitIntegrator::ImplicitIntegrator;
   std::string name() const override { return "rosenbrock2"; }
-  void reset(int n) override;
-  void step(OdeSystem& sys, double t, VecX& y, double h) override;
+  void reset(const StateLayout& layout) override;
+  bool step(OdeSystem& sys, double t, VecX& y, double h) override;
   int stages() const override { return 2; }
 
  private:

@@ -20,13 +20,22 @@ class OdeSystem {
   virtual void solveShifted(const VecX& /*b*/, VecX& /*x*/) {}
 };
 
+// Layout of the state y = [q; v; rest]: q and v have `positions` entries each, the rest (the work W)
+// is integrated alongside but takes no part in error control or linear solves.
+struct StateLayout {
+  int size = 0;
+  int positions = 0;
+};
+
 class Integrator {
  public:
   virtual ~Integrator() = default;
   virtual std::string name() const = 0;
-  virtual void reset(int state_size) = 0;
-  // Advances y from t by h [s].
-  virtual void step(OdeSystem& sys, double t, VecX& y, double h) = 0;
+  // Sizes the workspaces for the system's state (the only allocation).
+  virtual void reset(const StateLayout& layout) = 0;
+  // Advances y from t by h [s]. False when the step could not meet its contract (failure() says why;
+  // y then holds the last good state and the caller must stop).
+  virtual bool step(OdeSystem& sys, double t, VecX& y, double h) = 0;
   // Number of rhs evaluations per step (for cost reports).
   virtual int stages() const = 0;
 
@@ -38,9 +47,8 @@ class Integrator {
   // (FSAL, f(t, y)) must not be reused; an approximate Jacobian may (the implicit schemes keep their dense
   // one until its refresh interval instead of an O(p³) refresh every step).
   virtual void forcesChanged() { restart(); }
-  // Non-empty once step() could not meet its contract (Newton failed, step size underflow); y then
-  // holds the last good state and the caller must stop. Cleared by reset()/restart(). A reference:
-  // no allocation on the hot path.
+  // Why the last step() returned false (Newton failed, step size underflow). Cleared by
+  // reset()/restart(). A reference: no allocation on the hot path.
   virtual const std::string& failure() const {
     static const std::string none;
     return none;
@@ -59,7 +67,6 @@ class Integrator {
 // Settings of the integrators beyond h (solver.tolerance etc.).
 struct IntegratorOptions {
   double tolerance = 1e-6;         // dopri5: atol = rtol on positions and velocities
-  int position_size = -1;          // size of q in y = [q; v; rest] (implicit schemes need it)
   double jacobian_interval = 0.1;  // implicit schemes: dense Jacobian refresh period [s of simulated time]
   // Implicit schemes: "structured" (the system's O(n) solves, relinearised every step) or "dense"
   // (finite-difference Jacobian, O(p²) per solve).
@@ -70,8 +77,8 @@ struct IntegratorOptions {
 class Rk4 : public Integrator {
  public:
   std::string name() const override { return "rk4"; }
-  void reset(int n) override;
-  void step(OdeSystem& sys, double t, VecX& y, double h) override;
+  void reset(const StateLayout& layout) override;
+  bool step(OdeSystem& sys, double t, VecX& y, double h) override;
   int stages() const override { return 4; }
   bool explicitFixedStep() const override { return true; }
   double stabilityBound() const override { return 2.8284; }  // RK4 on the imaginary axis: 2 sqrt(2)

@@ -87,7 +87,7 @@ class Simulator : private OdeSystem {
   void factorShifted(double c) override { formulation_->factorShifted(c); }
   void solveShifted(const VecX& b, VecX& x) override { formulation_->solveShifted(b, x); }
   double potentialEnergy(const Kinematics& kin) const;
-  void checkDivergence();
+  void checkDivergence(bool stepped);
   void estimateHighestFrequency();
 
   std::shared_ptr<const Model> model_;

@@ -27,9 +27,10 @@ constexpr double kBeta = 0.04, kAlpha = 0.2 - 0.75 * kBeta, kSafety = 0.9, kFacM
 constexpr long kMaxSubstepsPerCall = 100000;
 }  // namespace
 
-void Dopri5::reset(int n) {
+void Dopri5::reset(const StateLayout& layout) {
+  const int n = layout.size;
   for (VecX* v : {&k1_, &k2_, &k3_, &k4_, &k5_, &k6_, &k7_, &tmp_, &y1_, &err_, &y_last_}) v->setZero(n);
-  controlled_ = options_.position_size > 0 ? std::min(n, 2 * options_.position_size) : std::max(n - 1, 1);
+  controlled_ = std::min(n, 2 * layout.positions);
   h_ = 0.0;
   err_old_ = 1e-4;
   fsal_valid_ = false;
@@ -80,7 +81,7 @@ double Dopri5::initialStep(OdeSystem& sys, double t, const VecX& y, double h_max
   return std::min({100.0 * h0, h1, h_max});
 }
 
-void Dopri5::step(OdeSystem& sys, double t, VecX& y, double H) {
+bool Dopri5::step(OdeSystem& sys, double t, VecX& y, double H) {
   const double t_end = t + H;
   // FSAL: k1 is f(t, y) from the last accepted substep if nothing changed since.
   if (!(fsal_valid_ && t == t_last_ && y == y_last_)) {
@@ -107,7 +108,7 @@ void Dopri5::step(OdeSystem& sys, double t, VecX& y, double H) {
                     "dopri5: more than %ld substeps (h = %.3g s) in one solver.dt = %g s at t = %.9g s",
                     kMaxSubstepsPerCall, h, H, t);
       failure_ = buf;
-      return;
+      return false;
     }
     if (!(h > 1e-14 * std::max(1.0, std::abs(t))) || !std::isfinite(h)) {
       char buf[240];
@@ -122,7 +123,7 @@ void Dopri5::step(OdeSystem& sys, double t, VecX& y, double H) {
                       "(solver.tolerance = %g); loosen solver.tolerance",
                       t, options_.tolerance);
       failure_ = buf;  // y keeps the last accepted substep: finite; the caller stops on failure()
-      return;
+      return false;
     }
     tmp_ = y + h * a21 * k1_;
     sys.rhs(t + c2 * h, tmp_, k2_);
@@ -164,6 +165,7 @@ void Dopri5::step(OdeSystem& sys, double t, VecX& y, double H) {
   // The system's last evaluation was f(t_end, y): the chain formulations read A_0 from it.
   y_last_ = y;
   t_last_ = t_end;
+  return true;
 }
 
 }  // namespace riser_sim

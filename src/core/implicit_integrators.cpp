@@ -16,11 +16,12 @@ constexpr double kNewtonTol = 1e-11;
 constexpr int kNewtonMaxIter = 12;
 }  // namespace
 
-void ImplicitIntegrator::reset(int n) {
+void ImplicitIntegrator::reset(const StateLayout& layout) {
+  const int n = layout.size;
   n_ = n;
-  p_ = options_.position_size;
+  p_ = layout.positions;
   if (p_ <= 0 || 2 * p_ > n)
-    throw std::invalid_argument("implicit integrator: position_size must be set (state [q; v; rest])");
+    throw std::invalid_argument("implicit integrator: the state must be [q; v; rest] with q not empty");
   m_ = 2 * p_;
   structured_ = options_.jacobian == "structured";
   if (!structured_ && options_.jacobian != "dense")
@@ -110,8 +111,9 @@ void ImplicitIntegrator::fail(const char* what, double t, VecX& y) {
 
 // ---------------------------------------------------------------------------------------------
 
-void ImplicitMidpoint::reset(int n) {
-  ImplicitIntegrator::reset(n);
+void ImplicitMidpoint::reset(const StateLayout& layout) {
+  ImplicitIntegrator::reset(layout);
+  const int n = layout.size;
   for (VecX* v : {&z_, &g_, &dz_, &fz_, &y_save_, &f_save_}) v->setZero(n);
   have_prev_ = false;
 }
@@ -171,7 +173,7 @@ bool ImplicitMidpoint::single(OdeSystem& sys, double t, VecX& y, double h) {
   return true;
 }
 
-void ImplicitMidpoint::step(OdeSystem& sys, double t, VecX& y, double h) {
+bool ImplicitMidpoint::step(OdeSystem& sys, double t, VecX& y, double h) {
   startValue(sys, t, y);
   // Newton out of reach (a large h on a stiff, undamped mode): 2, 4, ... kMaxPieces equal substeps.
   y_save_ = y;
@@ -191,21 +193,23 @@ void ImplicitMidpoint::step(OdeSystem& sys, double t, VecX& y, double h) {
     y = y_save_;
     f0_valid_ = false;
     fail("Newton did not converge, even on h / 8", t, y);
-    return;
+    return false;
   }
   f0_valid_ = true;
   y_end_ = y;
   t_end_ = t + h;
+  return true;
 }
 
 // ---------------------------------------------------------------------------------------------
 
-void Rosenbrock2::reset(int n) {
-  ImplicitIntegrator::reset(n);
+void Rosenbrock2::reset(const StateLayout& layout) {
+  ImplicitIntegrator::reset(layout);
+  const int n = layout.size;
   for (VecX* v : {&k1_, &k2_, &f2_}) v->setZero(n);
 }
 
-void Rosenbrock2::step(OdeSystem& sys, double t, VecX& y, double h) {
+bool Rosenbrock2::step(OdeSystem& sys, double t, VecX& y, double h) {
   static const double kGamma = 1.0 + 1.0 / std::sqrt(2.0);
   startValue(sys, t, y);
   if (jacobianStale(t)) jacobian(sys, t, y, f0_);
@@ -221,7 +225,7 @@ void Rosenbrock2::step(OdeSystem& sys, double t, VecX& y, double h) {
   yp_ = y + (1.5 * h) * k1_ + (0.5 * h) * k2_;
   if (!yp_.allFinite()) {
     fail("state not finite", t, y);
-    return;
+    return false;
   }
   y.swap(yp_);
   ++stats_.substeps;
@@ -230,6 +234,7 @@ void Rosenbrock2::step(OdeSystem& sys, double t, VecX& y, double h) {
   f0_valid_ = true;
   y_end_ = y;
   t_end_ = t + h;
+  return true;
 }
 
 }  // namespace riser_sim

@@ -7,7 +7,8 @@
 
 namespace riser_sim {
 
-void Rk4::reset(int n) {
+void Rk4::reset(const StateLayout& layout) {
+  const int n = layout.size;
   k1_.setZero(n);
   k2_.setZero(n);
   k3_.setZero(n);
@@ -15,7 +16,7 @@ void Rk4::reset(int n) {
   tmp_.setZero(n);
 }
 
-void Rk4::step(OdeSystem& sys, double t, VecX& y, double h) {
+bool Rk4::step(OdeSystem& sys, double t, VecX& y, double h) {
   sys.rhs(t, y, k1_);
   tmp_ = y + 0.5 * h * k1_;
   sys.rhs(t + 0.5 * h, tmp_, k2_);
@@ -24,6 +25,7 @@ void Rk4::step(OdeSystem& sys, double t, VecX& y, double h) {
   tmp_ = y + h * k3_;
   sys.rhs(t + h, tmp_, k4_);
   y += (h / 6.0) * (k1_ + 2.0 * k2_ + 2.0 * k3_ + k4_);
+  return true;  // no contract beyond the arithmetic: the Simulator checks the state
 }
 
 const char* integratorNames() { return "rk4, dopri5, rosenbrock2, midpoint"; }

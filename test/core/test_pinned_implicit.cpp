@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "riser_sim/run_builder.h"
 #include "riser_sim/scene.h"
 #include "riser_sim/scene_yaml.h"
 
