@@ -68,7 +68,7 @@ double threadCpu() {
 Row timeOne(const std::shared_ptr<Model>& model, const Scene& scene, const Kinematics& kin0, const std::string& f,
             int runs, double target_wall, bool use_wall) {
   SolverSettings settings = scene.solver;
-  settings.formulation = f;
+  settings.formulation = riser_sim::toChoice<riser_sim::FormulationKind>(f);
   const long paper_steps = std::lround(kSimDuration / kDt);
   for (int halvings = 0; halvings < 12; ++halvings, settings.dt *= 0.5) {
     Simulator sim(model, buildTopMotion(scene.top), settings);
@@ -160,7 +160,7 @@ int positionsTable(const std::vector<std::string>& forms, const std::string& out
     Vec2 end[3];
     for (int f = 0; f < 3; ++f) {
       SolverSettings settings = scene.solver;
-      settings.formulation = forms[f];
+      settings.formulation = riser_sim::toChoice<riser_sim::FormulationKind>(forms[f]);
       Simulator sim(model, buildTopMotion(scene.top), settings);
       sim.setInitialState(st.kin, 0.0);
       const auto t0 = std::chrono::steady_clock::now();

@@ -70,7 +70,7 @@ Scene sceneOf(const std::string& which, const std::string& root, int n) {
     s.line = LineProperties::fromGeometry(0.05, 0.0, 1e11, 2000.0);
     s.options.bending = false;
     s.end_mass = 1000.0;
-    s.initial.type = "displaced";
+    s.initial.type = InitialKind::kDisplaced;
     s.initial.end_dx = -50.0;
   }
   s.elements = n;
@@ -101,9 +101,9 @@ std::unique_ptr<Simulator> simulator(const Prepared& p, const SolverSettings& se
 Timing timeOnce(const Prepared& p, const Config& c, double target) {
   Timing t;
   SolverSettings settings = p.scene.solver;
-  settings.integrator = c.integrator;
-  settings.formulation = c.formulation;
-  settings.jacobian = c.jacobian;
+  settings.integrator = riser_sim::toChoice<riser_sim::IntegratorKind>(c.integrator);
+  settings.formulation = riser_sim::toChoice<riser_sim::FormulationKind>(c.formulation);
+  settings.jacobian = riser_sim::toChoice<riser_sim::JacobianKind>(c.jacobian);
   settings.dt = c.h > 0.0 ? c.h : 1e-4;
   try {
     auto sim = simulator(p, settings);

@@ -162,7 +162,7 @@ int main(int argc, char** argv) {
       char tol[16] = "";
       if (k.integrator == "dopri5") std::snprintf(tol, sizeof(tol), "%.0e", k.tol);
       // The linear solve actually used (auto: structured on the chain formulations, dense on absolute).
-      const bool implicit = riser_sim::isImplicitIntegrator(k.integrator);
+      const bool implicit = riser_sim::isImplicitIntegrator(riser_sim::toChoice<riser_sim::IntegratorKind>(k.integrator));
       const std::string solve = !implicit ? "-" : k.jacobian != "auto" ? k.jacobian
                                 : k.formulation == "absolute" ? "dense" : "structured";
       std::string reason = r.reason;

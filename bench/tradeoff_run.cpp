@@ -25,10 +25,10 @@ double threadCpu() {
 
 Scene sceneOf(const Config& c) {
   Scene s = c.c->scene(c.n);
-  s.solver.formulation = c.formulation;
-  s.solver.integrator = c.integrator;
+  s.solver.formulation = riser_sim::toChoice<riser_sim::FormulationKind>(c.formulation);
+  s.solver.integrator = riser_sim::toChoice<riser_sim::IntegratorKind>(c.integrator);
   if (c.tol > 0.0) s.solver.tolerance = c.tol;
-  s.solver.jacobian = c.jacobian;
+  s.solver.jacobian = riser_sim::toChoice<riser_sim::JacobianKind>(c.jacobian);
   return s;
 }
 

@@ -4,6 +4,7 @@
 #include <memory>
 #include <string>
 
+#include "riser_sim/choices.h"
 #include "riser_sim/types.h"
 
 namespace riser_sim {
@@ -68,9 +69,9 @@ class Integrator {
 struct IntegratorOptions {
   double tolerance = 1e-6;         // dopri5: atol = rtol on positions and velocities
   double jacobian_interval = 0.1;  // implicit schemes: dense Jacobian refresh period [s of simulated time]
-  // Implicit schemes: "structured" (the system's O(n) solves, relinearised every step) or "dense"
+  // Implicit schemes: kStructured (the system's O(n) solves, relinearised every step) or kDense
   // (finite-difference Jacobian, O(p²) per solve).
-  std::string jacobian = "structured";
+  JacobianKind jacobian = JacobianKind::kStructured;
 };
 
 // Classical fixed-step fourth-order Runge-Kutta (the paper's scheme).
@@ -87,12 +88,8 @@ class Rk4 : public Integrator {
   VecX k1_, k2_, k3_, k4_, tmp_;
 };
 
-// Names accepted by solver.integrator; throws std::invalid_argument otherwise.
-std::unique_ptr<Integrator> makeIntegrator(const std::string& name);
+std::unique_ptr<Integrator> makeIntegrator(IntegratorKind kind, const IntegratorOptions& options = {});
 // rosenbrock2 and midpoint: the schemes with linear solves (and the dense-Jacobian size limits).
-bool isImplicitIntegrator(const std::string& name);
-std::unique_ptr<Integrator> makeIntegrator(const std::string& name, const IntegratorOptions& options);
-// Every accepted name, comma separated (for messages and docs).
-const char* integratorNames();
+bool isImplicitIntegrator(IntegratorKind kind);
 
 }  // namespace riser_sim

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "riser_sim/choices.h"
 #include "riser_sim/line_properties.h"
 #include "riser_sim/model.h"
 #include "riser_sim/simulator.h"
@@ -16,7 +17,7 @@
 namespace riser_sim {
 
 struct TopMotionSpec {
-  std::string type = "fixed";  // fixed | sinusoid | velocity_profile | external
+  MotionKind type = MotionKind::kFixed;  // top.motion.type
   Vec2 position = Vec2::Zero();   // top.position: A_0 at t = 0 (centre of a sinusoid) [m]
   Vec2 amplitude = Vec2::Zero();  // sinusoid [m]
   double period = 1.0;            // sinusoid [s]
@@ -25,13 +26,13 @@ struct TopMotionSpec {
 };
 
 struct InitialSpec {
-  std::string type = "hanging";  // hanging | displaced | between_points | straight
+  InitialKind type = InitialKind::kHanging;  // initial.type
   double end_dx = 0.0;           // displaced: x_end - x_top [m]
   double angle = -M_PI / 2;      // straight: φ [rad] (-π/2 = hanging straight down)
   double tolerance = 1e-9;       // statics: residual relative to the line's weight
   // displaced: "release" drops the statics' horizontal end force at t = 0 (the end is let go);
   // "hold" keeps it as a constant end load (EndLoad), so the initial state is an exact equilibrium.
-  std::string end_force = "release";
+  EndForceKind end_force = EndForceKind::kRelease;
 };
 
 struct HydroSpec {

@@ -6,6 +6,7 @@
 #include <memory>
 #include <string>
 
+#include "riser_sim/choices.h"
 #include "riser_sim/force_term.h"
 #include "riser_sim/formulation.h"
 #include "riser_sim/integrator.h"
@@ -17,8 +18,8 @@ namespace riser_sim {
 
 struct SolverSettings {
   double dt = 1e-3;                     // solver.dt [s]
-  std::string integrator = "rk4";       // solver.integrator
-  std::string formulation = "absolute"; // solver.formulation
+  IntegratorKind integrator = IntegratorKind::kRk4;
+  FormulationKind formulation = FormulationKind::kAbsolute;
   double stabilization = 50.0;          // Baumgarte frequency ω_c [rad/s] (c'' + 2ω_c c' + ω_c² c = 0)
   double max_constraint_error = 0.05;   // divergence when the joint gap exceeds this × d
   double tolerance = 1e-6;              // solver.tolerance: dopri5 error control (atol = rtol)
@@ -29,7 +30,7 @@ struct SolverSettings {
   double jacobian_interval = 0.1;
   // solver.jacobian: implicit schemes' linear solves. "auto": structured (O(n)) when the formulation has
   // them (independent, recursive), else dense; "structured"; "dense" (finite differences, O(p²)).
-  std::string jacobian = "auto";
+  JacobianKind jacobian = JacobianKind::kAuto;
 };
 
 class Simulator : private OdeSystem {

@@ -5,6 +5,8 @@
 #include <optional>
 #include <string>
 
+#include "riser_sim/choices.h"
+
 namespace riser_sim {
 
 struct SolverSettings;
@@ -19,10 +21,10 @@ struct SetupError {
 constexpr int kMaxDenseCoordinates = 2000;
 
 // Coordinates per rfe of a formulation ("absolute": 4; chains: 2, or 1 for an inextensible line).
-int coordinatesPerRfe(const std::string& formulation, bool axial_flexibility);
+int coordinatesPerRfe(FormulationKind formulation, bool axial_flexibility);
 // The linear solves an implicit scheme uses for solver.jacobian (auto -> structured where the
 // formulation has them, else dense).
-std::string resolvedJacobian(const SolverSettings& s);
+JacobianKind resolvedJacobian(const SolverSettings& s);
 
 // Checks integrator, formulation, jacobian and their combination for a line of `elements` segments.
 std::optional<SetupError> checkSolverSetup(const SolverSettings& s, int elements, bool axial_flexibility);

@@ -74,8 +74,8 @@ int main(int argc, char** argv) {
     return fail(kExitBadInput, why.str());
   }
   info("scene '%s': n = %d, dt = %g s, %s/%s, duration %g s", scene.name.c_str(), scene.elements, scene.solver.dt,
-       scene.solver.integrator.c_str(), scene.solver.formulation.c_str(), scene.duration);
-  if (scene.top.type == "external") info("top.motion.type external: the top is held at top.position offline");
+       name(scene.solver.integrator), name(scene.solver.formulation), scene.duration);
+  if (scene.top.type == MotionKind::kExternal) info("top.motion.type external: the top is held at top.position offline");
   if (opt.modes > 0) {  // statics + modes; a time run only when --duration is given too
     const int rc = runModes(scene, opt.modes, opt.modes_csv, opt.quiet);
     if (rc != kExitOk || opt.duration <= 0.0) return rc;
@@ -92,15 +92,15 @@ int main(int argc, char** argv) {
   } catch (const std::exception& e) {
     return fail(kExitInternal, e.what());
   }
-  info("initial state (%s): %s; end force (%g, %g) N", scene.initial.type.c_str(), statics.message.c_str(),
+  info("initial state (%s): %s; end force (%g, %g) N", name(scene.initial.type), statics.message.c_str(),
        statics.end_force.x(), statics.end_force.y());
   if (sim->integrator().explicitFixedStep())
     info("stability: highest frequency %g rad/s, %s stable for solver.dt <= ~%g s%s", sim->highestFrequency(),
-         scene.solver.integrator.c_str(), sim->stableStepEstimate(),
+         name(scene.solver.integrator), sim->stableStepEstimate(),
          sim->dt() > sim->stableStepEstimate() ? " -- solver.dt is above it, the run will likely diverge" : "");
   else
     info("stability: highest frequency %g rad/s (rk4 would need solver.dt <= ~%g s); %s has no such limit",
-         sim->highestFrequency(), sim->stableStepEstimate(), scene.solver.integrator.c_str());
+         sim->highestFrequency(), sim->stableStepEstimate(), name(scene.solver.integrator));
 
   OutputFile csv;  // every row batch is checked: a full disk stops the run with exit code 4
   if (!opt.csv.empty()) {
@@ -168,8 +168,8 @@ int main(int argc, char** argv) {
         .add("dt", dt)
         .add("stable_dt_estimate", sim->stableStepEstimate())
         .add("omega_max", sim->highestFrequency())
-        .add("integrator", scene.solver.integrator)
-        .add("formulation", scene.solver.formulation)
+        .add("integrator", name(scene.solver.integrator))
+        .add("formulation", name(scene.solver.formulation))
         .add("statics_iterations", statics.iterations)
         .add("statics_residual", statics.residual)
         .add("end_force_x", statics.end_force.x())

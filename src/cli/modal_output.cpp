@@ -41,7 +41,7 @@ int runModes(const Scene& scene, int count, const std::string& csv_path, bool qu
                  "riser_sim_cli: modes about the static state (%s, %s), %d coordinates%s; end load (%g, %g) N kept "
                  "as a dead load; undamped (drag and damping left out); equilibrium residual %.2e, K asymmetry "
                  "%.2e\n",
-                 scene.initial.type.c_str(), st.message.c_str(), r.coordinates,
+                 name(scene.initial.type), st.message.c_str(), r.coordinates,
                  r.pinned ? " minus 2 end constraints (pinned)" : "", st.end_force.x(), st.end_force.y(),
                  r.equilibrium_residual, r.asymmetry);
   }

@@ -23,9 +23,9 @@ void ImplicitIntegrator::reset(const StateLayout& layout) {
   if (p_ <= 0 || 2 * p_ > n)
     throw std::invalid_argument("implicit integrator: the state must be [q; v; rest] with q not empty");
   m_ = 2 * p_;
-  structured_ = options_.jacobian == "structured";
-  if (!structured_ && options_.jacobian != "dense")
-    throw std::invalid_argument("implicit integrator: jacobian must be 'structured' or 'dense'");
+  structured_ = options_.jacobian == JacobianKind::kStructured;
+  if (!structured_ && options_.jacobian != JacobianKind::kDense)
+    throw std::invalid_argument("implicit integrator: jacobian must be structured or dense");
   const int pd = structured_ ? 0 : p_;  // dense workspaces only when used
   Aq_.setZero(pd, pd);
   Av_.setZero(pd, pd);

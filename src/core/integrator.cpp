@@ -28,21 +28,18 @@ bool Rk4::step(OdeSystem& sys, double t, VecX& y, double h) {
   return true;  // no contract beyond the arithmetic: the Simulator checks the state
 }
 
-const char* integratorNames() { return "rk4, dopri5, rosenbrock2, midpoint"; }
-
-bool isImplicitIntegrator(const std::string& name) { return name == "rosenbrock2" || name == "midpoint"; }
-
-std::unique_ptr<Integrator> makeIntegrator(const std::string& name) {
-  return makeIntegrator(name, IntegratorOptions());
+bool isImplicitIntegrator(IntegratorKind kind) {
+  return kind == IntegratorKind::kRosenbrock2 || kind == IntegratorKind::kMidpoint;
 }
 
-std::unique_ptr<Integrator> makeIntegrator(const std::string& name, const IntegratorOptions& options) {
-  if (name == "rk4") return std::make_unique<Rk4>();
-  if (name == "dopri5") return std::make_unique<Dopri5>(options);
-  if (name == "rosenbrock2") return std::make_unique<Rosenbrock2>(options);
-  if (name == "midpoint") return std::make_unique<ImplicitMidpoint>(options);
-  throw std::invalid_argument("solver.integrator: unknown integrator '" + name + "' (accepted: " +
-                              integratorNames() + ")");
+std::unique_ptr<Integrator> makeIntegrator(IntegratorKind kind, const IntegratorOptions& options) {
+  switch (kind) {
+    case IntegratorKind::kRk4: return std::make_unique<Rk4>();
+    case IntegratorKind::kDopri5: return std::make_unique<Dopri5>(options);
+    case IntegratorKind::kRosenbrock2: return std::make_unique<Rosenbrock2>(options);
+    case IntegratorKind::kMidpoint: return std::make_unique<ImplicitMidpoint>(options);
+  }
+  throw std::invalid_argument("solver.integrator: unknown integrator (accepted: " + choiceNames<IntegratorKind>() + ")");
 }
 
 }  // namespace riser_sim

@@ -8,7 +8,7 @@ namespace riser_sim {
 
 InitialState solveInitialState(const Scene& scene, const Model& model, const Vec2& top, bool equilibrium_only) {
   InitialState init;
-  const bool straight = scene.initial.type == "straight";
+  const bool straight = scene.initial.type == InitialKind::kStraight;
   if (straight && !equilibrium_only) {
     init.kin = straightLine(model, top, scene.initial.angle);
     init.equilibrium = false;
@@ -25,7 +25,7 @@ InitialState solveInitialState(const Scene& scene, const Model& model, const Vec
   if (!init.statics.converged) throw std::runtime_error("initial: " + init.statics.message);
   init.kin = init.statics.kin;
   init.end_force = init.statics.end_force;
-  init.about = straight ? "hanging equilibrium (initial.type straight is none)" : scene.initial.type + " equilibrium";
+  init.about = straight ? "hanging equilibrium (initial.type straight is none)" : std::string(name(scene.initial.type)) + " equilibrium";
   if (straight) init.statics.message = init.about + "; " + init.statics.message;
   return init;
 }
@@ -37,7 +37,7 @@ Run buildRun(const Scene& scene, RunInputs inputs) {
   const Vec2 top = inputs.top ? *inputs.top : inputs.motion->at(0.0).p;
   run.initial = solveInitialState(scene, *run.model, top);
   // The statics' end force stays on as a constant end load, so the start is an exact equilibrium.
-  if (scene.initial.type == "displaced" && scene.initial.end_force == "hold")
+  if (scene.initial.type == InitialKind::kDisplaced && scene.initial.end_force == EndForceKind::kHold)
     run.model->addTerm(std::make_unique<EndLoad>(run.initial.end_force));
   run.sim = std::make_unique<Simulator>(run.model, std::move(inputs.motion), scene.solver);
   // A pinned bottom that the statics did not place is held where the initial state puts it.

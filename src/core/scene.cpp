@@ -34,30 +34,31 @@ std::shared_ptr<Model> buildModel(const Scene& scene) {
   if (scene.seabed.enabled) model->addTerm(std::make_unique<Seabed>(scene.seabed));
   const InternalFlowSpec& f = scene.internal_fluid;
   if (f.density > 0.0 && (f.velocity != 0.0 || f.acceleration != 0.0))
-    f.model == "paper" ? model->addTerm(std::make_unique<InternalFlow>(f, scene.line.internalArea()))
+    f.model == FlowModelKind::kPaper ? model->addTerm(std::make_unique<InternalFlow>(f, scene.line.internalArea()))
                        : model->addTerm(std::make_unique<PipeFlow>(f, scene.line.internalArea()));
   return model;
 }
 
 std::unique_ptr<TopMotion> buildTopMotion(const TopMotionSpec& spec) {
-  if (spec.type == "fixed" || spec.type == "external") return std::make_unique<FixedMotion>(spec.position);
-  if (spec.type == "sinusoid") {
-    if (!(spec.period > 0.0)) throw std::invalid_argument("top.motion.period: must be > 0");
-    return std::make_unique<SinusoidMotion>(spec.position, spec.amplitude, spec.period, spec.phase);
+  switch (spec.type) {
+    case MotionKind::kFixed:
+    case MotionKind::kExternal: return std::make_unique<FixedMotion>(spec.position);
+    case MotionKind::kSinusoid:
+      if (!(spec.period > 0.0)) throw std::invalid_argument("top.motion.period: must be > 0");
+      return std::make_unique<SinusoidMotion>(spec.position, spec.amplitude, spec.period, spec.phase);
+    case MotionKind::kVelocityProfile: return std::make_unique<VelocityProfileMotion>(spec.position, spec.knots);
   }
-  if (spec.type == "velocity_profile") return std::make_unique<VelocityProfileMotion>(spec.position, spec.knots);
-  throw std::invalid_argument("top.motion.type: unknown motion '" + spec.type +
-                              "' (accepted: fixed, sinusoid, velocity_profile, external)");
+  throw std::invalid_argument("top.motion.type: unknown motion (accepted: " + choiceNames<MotionKind>() + ")");
 }
 
 StaticsProblem staticsProblem(const Scene& scene) {
   StaticsProblem p;
   p.top = buildTopMotion(scene.top)->at(0.0).p;
   p.tolerance = scene.initial.tolerance;
-  if (scene.initial.type == "displaced") {
+  if (scene.initial.type == InitialKind::kDisplaced) {
     p.kind = StaticsProblem::Kind::kEndDisplaced;
     p.end_dx = scene.initial.end_dx;
-  } else if (scene.initial.type == "between_points") {
+  } else if (scene.initial.type == InitialKind::kBetweenPoints) {
     p.kind = StaticsProblem::Kind::kBetweenPoints;
     p.end_point = scene.bottom_point;
   } else {

@@ -20,7 +20,6 @@ namespace {
 constexpr double kDegToRad = M_PI / 180.0;
 
 // Keep in step with makeFormulation() in src/core/simulator.cpp (it has no public factory).
-const std::vector<std::string> kFormulations = {"absolute", "independent", "recursive"};
 
 std::string join(const std::vector<std::string>& items) {
   std::string out;
@@ -159,6 +158,13 @@ class Section {
   Vec2 vec2(const std::string& k) const { return toVec2(at(k), key(k)); }
   Vec2 vec2(const std::string& k, const Vec2& def) const { return has(k) ? vec2(k) : def; }
   // A string from a fixed list.
+  // One of the enum's names (choices.h), parsed once here.
+  template <class E>
+  E choice(const std::string& k, E def) const {
+    const std::string v = text(k, name(def));
+    if (const auto e = parseChoice<E>(v)) return *e;
+    throw SceneError(key(k), "unknown value '" + v + "' (accepted: " + choiceNames<E>() + ")");
+  }
   std::string choice(const std::string& k, const std::string& def, const std::vector<std::string>& allowed) const {
     const std::string v = text(k, def);
     if (std::find(allowed.begin(), allowed.end(), v) == allowed.end())
@@ -277,14 +283,14 @@ void parseTop(const Section& root, Scene& s) {
   s.top = TopMotionSpec();
   s.top.position = top.vec2("position", Vec2::Zero());
   const Section motion = top.section("motion", {"type", "amplitude", "period", "phase", "knots"});
-  s.top.type = motion.choice("type", "fixed", {"fixed", "sinusoid", "velocity_profile", "external"});
+  s.top.type = motion.choice("type", MotionKind::kFixed);
   // Keys of the other motion types are type-checked but ignored (so --set top.motion.type=... just works).
-  const bool sinusoid = s.top.type == "sinusoid";
+  const bool sinusoid = s.top.type == MotionKind::kSinusoid;
   s.top.amplitude = sinusoid ? motion.vec2("amplitude") : motion.vec2("amplitude", Vec2::Zero());
   s.top.period = sinusoid ? motion.number("period") : motion.number("period", 1.0);
   requirePositive(motion.key("period"), s.top.period);
   s.top.phase = motion.number("phase", 0.0);
-  if (s.top.type == "velocity_profile" || motion.has("knots")) parseKnots(motion, s.top);
+  if (s.top.type == MotionKind::kVelocityProfile || motion.has("knots")) parseKnots(motion, s.top);
 }
 
 void parseBottom(const Section& root, Scene& s) {
@@ -298,12 +304,12 @@ void parseBottom(const Section& root, Scene& s) {
 void parseInitial(const Section& root, Scene& s) {
   const Section initial = root.section("initial", {"type", "end_dx", "angle", "tolerance", "end_force"});
   s.initial = InitialSpec();
-  s.initial.type = initial.choice("type", "hanging", {"hanging", "displaced", "between_points", "straight"});
-  s.initial.end_dx = s.initial.type == "displaced" ? initial.number("end_dx") : initial.number("end_dx", 0.0);
+  s.initial.type = initial.choice("type", InitialKind::kHanging);
+  s.initial.end_dx = s.initial.type == InitialKind::kDisplaced ? initial.number("end_dx") : initial.number("end_dx", 0.0);
   s.initial.angle = initial.number("angle", -90.0) * kDegToRad;
   s.initial.tolerance = initial.number("tolerance", 1e-9);
   requirePositive(initial.key("tolerance"), s.initial.tolerance);
-  s.initial.end_force = initial.choice("end_force", "release", {"release", "hold"});
+  s.initial.end_force = initial.choice("end_force", EndForceKind::kRelease);
 }
 
 void parseCurrent(const Section& env, Scene& s) {
@@ -395,7 +401,7 @@ void parseInternalFluid(const Section& root, Scene& s) {
   requireNonNegative(f.key("density"), s.internal_fluid.density);
   s.internal_fluid.velocity = f.number("velocity", 0.0);
   s.internal_fluid.acceleration = f.number("acceleration", 0.0);
-  s.internal_fluid.model = f.choice("model", "pipe_flow", {"pipe_flow", "paper"});
+  s.internal_fluid.model = f.choice("model", FlowModelKind::kPipeFlow);
 }
 
 void parseSolver(const Section& root, Scene& s) {
@@ -406,8 +412,8 @@ void parseSolver(const Section& root, Scene& s) {
   s.solver = defaults;
   s.solver.dt = solver.number("dt", defaults.dt);
   requirePositive(solver.key("dt"), s.solver.dt);
-  s.solver.integrator = solver.text("integrator", defaults.integrator);
-  s.solver.formulation = solver.choice("formulation", defaults.formulation, kFormulations);
+  s.solver.integrator = solver.choice("integrator", defaults.integrator);
+  s.solver.formulation = solver.choice("formulation", defaults.formulation);
   s.solver.stabilization = solver.number("stabilization", defaults.stabilization);
   requireNonNegative(solver.key("stabilization"), s.solver.stabilization);
   s.solver.max_constraint_error = solver.number("max_constraint_error", defaults.max_constraint_error);
@@ -416,7 +422,7 @@ void parseSolver(const Section& root, Scene& s) {
   requirePositive(solver.key("tolerance"), s.solver.tolerance);
   s.solver.jacobian_interval = solver.number("jacobian_interval", defaults.jacobian_interval);
   requireNonNegative(solver.key("jacobian_interval"), s.solver.jacobian_interval);
-  s.solver.jacobian = solver.choice("jacobian", defaults.jacobian, {"auto", "structured", "dense"});
+  s.solver.jacobian = solver.choice("jacobian", defaults.jacobian);
   // The integrator's name, the combination and the size limits: the core's one check.
   if (const auto error = checkSolverSetup(s.solver, s.elements, s.options.axial_flexibility))
     throw SceneError(error->key, error->message);
@@ -441,12 +447,12 @@ void checkCombination(const Scene& s) {
     throw SceneError("line.outer_diameter", "is needed (> 0) for buoyancy and hydrodynamic forces");
   if (s.internal_fluid.density > 0.0 && !(s.line.inner_diameter > 0.0))
     throw SceneError("line.inner_diameter", "is needed (> 0) for internal_fluid");
-  if (s.initial.type == "between_points" && !pinned)
+  if (s.initial.type == InitialKind::kBetweenPoints && !pinned)
     throw SceneError("initial.type", "'between_points' needs bottom.type: pinned (bottom.position is the end point)");
-  if (pinned && s.initial.type != "between_points")
+  if (pinned && s.initial.type != InitialKind::kBetweenPoints)
     throw SceneError("bottom.type", "'pinned' needs initial.type: between_points (the initial state must end at "
-                                    "bottom.position), got initial.type '" + s.initial.type + "'");
-  if (s.initial.type == "displaced" && !(std::abs(s.initial.end_dx) < s.length))
+                                    "bottom.position), got initial.type '" + std::string(name(s.initial.type)) + "'");
+  if (s.initial.type == InitialKind::kDisplaced && !(std::abs(s.initial.end_dx) < s.length))
     throw SceneError("initial.end_dx", "must be smaller than line.length (" + formatNumber(s.length) +
                                            " m) in magnitude, got " + formatNumber(s.initial.end_dx));
   if (pinned && !s.options.axial_flexibility) {

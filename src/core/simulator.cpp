@@ -25,11 +25,13 @@ constexpr double kBaumgarteStabilityFactor = 0.75;
 constexpr double kTensionStabilityFactor = 0.85;
 
 std::unique_ptr<Formulation> makeFormulation(const Model& model, const SolverSettings& s) {
-  if (s.formulation == "absolute") return std::make_unique<AbsoluteFormulation>(model, s.stabilization);
-  if (s.formulation == "independent") return std::make_unique<IndependentFormulation>(model, s.stabilization);
-  if (s.formulation == "recursive") return std::make_unique<RecursiveFormulation>(model, s.stabilization);
-  throw std::invalid_argument("solver.formulation: unknown formulation '" + s.formulation +
-                              "' (accepted: absolute, independent, recursive)");
+  switch (s.formulation) {
+    case FormulationKind::kAbsolute: return std::make_unique<AbsoluteFormulation>(model, s.stabilization);
+    case FormulationKind::kIndependent: return std::make_unique<IndependentFormulation>(model, s.stabilization);
+    case FormulationKind::kRecursive: return std::make_unique<RecursiveFormulation>(model, s.stabilization);
+  }
+  throw std::invalid_argument("solver.formulation: unknown formulation (accepted: " +
+                              choiceNames<FormulationKind>() + ")");
 }
 }  // namespace
 
@@ -113,7 +115,7 @@ double Simulator::stableStepEstimate() const {
   // + ω_c² c, a critically damped real pair, couple with the line's modes and are not seen by the power
   // iteration on ∂a/∂q. Measured on the inextensible Table 1 line (absolute, rk4, 60 s): the largest
   // stable h is 0.83, 0.79, 0.86, 0.85x the raw estimate at n = 10, 20, 40, 100 (docs/integrators.md).
-  const bool baumgarte = settings_.formulation == "absolute" || model_->bottom() == BottomBoundary::kPinned;
+  const bool baumgarte = settings_.formulation == FormulationKind::kAbsolute || model_->bottom() == BottomBoundary::kPinned;
   // An inextensible line's highest frequencies are set by its tension, which the motion changes (the
   // swing of Table 1 raises it): measured (recursive, 20 s) 0.8x the raw estimate stable, 0.9x diverging
   // at n = 20, 40, 100.

@@ -20,9 +20,9 @@ void computeModesResponse(const riser_sim::Scene& scene, const riser_sim::Kinema
   riser_sim::ModalOptions o;
   o.modes = count;
   riser_sim::ModalResult r;
-  std::string about = scene.initial.type + " static state";
+  std::string about = std::string(riser_sim::name(scene.initial.type)) + " static state";
   try {
-    if (scene.initial.type == "straight") {
+    if (scene.initial.type == riser_sim::InitialKind::kStraight) {
       r = riser_sim::sceneModes(scene, o);  // solves the hanging statics (a straight line is none)
       about = "hanging equilibrium (initial.type straight is not one)";
     } else {

@@ -66,9 +66,9 @@ bool RiserSimNode::Schedule::due(const ros::Time& now) {
 RiserSimNode::RiserSimNode(ros::NodeHandle nh, ros::NodeHandle pnh)
     : nh_(nh), pnh_(pnh), params_(loadNodeParams(pnh, pnh.getNamespace())), scene_(loadScene(pnh)),
       name_(pnh.getNamespace()) {
-  if (scene_.top.type != "external" && scene_.top.type != "fixed")
+  if (scene_.top.type != riser_sim::MotionKind::kExternal && scene_.top.type != riser_sim::MotionKind::kFixed)
     ROS_WARN("%s: ~scene/top/motion/type '%s' ignored: the node drives the top from the vessel", name_.c_str(),
-             scene_.top.type.c_str());
+             riser_sim::name(scene_.top.type));
   // The loader checked the scene; the solver setup once more with the core's one check, as a parameter error.
   if (const auto error = riser_sim::checkSolverSetup(scene_.solver, scene_.elements, scene_.options.axial_flexibility))
     throw ParamError(paramPath("scene", error->key), error->message);
@@ -249,7 +249,7 @@ bool RiserSimNode::start(const VesselSample& s, const ros::Time& now, std::strin
   const Eigen::Vector2d top = toPaper(s.hangoff);
   try {
     riser_sim::Scene sc = scene_;
-    sc.top.type = "fixed";
+    sc.top.type = riser_sim::MotionKind::kFixed;
     sc.top.position = top;
     riser_sim::RunInputs in;
     in.top = top;

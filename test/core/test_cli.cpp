@@ -146,7 +146,7 @@ TEST(Cli, BadInputExits2) {
       // 1e20 s at dt = 1e-4: 1e24 steps, beyond the loader's limit (and a long)
       {"--scene " + kChain + " --duration 1e20", "--duration: 1e+24 steps of solver.dt, more than 1e+09"},
       {"--scene " + kChain + " --set line.lenght=3", "line.lenght: unknown key"},
-      {"--scene " + kChain + " --set solver.integrator=euler", "solver.integrator: unknown integrator 'euler'"},
+      {"--scene " + kChain + " --set solver.integrator=euler", "solver.integrator: unknown value 'euler'"},
       {"--scene /nonexistent/riser_sim.yaml", "cannot open scene file"},
       {"--scene " + kChain + " --csv /nonexistent/dir/out.csv", "--csv: cannot open"},
       {"--scene " + kChain + " --probe-rfe 2", "--probe-rfe: needs --csv"},

@@ -115,7 +115,7 @@ std::vector<Case> cases() {
                  s.line = LineProperties::fromGeometry(0.05, 0.045, 2.1e11, 100.0);  // thin light tube
                  s.options.bending = true;
                  s.options.axial_flexibility = false;
-                 s.initial.type = "straight";
+                 s.initial.type = InitialKind::kStraight;
                  s.initial.angle = -0.3;  // released 17 deg off horizontal: bending and pendulum
                  return s;
                },
@@ -126,9 +126,9 @@ std::vector<Case> cases() {
   c.push_back({"slack_top_down_fast",
                [] {
                  Scene s = shortLine(2.1e11, 20, 10.0);
-                 s.initial.type = "straight";
+                 s.initial.type = InitialKind::kStraight;
                  s.initial.angle = 0.0;
-                 s.top.type = "velocity_profile";
+                 s.top.type = MotionKind::kVelocityProfile;
                  s.top.knots = {{0.0, Vec2(0.0, 0.0)}, {0.05, Vec2(0.0, -20.0)}};
                  return s;
                },
@@ -158,7 +158,7 @@ std::vector<Case> cases() {
                    Scene s = wetPipe(10);
                    s.internal_fluid.density = 1000.0;
                    s.internal_fluid.velocity = 50.0;
-                   s.internal_fluid.model = model;
+                   s.internal_fluid.model = toChoice<FlowModelKind>(model);
                    return s;
                  },
                  kAll, 0.5, Expect::kSoundOrClean, 1e-2, 0.8});
@@ -233,8 +233,8 @@ TEST(Extremes, Table) {
       for (const std::string& integ : c.integrators) {
         SCOPED_TRACE(c.name + " / " + integ + " / " + form);
         Scene s = c.scene();
-        s.solver.integrator = integ;
-        s.solver.formulation = form;
+        s.solver.integrator = toChoice<IntegratorKind>(integ);
+        s.solver.formulation = toChoice<FormulationKind>(form);
         if (integ == "dopri5") s.solver.tolerance = 1e-7;
         if (integ != "rk4" && integ != "dopri5" && c.dt_factor > 0.0) s.solver.dt = 1e-3;
         std::unique_ptr<Simulator> sim;
@@ -296,10 +296,10 @@ TEST(Extremes, SnapLoadOnReTension) {
     for (const std::string& integ : kAll) {
       SCOPED_TRACE(integ + " / " + form);
       Scene s = shortLine(1e9, 20, 10.0);
-      s.initial.type = "straight";
+      s.initial.type = InitialKind::kStraight;
       s.initial.angle = M_PI / 2 - 0.05;
-      s.solver.integrator = integ;
-      s.solver.formulation = form;
+      s.solver.integrator = toChoice<IntegratorKind>(integ);
+      s.solver.formulation = toChoice<FormulationKind>(form);
       s.solver.tolerance = 1e-7;
       auto sim = buildSimulator(s);
       if (integ == "rk4") {
@@ -354,8 +354,8 @@ void runOneHour(Simulator& sim, double& worst) {
 TEST(Extremes, OneHourMidpointEnergyBounded) {
   Scene s = validation::table1Scene(10, 0.02);
   s.options.axial_flexibility = false;
-  s.solver.formulation = "recursive";
-  s.solver.integrator = "midpoint";
+  s.solver.formulation = FormulationKind::kRecursive;
+  s.solver.integrator = IntegratorKind::kMidpoint;
   auto sim = buildSimulator(s);
   double worst = 0.0;
   ASSERT_NO_FATAL_FAILURE(runOneHour(*sim, worst));
@@ -375,8 +375,8 @@ constexpr double kLongRunGapPerD = 1e-5;
 TEST(Extremes, OneHourAbsoluteConstraintBounded) {
   Scene s = validation::table1Scene(10, 0.01);
   s.options.axial_flexibility = false;
-  s.solver.formulation = "absolute";
-  s.solver.integrator = "rk4";
+  s.solver.formulation = FormulationKind::kAbsolute;
+  s.solver.integrator = IntegratorKind::kRk4;
   auto sim = buildSimulator(s);
   double worst = 0.0;
   ASSERT_NO_FATAL_FAILURE(runOneHour(*sim, worst));

@@ -237,7 +237,7 @@ class FreeFall : public TopMotion {
 void freeFall(const std::string& formulation, bool bending) {
   Scene s = smallScene();
   s.options.bending = bending;
-  s.solver.formulation = formulation;
+  s.solver.formulation = toChoice<FormulationKind>(formulation);
   s.solver.dt = 1e-3;
   auto model = buildModel(s);
   Simulator sim(model, std::make_unique<FreeFall>(s.gravity), s.solver);

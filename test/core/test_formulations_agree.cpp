@@ -178,7 +178,7 @@ TEST(FormulationsAgree, Table1EndPositionAfter20s) {
   Vec2 end[3];
   for (int f = 0; f < 3; ++f) {
     Scene s = validation::table1Scene(10);
-    s.solver.formulation = names[f];
+    s.solver.formulation = toChoice<FormulationKind>(names[f]);
     auto sim = buildSimulator(s);
     ASSERT_TRUE(sim->advanceTo(20.0)) << names[f] << ": " << sim->divergenceReason();
     end[f] = sim->outputs().points.back();
@@ -208,14 +208,14 @@ TEST(FormulationsAgree, EnergyConservedInConservativeCase) {
       Scene s = validation::table1Scene(10);
       s.options.axial_flexibility = axial;
       if (moving) {
-        s.top.type = "sinusoid";
+        s.top.type = MotionKind::kSinusoid;
         s.top.amplitude = Vec2(5.0, 1.0);
         s.top.period = 4.0;
       }
       s.options.bending = true;
       s.line.EI = 1e4;
       s.line.EA = 2e7;
-      s.solver.formulation = f;
+      s.solver.formulation = toChoice<FormulationKind>(f);
       auto sim = buildSimulator(s);
       ASSERT_TRUE(sim->advanceTo(5.0)) << f << ": " << sim->divergenceReason();
       const double drift = sim->energyDrift();
@@ -242,11 +242,11 @@ TEST(FormulationsAgree, PinnedBottomRunsAgree) {
     s.end_mass = 0.0;
     s.bottom = BottomBoundary::kPinned;
     s.bottom_point = Vec2(-60.0, -70.0);
-    s.initial.type = "between_points";
-    s.top.type = "sinusoid";
+    s.initial.type = InitialKind::kBetweenPoints;
+    s.top.type = MotionKind::kSinusoid;
     s.top.amplitude = Vec2(3.0, 0.5);
     s.top.period = 5.0;
-    s.solver.formulation = names[f];
+    s.solver.formulation = toChoice<FormulationKind>(names[f]);
     auto sim = buildSimulator(s);
     ASSERT_TRUE(sim->advanceTo(3.0)) << names[f] << ": " << sim->divergenceReason();
     const LineOutputs& o = sim->outputs();
@@ -271,10 +271,10 @@ TEST(FormulationsAgree, RecursiveJointGapIsExactlyZero) {
   s.options.bending = true;
   s.line.EI = 1e4;
   s.line.EA = 2e7;
-  s.top.type = "sinusoid";
+  s.top.type = MotionKind::kSinusoid;
   s.top.amplitude = Vec2(10.0, 1.0);
   s.top.period = 7.0;
-  s.solver.formulation = "recursive";
+  s.solver.formulation = FormulationKind::kRecursive;
   auto sim = buildSimulator(s);
   ASSERT_TRUE(sim->advanceTo(10.0)) << sim->divergenceReason();
   EXPECT_EQ(sim->maxConstraintError(), 0.0);
@@ -291,7 +291,7 @@ TEST(FormulationsAgree, RecursiveJointGapIsExactlyZero) {
 
 TEST(FormulationsAgree, UnknownFormulationNamesTheKey) {
   Scene s = validation::table1Scene(4);
-  s.solver.formulation = "dense";
+  s.solver.formulation = static_cast<FormulationKind>(99);  // set in code, outside the table
   try {
     buildSimulator(s);
     FAIL() << "expected std::invalid_argument";

@@ -82,9 +82,9 @@ std::vector<TermCase> termCases() {
 
 Vec2 endPoint(const Scene& base, const std::string& integrator, double h, const std::string& jacobian = "auto") {
   Scene s = base;
-  s.solver.formulation = "recursive";
-  s.solver.integrator = integrator;
-  s.solver.jacobian = jacobian;
+  s.solver.formulation = FormulationKind::kRecursive;
+  s.solver.integrator = toChoice<IntegratorKind>(integrator);
+  s.solver.jacobian = toChoice<JacobianKind>(jacobian);
   s.solver.dt = h;
   auto sim = buildSimulator(s);
   EXPECT_TRUE(sim->advanceTo(kDuration)) << integrator << ": " << sim->divergenceReason();

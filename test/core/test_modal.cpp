@@ -53,7 +53,7 @@ Scene stringScene(int n) {
   s.gravity = 0.0;
   s.bottom = BottomBoundary::kPinned;
   s.bottom_point = Vec2(kStringL * (1.0 + kStringStrain), 0.0);
-  s.initial.type = "between_points";
+  s.initial.type = InitialKind::kBetweenPoints;
   return s;
 }
 
@@ -104,7 +104,7 @@ TEST(Modal, PinnedBeamConvergesAtOrderFour) {
     s.gravity = 0.0;
     s.bottom = BottomBoundary::kPinned;
     s.bottom_point = Vec2(kBeamL, 0.0);
-    s.initial.type = "between_points";
+    s.initial.type = InitialKind::kBetweenPoints;
     ModalOptions o;
     o.modes = 4;
     const ModalResult r = sceneModes(s, o);
@@ -137,7 +137,7 @@ double axialReference(const Scene& s) {
 
 Scene verticalScene(int n) {
   Scene s = validation::table1Scene(n);
-  s.initial.type = "hanging";
+  s.initial.type = InitialKind::kHanging;
   return s;
 }
 
@@ -275,7 +275,7 @@ void checkTimed(const char* name, const Timed& tm) {
 TEST(Modal, HangingChainModesMatchFreeOscillations) {
   // The shipped hanging chain, inextensible, hanging at rest: modes 1 and 2.
   Scene s = loadSceneFile(std::string(RISER_SIM_SOURCE_DIR) + "/config/scenes/hanging_chain.yaml", {});
-  s.initial.type = "hanging";
+  s.initial.type = InitialKind::kHanging;
   s.options.axial_flexibility = false;
   s.solver.dt = 1e-3;
   checkTimed("hanging chain mode 1", timeMode(s, 0, 1e-3 * s.length, 3));

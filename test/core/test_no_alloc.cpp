@@ -84,9 +84,9 @@ TEST_P(NoAlloc, StepDoesNotAllocate) {
   const Case c = GetParam();
   Scene s = c.hydro ? jlayScene() : c.pinned ? pinnedScene() : validation::table1Scene(10, kDt);
   s.options.axial_flexibility = c.axial;
-  s.solver.jacobian = c.jacobian;
-  s.solver.integrator = c.integrator;
-  s.solver.formulation = c.formulation;
+  s.solver.jacobian = toChoice<JacobianKind>(c.jacobian);
+  s.solver.integrator = toChoice<IntegratorKind>(c.integrator);
+  s.solver.formulation = toChoice<FormulationKind>(c.formulation);
   s.solver.jacobian_interval = kJacobianInterval;
   s.solver.tolerance = 1e-7;
   auto sim = buildSimulator(s);

@@ -43,10 +43,10 @@ Swing swing(double theta0, bool from_statics) {
   s.end_mass = kEndMass;
   s.solver.dt = kDt;
   if (from_statics) {  // the paper's way: end displaced by a horizontal force (straight when massless)
-    s.initial.type = "displaced";
+    s.initial.type = InitialKind::kDisplaced;
     s.initial.end_dx = -kLength * std::sin(theta0);
   } else {  // |end_dx| = L is out of the statics' range: start from the straight rigid-rod position
-    s.initial.type = "straight";
+    s.initial.type = InitialKind::kStraight;
     s.initial.angle = -M_PI / 2 - theta0;
   }
   auto sim = buildSimulator(s);

@@ -22,23 +22,18 @@ namespace {
 
 const std::string kScene = std::string(RISER_SIM_SOURCE_DIR) + "/config/scenes/hanging_chain.yaml";
 
-// Every name solver.integrator accepts.
-std::vector<std::string> integrators() {
-  std::vector<std::string> out;
-  std::stringstream names(integratorNames());
-  for (std::string s; std::getline(names, s, ',');) out.push_back(s.substr(s.find_first_not_of(' ')));
-  return out;
-}
 
 struct Setting {
-  std::string integrator, formulation, jacobian;
+  IntegratorKind integrator;
+  FormulationKind formulation;
+  JacobianKind jacobian;
   double dt;
 };
 
 std::string label(const Setting& s) {
   char buf[120];
-  std::snprintf(buf, sizeof(buf), "%s / %s / %s / dt %g", s.integrator.c_str(), s.formulation.c_str(),
-                s.jacobian.c_str(), s.dt);
+  std::snprintf(buf, sizeof(buf), "%s / %s / %s / dt %g", name(s.integrator), name(s.formulation),
+                name(s.jacobian), s.dt);
   return buf;
 }
 
@@ -57,7 +52,7 @@ Scene pinnedScene(const Setting& s, bool moving) {
   // the tolerance (1e-9 let the points move by 1.2e-9 m).
   sc.solver.tolerance = 1e-11;
   if (moving) {
-    sc.top.type = "sinusoid";
+    sc.top.type = MotionKind::kSinusoid;
     sc.top.amplitude = Vec2(0.3, 0.2);
     sc.top.period = 3.0;
     sc.top.phase = 0.0;
@@ -67,7 +62,7 @@ Scene pinnedScene(const Setting& s, bool moving) {
 }
 
 // absolute has no structured solve: refused at setup, naming the keys.
-bool refused(const Setting& s) { return s.formulation == "absolute" && s.jacobian == "structured"; }
+bool refused(const Setting& s) { return s.formulation == FormulationKind::kAbsolute && s.jacobian == JacobianKind::kStructured; }
 
 void expectRefused(const Setting& s, bool moving) {
   try {
@@ -87,17 +82,18 @@ double pointsDiff(const AlignedVector<Vec2>& a, const AlignedVector<Vec2>& b) {
   return w;
 }
 
-double dtFor(const std::string& integrator, bool large) {
-  if (integrator == "rk4") return 1e-3;  // 0.57x its stability limit (1.75e-3 s, n = 8)
-  if (integrator == "dopri5") return 1e-2;  // output step only
+double dtFor(IntegratorKind integrator, bool large) {
+  if (integrator == IntegratorKind::kRk4) return 1e-3;  // 0.57x its stability limit (1.75e-3 s, n = 8)
+  if (integrator == IntegratorKind::kDopri5) return 1e-2;  // output step only
   return large ? 2e-2 : 1e-3;  // implicit: the reproducer's step and 11x rk4's limit
 }
 
 std::vector<Setting> settings(bool both_steps) {
   std::vector<Setting> out;
-  for (const std::string& i : integrators())
-    for (const char* f : {"absolute", "independent", "recursive"})
-      for (const char* j : {"auto", "structured", "dense"})
+  // Every value of each choice (choices.h): a new integrator is in the matrix without an edit here.
+  for (const auto& [i, i_name] : Choices<IntegratorKind>::names)
+    for (const auto& [f, f_name] : Choices<FormulationKind>::names)
+      for (const auto& [j, j_name] : Choices<JacobianKind>::names)
         for (bool large : {false, true}) {
           if (large && (!both_steps || !isImplicitIntegrator(i))) continue;
           out.push_back({i, f, j, dtFor(i, large)});
@@ -152,9 +148,9 @@ struct Bound {
 };
 
 Bound boundFor(const Setting& s) {
-  if (s.integrator == "rk4") return {1e-7, 1e-8};
-  if (s.integrator == "dopri5") return {1e-9, 1e-10};
-  const double k = s.integrator == "midpoint" ? kMidpointK : kRosenbrockK;
+  if (s.integrator == IntegratorKind::kRk4) return {1e-7, 1e-8};
+  if (s.integrator == IntegratorKind::kDopri5) return {1e-9, 1e-10};
+  const double k = s.integrator == IntegratorKind::kMidpoint ? kMidpointK : kRosenbrockK;
   return {k * s.dt * s.dt, 0.1 * k * s.dt * s.dt};
 }
 
@@ -192,7 +188,7 @@ Result runMoving(Setting s, const Trajectory& ref) {
 }
 
 TEST(PinnedImplicit, MovingTopAgreesWithReference) {
-  Scene ref_scene = pinnedScene({"dopri5", "recursive", "auto", 0.01}, true);
+  Scene ref_scene = pinnedScene({IntegratorKind::kDopri5, FormulationKind::kRecursive, JacobianKind::kAuto, 0.01}, true);
   ref_scene.solver.tolerance = 1e-13;
   auto ref = buildSimulator(ref_scene);
   Trajectory ref_points;

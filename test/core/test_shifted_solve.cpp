@@ -44,7 +44,7 @@ Scene pinnedCatenary(bool axial, bool water, bool seabed, bool hydro = true, dou
   s.bottom = BottomBoundary::kPinned;
   s.top.position = Vec2(0.0, -1.0);  // every rfe fully wet (the wet length's change is not linearised)
   s.bottom_point = Vec2(80.0, -61.0);
-  s.initial.type = "between_points";
+  s.initial.type = InitialKind::kBetweenPoints;
   s.solver.stabilization = stabilization;
   if (water) {
     s.water.enabled = true;
@@ -67,7 +67,7 @@ Scene hangingWithMass(bool axial) {
   s.options.axial_flexibility = axial;
   s.options.bending = true;
   s.line.EI = 1e4;
-  s.initial.type = "hanging";
+  s.initial.type = InitialKind::kHanging;
   return s;
 }
 
@@ -111,7 +111,7 @@ enum class State {
 
 // Largest relative difference between the structured and the dense solve over c in {1e-4, 1e-2, 0.1}.
 double compare(const char* name, Scene scene, const std::string& formulation, State state = State::kEquilibrium) {
-  scene.solver.formulation = formulation;
+  scene.solver.formulation = toChoice<FormulationKind>(formulation);
   StaticsResult st;
   auto sim = buildSimulator(scene, &st);
   const Model& model = sim->model();

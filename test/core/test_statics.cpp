@@ -99,7 +99,7 @@ double betweenPointsError(int n, bool axial) {
   s.options.axial_flexibility = axial;
   s.bottom = BottomBoundary::kPinned;
   s.bottom_point = Vec2(70.0, -30.0);
-  s.initial.type = "between_points";
+  s.initial.type = InitialKind::kBetweenPoints;
   s.initial.tolerance = 1e-12;
   auto model = buildModel(s);
   StaticsResult st = solveStatics(*model, staticsProblem(s));
@@ -125,7 +125,7 @@ TEST(Statics, BetweenPointsMatchesCatenary) {
 // the spring (middle of rfe i); end at y = -(L + (W_end L + w L²/2) / EA).
 TEST(Statics, HangingLineTensionAndElongations) {
   Scene s = validation::table1Scene(10);
-  s.initial.type = "hanging";
+  s.initial.type = InitialKind::kHanging;
   s.initial.tolerance = 1e-12;
   StaticsResult st;
   auto sim = buildSimulator(s, &st);

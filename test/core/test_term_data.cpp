@@ -35,7 +35,7 @@ std::unique_ptr<Simulator> simulator(const Scene& s, std::shared_ptr<const Model
 TEST(TermData, SimulatorsSharingAModelRunIndependently) {
   Scene s = jlay();
   // The end load of initial.end_force: hold comes from buildSimulator; here the models are built by hand.
-  s.initial.end_force = "release";
+  s.initial.end_force = EndForceKind::kRelease;
   constexpr int kSteps = 4000;  // 2 s at dt = 5e-4 s
   // B drags its top fast along x: its touchdown moves by metres and its contacts lift off and touch down,
   // rewriting its anchors; A follows the scene's slow motion.

@@ -137,7 +137,7 @@ Outcome exercise(const std::string& data) {
     out.message = "parsed (not built: " + std::to_string(scene.elements) + " elements)";
     return out;
   }
-  if (scene.solver.integrator == "dopri5" && scene.solver.dt > kMaxBuiltDopri5Dt) {
+  if (scene.solver.integrator == IntegratorKind::kDopri5 && scene.solver.dt > kMaxBuiltDopri5Dt) {
     out.kind = Outcome::Kind::kParsed;
     out.message = "parsed (not built: dopri5 with solver.dt > 1 s)";
     return out;

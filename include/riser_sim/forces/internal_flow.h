@@ -8,6 +8,7 @@
 #pragma once
 #include <string>
 
+#include "riser_sim/choices.h"
 #include "riser_sim/force_term.h"
 
 namespace riser_sim {
@@ -18,7 +19,7 @@ struct InternalFlowSpec {
   double acceleration = 0.0;  // u' [m/s^2]
   // pipe_flow: open system, the classical limit (default, docs/limitations.md says why); paper: the
   // paper's closed-system Lagrangian (eqs. 17-24), kept to reproduce its Fig. 14.
-  std::string model = "pipe_flow";
+  FlowModelKind model = FlowModelKind::kPipeFlow;
 };
 
 class InternalFlow : public ForceTerm {
