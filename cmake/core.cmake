@@ -25,6 +25,7 @@ add_library(riser_sim_core
   src/core/implicit_integrators.cpp
   src/core/simulator.cpp
   src/core/solver_setup.cpp
+  src/core/stability_estimate.cpp
   src/core/statics.cpp
   src/core/modal.cpp
   src/core/scene.cpp

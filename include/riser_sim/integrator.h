@@ -1,6 +1,7 @@
 // Time integrators behind one small interface (Drake-style). Workspaces are sized once in reset();
 // step() allocates nothing.
 #pragma once
+#include <complex>
 #include <memory>
 #include <string>
 
@@ -58,6 +59,8 @@ class Integrator {
   virtual bool explicitFixedStep() const { return false; }
   // Largest |λ h| on the imaginary axis inside the stability region (0: unconditionally stable).
   virtual double stabilityBound() const { return 0.0; }
+  // Explicit fixed-step scheme: its stability function R(z), y1 = R(h λ) y0 on y' = λ y.
+  virtual std::complex<double> stabilityFunction(std::complex<double> /*z*/) const { return 0.0; }
   // Cumulative work counters (for cost reports).
   struct Stats {
     long substeps = 0, rejected = 0, rhs = 0, jacobians = 0, factorizations = 0, newton = 0;
@@ -83,6 +86,9 @@ class Rk4 : public Integrator {
   int stages() const override { return 4; }
   bool explicitFixedStep() const override { return true; }
   double stabilityBound() const override { return 2.8284; }  // RK4 on the imaginary axis: 2 sqrt(2)
+  std::complex<double> stabilityFunction(std::complex<double> z) const override {
+    return 1.0 + z * (1.0 + z * (0.5 + z * (1.0 / 6.0 + z / 24.0)));
+  }
 
  private:
   VecX k1_, k2_, k3_, k4_, tmp_;

@@ -100,6 +100,7 @@ class Simulator : private OdeSystem {
   VecX last_rhs_y_;               // state of the formulation's last evaluation (for linearize())
   double last_rhs_t_ = NAN;
   double omega_max_ = 0.0;
+  double damped_step_ = INFINITY;  // largest stable explicit step from the Ritz values (damping included)
   double t_ = 0.0, e0_ = 0.0, energy_scale_ = 1.0, max_constraint_error_ = 0.0;
   long steps_ = 0;
   TermDataSet term_data_;  // the terms' history in this run (seabed anchors); the model stays immutable
