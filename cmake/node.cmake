@@ -41,8 +41,9 @@ if(CATKIN_ENABLE_TESTING)
     get_filename_component(t ${test_file} NAME_WE)
     add_rostest_gtest(test_${t} test/ros/${t}.test test/ros/test_${t}.cpp)
     target_link_libraries(test_${t} riser_sim_ros ${catkin_LIBRARIES})
-    add_dependencies(test_${t} riser_sim_node riser_sim_nodelets)
-    target_compile_definitions(test_${t} PRIVATE RISER_SIM_NODE_BIN="$<TARGET_FILE:riser_sim_node>")
+    add_dependencies(test_${t} riser_sim_node riser_sim_nodelets riser_sim_cli)
+    target_compile_definitions(test_${t} PRIVATE RISER_SIM_NODE_BIN="$<TARGET_FILE:riser_sim_node>"
+      RISER_SIM_CLI_BIN="$<TARGET_FILE:riser_sim_cli>")
   endforeach()
   # Master restart and security checks: a script, not a rostest (it kills and restarts the master).
   # It writes its own JUnit file, counted by catkin_test_results like the others.
