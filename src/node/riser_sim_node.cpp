@@ -279,6 +279,9 @@ bool RiserSimNode::start(const VesselSample& s, const ros::Time& now, std::strin
     origin_ = ros::Time::now();  // after the statics: their cost is not a backlog to catch up
     if (origin_ < now) origin_ = now;
     dropped_ = 0.0;
+    // The first sample's time on the new origin (the motion was made before the origin was known: with
+    // the old origin the later samples looked older than it and were all refused, the top never moved).
+    external->reset(simTime(s.stamp), top);
     motion_ = external;
     std::shared_ptr<const riser_sim::Model> model = run.model;
     sim_ = std::move(run.sim);
