@@ -8,6 +8,11 @@ add_library(riser_sim_ros
   src/node/timing_stats.cpp
   src/node/modes_service.cpp
   src/node/master_watch.cpp
+  src/node/ros_clock.cpp
+  src/node/line_topics.cpp
+  src/node/node_diagnostics.cpp
+  src/node/reset_handshake.cpp
+  src/node/scene_param.cpp
   src/node/riser_sim_node.cpp
 )
 target_include_directories(riser_sim_ros PUBLIC include ${catkin_INCLUDE_DIRS})

@@ -2,8 +2,11 @@
 
 #include <cmath>
 #include <sstream>
+#include <vector>
 
 #include <xmlrpcpp/XmlRpcValue.h>
+
+#include "riser_sim_ros/line_topics.h"
 
 namespace riser_sim_ros {
 
@@ -129,27 +132,23 @@ NodeParams loadNodeParams(const ros::NodeHandle& pnh, const std::string& node_na
   positive("tf_poll_rate", p.tf_poll_rate);
 
   const char* off = " (0 = off)";
-  p.rates.tension = r.number("rates/tension", p.rates.tension);
-  nonNegative("rates/tension", p.rates.tension, off);
-  p.rates.state = r.number("rates/state", p.rates.state);
-  nonNegative("rates/state", p.rates.state, off);
-  p.rates.markers = r.number("rates/markers", p.rates.markers);
-  nonNegative("rates/markers", p.rates.markers, off);
-  p.rates.tf = r.number("rates/tf", p.rates.tf);
-  nonNegative("rates/tf", p.rates.tf, off);
-  p.rates.wrench = r.number("rates/wrench", p.rates.tension > 0.0 ? p.rates.tension : p.rates.wrench);
-  nonNegative("rates/wrench", p.rates.wrench, off);
-  p.rates.diagnostics = r.number("rates/diagnostics", p.rates.diagnostics);
-  nonNegative("rates/diagnostics", p.rates.diagnostics, off);
+  std::vector<std::string> rate_names;
+  for (const TopicRate& t : dataTopicRates()) {
+    const double def = t.default_as && p.rates.at(t.default_as) > 0.0 ? p.rates.at(t.default_as) : t.hz;
+    rate_names.push_back(t.name);
+    p.rates[t.name] = r.number("rates/" + rate_names.back(), def);
+    nonNegative("rates/" + rate_names.back(), p.rates[t.name], off);
+  }
+  rate_names.push_back("diagnostics");
+  p.rates["diagnostics"] = r.number("rates/diagnostics", 1.0);
+  nonNegative("rates/diagnostics", p.rates["diagnostics"], off);
 
   p.loop_rate = r.number("loop_rate", p.loop_rate);
   positive("loop_rate", p.loop_rate);
-  for (auto [name, rate] : {std::pair<const char*, double>{"rates/tension", p.rates.tension},
-                            {"rates/state", p.rates.state}, {"rates/markers", p.rates.markers},
-                            {"rates/tf", p.rates.tf}, {"rates/wrench", p.rates.wrench},
-                            {"rates/diagnostics", p.rates.diagnostics}})
-    if (rate > p.loop_rate)
-      throw ParamError(name, "must not exceed ~loop_rate (" + show(p.loop_rate) + " Hz), got " + show(rate));
+  for (const std::string& name : rate_names)
+    if (p.rates[name] > p.loop_rate)
+      throw ParamError("rates/" + name, "must not exceed ~loop_rate (" + show(p.loop_rate) + " Hz), got " +
+                                            show(p.rates[name]));
   p.max_steps_per_cycle = r.integer("max_steps_per_cycle", p.max_steps_per_cycle);
   if (p.max_steps_per_cycle < 1)
     throw ParamError("max_steps_per_cycle", "must be >= 1, got " + std::to_string(p.max_steps_per_cycle));
