@@ -57,4 +57,9 @@ if(CATKIN_ENABLE_TESTING)
   catkin_run_tests_target(script master_restart script-master_restart.xml
     COMMAND "/usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/test/ros/test_master_restart.py --node $<TARGET_FILE:riser_sim_node> --scene ${CMAKE_CURRENT_SOURCE_DIR}/test/ros/scenes/small_riser.yaml --xml ${_master_restart_xml}"
     DEPENDENCIES riser_sim_node)
+  # Relaunching with another scene on a running master: the launch files clear the private namespace.
+  set(_relaunch_xml ${CATKIN_TEST_RESULTS_DIR}/${PROJECT_NAME}/script-relaunch_scene.xml)
+  catkin_run_tests_target(script relaunch_scene script-relaunch_scene.xml
+    COMMAND "/usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/test/ros/test_relaunch_scene.py --scenes ${CMAKE_CURRENT_SOURCE_DIR}/config/scenes --xml ${_relaunch_xml}"
+    DEPENDENCIES riser_sim_node riser_sim_nodelets)
 endif()
