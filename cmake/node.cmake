@@ -3,6 +3,7 @@ add_library(riser_sim_ros
   src/node/xmlrpc_yaml.cpp
   src/node/node_params.cpp
   src/node/vessel_input.cpp
+  src/node/tf_listener.cpp
   src/node/line_messages.cpp
   src/node/line_markers.cpp
   src/node/timing_stats.cpp

@@ -20,7 +20,6 @@
 #include <ros/ros.h>
 #include <std_srvs/Trigger.h>
 #include <tf2_ros/buffer.h>
-#include <tf2_ros/transform_listener.h>
 
 #include "riser_sim/external_motion.h"
 #include "riser_sim/scene.h"
@@ -32,6 +31,7 @@
 #include "riser_sim_ros/reset_handshake.h"
 #include "riser_sim_ros/ros_clock.h"
 #include "riser_sim_ros/scene_param.h"
+#include "riser_sim_ros/tf_listener.h"
 #include "riser_sim_ros/vessel_input.h"
 
 namespace riser_sim_ros {
@@ -66,9 +66,9 @@ class RiserSimNode {
   riser_sim::Scene scene_;
   std::string name_;
   tf2_ros::Buffer tf_buffer_;
-  std::unique_ptr<tf2_ros::TransformListener> tf_listener_;
   SampleBuffer samples_;
   std::unique_ptr<VesselInput> input_;
+  std::unique_ptr<CheckedTfListener> tf_listener_;  // after input_: its callbacks use it
   std::array<VesselSample, SampleBuffer::kCapacity> drained_;
   RosClockWatch clock_;
   LineTopics topics_;

@@ -21,9 +21,11 @@ RiserSimNode::RiserSimNode(ros::NodeHandle nh, ros::NodeHandle pnh)
 
   // tf is only read for tf input or poses in another frame: k risers that each listened to /tf would
   // each deserialise every riser's transforms (k^2 work).
-  if (params_.vessel_input == "tf" || params_.expected_frame != params_.fixed_frame)
-    tf_listener_ = std::make_unique<tf2_ros::TransformListener>(tf_buffer_, nh_);
   input_ = std::make_unique<VesselInput>(nh_, params_, tf_buffer_, samples_, name_);
+  if (params_.vessel_input == "tf" || params_.expected_frame != params_.fixed_frame)
+    tf_listener_ = std::make_unique<CheckedTfListener>(
+        nh_, tf_buffer_, params_.vessel_input == "tf" ? params_.vessel_frame : "",
+        [this](const std::string& why) { input_->reject(why); }, name_);
   diag_ = std::make_unique<NodeDiagnostics>(nh_, name_, scene_.name.empty() ? "riser_sim" : scene_.name,
                                             params_.rates.at("diagnostics"), params_.pose_timeout, *input_, clock_);
   diag_->setPublishPeriod(topics_.referencePeriod());
