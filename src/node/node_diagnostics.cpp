@@ -139,6 +139,8 @@ void NodeDiagnostics::publish(const ros::Time& now, const RunView& run) {
   std::string message;
   if (run.mode == RunMode::kRunning && run.sim) {
     message = runningMessage(now, run, pose_age);
+    // Without ROS time advancing there is no real-time factor to claim.
+    if (stalled) message = "simulation held at t = " + num(run.sim->time(), "%.3f") + " s";
   } else if (run.mode == RunMode::kWaiting) {
     st.level = DiagnosticStatus::WARN;
     message = "waiting for the first valid vessel pose (" + input_.source() + ")";
