@@ -4,6 +4,7 @@
 // rejected poses.
 #include <fcntl.h>
 #include <signal.h>
+#include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -28,17 +29,37 @@ int countLines(const std::string& file, const std::string& text) {
   return n;
 }
 
+// Ends the node (SIGINT, SIGKILL after 10 s) however the test leaves.
+struct NodeProcess {
+  pid_t pid = -1;
+  ~NodeProcess() { stop(); }
+  void stop() {
+    if (pid <= 0) return;
+    kill(pid, SIGINT);
+    int status = 0;
+    const bool ended = waitFor([&] { return waitpid(pid, &status, WNOHANG) == pid; }, 10.0);
+    if (!ended) {
+      kill(pid, SIGKILL);
+      waitpid(pid, &status, 0);
+    }
+    pid = -1;
+  }
+};
+
 TEST(NodeBadTf, RejectedCountedAndLogThrottled) {
   const std::string out = "/tmp/node_bad_tf_" + std::to_string(getpid()) + ".log";
-  const pid_t pid = fork();
-  if (pid == 0) {
-    const int fd = ::open(out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    dup2(fd, 1);
-    dup2(fd, 2);
-    execl(RISER_SIM_NODE_BIN, RISER_SIM_NODE_BIN, ("__name:=" + kName).c_str(), static_cast<char*>(nullptr));
-    _exit(127);
-  }
-  ASSERT_GT(pid, 0);
+  // posix_spawn, not fork: this process has threads (a child of fork may only make async-signal-safe
+  // calls; building strings there can deadlock on malloc's lock).
+  const std::string name_arg = "__name:=" + kName;
+  char* const argv[] = {const_cast<char*>(RISER_SIM_NODE_BIN), const_cast<char*>(name_arg.c_str()), nullptr};
+  posix_spawn_file_actions_t files;
+  posix_spawn_file_actions_init(&files);
+  posix_spawn_file_actions_addopen(&files, 1, out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_adddup2(&files, 1, 2);
+  NodeProcess node;
+  const int spawned = posix_spawn(&node.pid, RISER_SIM_NODE_BIN, &files, nullptr, argv, environ);
+  posix_spawn_file_actions_destroy(&files);
+  ASSERT_EQ(spawned, 0);
 
   ros::NodeHandle nh;
   ros::Publisher tf_pub = nh.advertise<tf2_msgs::TFMessage>("/tf", 100);
@@ -81,9 +102,7 @@ TEST(NodeBadTf, RejectedCountedAndLogThrottled) {
   const size_t before = tension.count();
   EXPECT_TRUE(tension.waitCount(before + 5, 10.0)) << "the node stopped publishing";
   timer.stop();
-  kill(pid, SIGINT);
-  int status = 0;
-  waitpid(pid, &status, 0);
+  node.stop();  // its output is complete
 
   // tf2's own errors never printed; the node's warnings at most one per 2 s (+1: the first).
   EXPECT_EQ(countLines(out, "TF_NAN_INPUT"), 0);

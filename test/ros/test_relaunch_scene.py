@@ -10,6 +10,7 @@ cmake/node.cmake). Every wait polls a condition; every process started here is s
 """
 import argparse
 import os
+import signal
 import subprocess
 import sys
 import tempfile
@@ -31,6 +32,7 @@ def main():
     uri = "http://127.0.0.1:%d" % port
     env = dict(os.environ, ROS_MASTER_URI=uri, ROS_HOME=tmp, ROS_LOG_DIR=os.path.join(tmp, "log"))
     procs, master = Procs(), Master(uri)
+    started = set()  # pids of the launched processes
     results = []
 
     def param(name):
@@ -44,11 +46,30 @@ def main():
             args.append("manager:=/no_manager")  # the loader waits for it; the parameters are set before
         p = procs.start(args, os.path.join(tmp, log), env=env)
         wait_for(lambda: param("/%s/riser_sim/scene/name" % ns) == scene, 30, "%s loaded by %s" % (scene, launch_file))
+        # Stopped only once its process is up: roslaunch interrupted while it spawns leaves the process
+        # running on its own (each child has a session of its own), so it is also ended by pid.
+        p.child = wait_for(lambda: new_pid("/%s/riser_sim" % ns), 30, "the process of " + launch_file)
+        started.add(p.child)
         return p
+
+    def new_pid(node):
+        """pid of `node` once the process launched last registered (not one of an earlier launch)."""
+        try:
+            pid = master.node_pid(node)
+        except OSError:  # the master still lists the ended process of the earlier launch
+            return None
+        return pid if pid and pid not in started else None
+
+    def stop(p):
+        Procs.stop(p)
+        try:
+            os.kill(p.child, signal.SIGKILL)  # only if roslaunch did not end it
+        except ProcessLookupError:
+            pass
 
     def relaunch_keeps_nothing(launch_file, ns):
         private = "/%s/riser_sim" % ns
-        Procs.stop(launch(launch_file, ns, "paper_jlay_170m", ns + "_1.log"))
+        stop(launch(launch_file, ns, "paper_jlay_170m", ns + "_1.log"))
         assert param(private + "/scene/seabed/level") == -80.0, "the J-lay scene was not loaded"
         master.call("setParam", private + "/loop_rat", 100.0)  # left by an earlier params file
         p = launch(launch_file, ns, "demo_riser", ns + "_2.log")
@@ -59,7 +80,7 @@ def main():
             assert "end_force" not in scene["initial"], "~scene/initial/end_force of the J-lay is still there"
             assert param(private + "/loop_rat") is None, "the stale ~loop_rat is still there"
         finally:
-            Procs.stop(p)
+            stop(p)
 
     def check(name, fn, *args):
         t0 = time.monotonic()
