@@ -3,11 +3,17 @@ add_library(riser_sim_ros
   src/node/xmlrpc_yaml.cpp
   src/node/node_params.cpp
   src/node/vessel_input.cpp
+  src/node/tf_listener.cpp
   src/node/line_messages.cpp
   src/node/line_markers.cpp
   src/node/timing_stats.cpp
   src/node/modes_service.cpp
   src/node/master_watch.cpp
+  src/node/ros_clock.cpp
+  src/node/line_topics.cpp
+  src/node/node_diagnostics.cpp
+  src/node/reset_handshake.cpp
+  src/node/scene_param.cpp
   src/node/riser_sim_node.cpp
 )
 target_include_directories(riser_sim_ros PUBLIC include ${catkin_INCLUDE_DIRS})
@@ -44,8 +50,9 @@ if(CATKIN_ENABLE_TESTING)
     get_filename_component(t ${test_file} NAME_WE)
     add_rostest_gtest(test_${t} test/ros/${t}.test test/ros/test_${t}.cpp)
     target_link_libraries(test_${t} riser_sim_ros ${catkin_LIBRARIES})
-    add_dependencies(test_${t} riser_sim_node riser_sim_nodelets)
-    target_compile_definitions(test_${t} PRIVATE RISER_SIM_NODE_BIN="$<TARGET_FILE:riser_sim_node>")
+    add_dependencies(test_${t} riser_sim_node riser_sim_nodelets riser_sim_cli)
+    target_compile_definitions(test_${t} PRIVATE RISER_SIM_NODE_BIN="$<TARGET_FILE:riser_sim_node>"
+      RISER_SIM_CLI_BIN="$<TARGET_FILE:riser_sim_cli>")
   endforeach()
   # Master restart and security checks: a script, not a rostest (it kills and restarts the master).
   # It writes its own JUnit file, counted by catkin_test_results like the others.
@@ -54,4 +61,9 @@ if(CATKIN_ENABLE_TESTING)
   catkin_run_tests_target(script master_restart script-master_restart.xml
     COMMAND "/usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/test/ros/test_master_restart.py --node $<TARGET_FILE:riser_sim_node> --scene ${CMAKE_CURRENT_SOURCE_DIR}/test/ros/scenes/small_riser.yaml --xml ${_master_restart_xml}"
     DEPENDENCIES riser_sim_node)
+  # Relaunching with another scene on a running master: the launch files clear the private namespace.
+  set(_relaunch_xml ${CATKIN_TEST_RESULTS_DIR}/${PROJECT_NAME}/script-relaunch_scene.xml)
+  catkin_run_tests_target(script relaunch_scene script-relaunch_scene.xml
+    COMMAND "/usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/test/ros/test_relaunch_scene.py --scenes ${CMAKE_CURRENT_SOURCE_DIR}/config/scenes --xml ${_relaunch_xml}"
+    DEPENDENCIES riser_sim_node riser_sim_nodelets)
 endif()

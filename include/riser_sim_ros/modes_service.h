@@ -1,6 +1,12 @@
 // ~modes: the modal analysis of a static state (riser_sim::computeModes) as a riser_sim/Modes response.
 #pragma once
+#include <functional>
+#include <memory>
+#include <mutex>
 #include <string>
+
+#include <ros/callback_queue.h>
+#include <ros/ros.h>
 
 #include "riser_sim/Modes.h"
 #include "riser_sim/kinematics.h"
@@ -15,5 +21,37 @@ namespace riser_sim_ros {
 // the reason, e.g. "count: must be >= 1, got 0". Allocates; meant for a service thread.
 void computeModesResponse(const riser_sim::Scene& scene, const riser_sim::Kinematics& kin,
                           const riser_sim::Vec2& end_force, int count, riser_sim::Modes::Response& res);
+
+// The node's ~modes service on its own callback queue and thread (an eigen-solve never holds up the
+// vessel input or ~reset). It works on a copy of the static state the integration loop hands over at
+// each start, never on the running simulator.
+class ModesServer {
+ public:
+  // `waiting_for`: what the node waits for before the first start (for the reply), e.g. the input topic.
+  ModesServer(ros::NodeHandle pnh, std::string name, std::string frame, std::string waiting_for);
+  ~ModesServer();
+  // The scene with the top fixed at the hang-off and its static state (integration loop).
+  void setState(const riser_sim::Scene& scene, const riser_sim::Kinematics& kin, const riser_sim::Vec2& end_force,
+                const ros::Time& stamp);
+  // Why there is no static state (kept only until the first setState).
+  void setFailure(const std::string& why);
+
+ private:
+  struct StaticState {
+    riser_sim::Scene scene;
+    riser_sim::Kinematics kin;
+    riser_sim::Vec2 end_force = riser_sim::Vec2::Zero();
+    ros::Time stamp;
+  };
+  bool onModes(riser_sim::Modes::Request& req, riser_sim::Modes::Response& res);
+
+  std::string name_, frame_, waiting_for_;
+  std::mutex mutex_;
+  std::shared_ptr<const StaticState> state_;
+  std::string failure_;
+  ros::CallbackQueue queue_;
+  ros::ServiceServer srv_;
+  std::unique_ptr<ros::AsyncSpinner> spinner_;
+};
 
 }  // namespace riser_sim_ros

@@ -1,6 +1,7 @@
 // riser_sim_node's own private parameters (everything outside ~scene), read and validated once.
 // Every error names the parameter: "~rates/tension: must be >= 0 (0 = off), got -1".
 #pragma once
+#include <map>
 #include <stdexcept>
 #include <string>
 
@@ -14,15 +15,6 @@ namespace riser_sim_ros {
 class ParamError : public std::runtime_error {
  public:
   ParamError(const std::string& name, const std::string& what) : std::runtime_error("~" + name + ": " + what) {}
-};
-
-struct PublishRates {  // [Hz], 0 = off
-  double tension = 20.0;
-  double state = 10.0;
-  double markers = 10.0;
-  double tf = 20.0;
-  double wrench = 20.0;
-  double diagnostics = 1.0;
 };
 
 struct MarkerParams {
@@ -45,7 +37,8 @@ struct NodeParams {
   double max_pose_lead = 0.5;      // poses stamped more than this after ROS time are ignored [s]
   double clock_timeout = 1.0;      // ROS time still for this long (wall time): paused, said on /diagnostics [s]
   double tf_poll_rate = 50.0;      // tf input: lookup rate [Hz]
-  PublishRates rates;
+  // ~rates/<name> [Hz], 0 = off: the data topics of line_topics.h (dataTopicRates()) and "diagnostics".
+  std::map<std::string, double> rates;
   double loop_rate = 500.0;        // integration loop wake-ups per wall second [Hz]
   int max_steps_per_cycle = 500;   // cap of solver steps per wake-up
   double max_lag = 0.5;            // backlog (ROS time not yet simulated) dropped beyond this [s]

@@ -92,13 +92,15 @@ class VesselInput {
   std::string lastRejection() const;
   // Forgets the last stamp (after ROS time jumped backwards).
   void restart();
+  // Counts a pose refused elsewhere (a bad tf of the vessel frame) as rejected, with the reason;
+  // warns at most once per 2 s.
+  void reject(const std::string& why);
 
  private:
   void onPose(const geometry_msgs::PoseStamped::ConstPtr& msg);
   void onOdom(const nav_msgs::Odometry::ConstPtr& msg);
   void onTfTimer(const ros::TimerEvent&);
   void handle(const std_msgs::Header& header, const geometry_msgs::Pose& pose);
-  void reject(const std::string& why);
 
   const NodeParams& params_;
   std::string name_;

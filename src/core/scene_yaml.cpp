@@ -64,11 +64,15 @@ size_t editDistance(const std::string& a, const std::string& b) {
   return row[b.size()];
 }
 
+}  // namespace
+
 std::string unknownKeyMessage(const std::string& key, const std::vector<std::string>& accepted) {
   for (const auto& a : accepted)
     if (editDistance(key, a) <= 2 && key.size() > 2) return "unknown key (did you mean '" + a + "'?)";
   return "unknown key (accepted: " + join(accepted) + ")";
 }
+
+namespace {
 
 // ---- typed conversions of one node; `key` is its full path, used in every message ----
 

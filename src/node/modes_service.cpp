@@ -1,12 +1,13 @@
-#include "riser_sim/run_builder.h"
 #include "riser_sim_ros/modes_service.h"
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <exception>
 
 #include "riser_sim/modal.h"
 #include "riser_sim/model.h"
+#include "riser_sim/run_builder.h"
 
 namespace riser_sim_ros {
 
@@ -72,6 +73,56 @@ void computeModesResponse(const riser_sim::Scene& scene, const riser_sim::Kinema
                 r.equilibrium_residual, r.equilibrium_residual > 1e-6 ? " (not an equilibrium: modes not meaningful)" : "");
   res.message = buf;
   res.success = true;
+}
+
+ModesServer::ModesServer(ros::NodeHandle pnh, std::string name, std::string frame, std::string waiting_for)
+    : name_(std::move(name)), frame_(std::move(frame)), waiting_for_(std::move(waiting_for)) {
+  pnh.setCallbackQueue(&queue_);
+  srv_ = pnh.advertiseService("modes", &ModesServer::onModes, this);
+  spinner_ = std::make_unique<ros::AsyncSpinner>(1, &queue_);
+  spinner_->start();
+}
+
+ModesServer::~ModesServer() {
+  spinner_->stop();
+  srv_.shutdown();
+}
+
+void ModesServer::setState(const riser_sim::Scene& scene, const riser_sim::Kinematics& kin,
+                           const riser_sim::Vec2& end_force, const ros::Time& stamp) {
+  auto state = std::make_shared<StaticState>();
+  state->scene = scene;
+  state->kin = kin;
+  state->end_force = end_force;
+  state->stamp = stamp;
+  std::lock_guard<std::mutex> lock(mutex_);
+  state_ = std::move(state);
+}
+
+void ModesServer::setFailure(const std::string& why) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (!state_) failure_ = why;
+}
+
+bool ModesServer::onModes(riser_sim::Modes::Request& req, riser_sim::Modes::Response& res) {
+  std::shared_ptr<const StaticState> state;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    state = state_;
+    if (!state) {
+      res.success = false;
+      res.message = failure_.empty() ? "no static state yet: waiting for the first valid vessel pose (" + waiting_for_ + ")"
+                                     : "no static state: " + failure_;
+      return true;
+    }
+  }
+  const auto t0 = std::chrono::steady_clock::now();
+  computeModesResponse(state->scene, state->kin, state->end_force, req.count, res);
+  res.header.stamp = state->stamp;
+  res.header.frame_id = frame_;
+  ROS_INFO("%s: ~modes (count %d): %s (%.1f ms)", name_.c_str(), req.count, res.message.c_str(),
+           std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+  return true;
 }
 
 }  // namespace riser_sim_ros

@@ -1,9 +1,16 @@
 #include "riser_sim_ros/node_params.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <vector>
 
 #include <xmlrpcpp/XmlRpcValue.h>
+#include <yaml-cpp/yaml.h>
+
+#include "riser_sim/scene_yaml.h"
+
+#include "riser_sim_ros/line_topics.h"
 
 namespace riser_sim_ros {
 
@@ -29,58 +36,121 @@ std::string describe(XmlRpcValue& v) {
   }
 }
 
+// A scalar given as a string ('1e8': YAML 1.1, which rosparam uses, reads it as a string) converts as
+// the scene loader converts it (yaml-cpp, YAML 1.2), so both accept the same forms.
+template <class T>
+bool decodeString(XmlRpcValue& v, T& out) {
+  return v.getType() == XmlRpcValue::TypeString &&
+         YAML::convert<T>::decode(YAML::Node(static_cast<std::string>(v)), out);
+}
+
+bool decodeNumber(XmlRpcValue& v, double& out) {
+  if (v.getType() == XmlRpcValue::TypeDouble) out = static_cast<double>(v);
+  else if (v.getType() == XmlRpcValue::TypeInt) out = static_cast<int>(v);
+  else return decodeString(v, out);
+  return true;
+}
+
+// Reads the private parameters and remembers every name it was asked for: those are the accepted
+// ones (checkUnknown()).
 class Reader {
  public:
   explicit Reader(const ros::NodeHandle& pnh) : pnh_(pnh) {}
 
-  bool has(const std::string& name) const { return pnh_.hasParam(name); }
-
-  double number(const std::string& name, double def) const {
+  double number(const std::string& name, double def) {
     XmlRpcValue v;
-    if (!pnh_.getParam(name, v)) return def;
+    if (!get(name, v)) return def;
     double d;
-    if (v.getType() == XmlRpcValue::TypeDouble) d = static_cast<double>(v);
-    else if (v.getType() == XmlRpcValue::TypeInt) d = static_cast<int>(v);
-    else throw ParamError(name, "expected a number, got " + describe(v));
+    if (!decodeNumber(v, d)) throw ParamError(name, "expected a number, got " + describe(v));
     if (!std::isfinite(d)) throw ParamError(name, "must be finite, got " + show(d));
     return d;
   }
-  int integer(const std::string& name, int def) const {
+  int integer(const std::string& name, int def) {
     XmlRpcValue v;
-    if (!pnh_.getParam(name, v)) return def;
-    if (v.getType() != XmlRpcValue::TypeInt) throw ParamError(name, "expected an integer, got " + describe(v));
-    return static_cast<int>(v);
+    if (!get(name, v)) return def;
+    int i;
+    if (v.getType() == XmlRpcValue::TypeInt) i = static_cast<int>(v);
+    else if (!decodeString(v, i)) throw ParamError(name, "expected an integer, got " + describe(v));
+    return i;
   }
-  bool boolean(const std::string& name, bool def) const {
+  bool boolean(const std::string& name, bool def) {
     XmlRpcValue v;
-    if (!pnh_.getParam(name, v)) return def;
-    if (v.getType() != XmlRpcValue::TypeBoolean) throw ParamError(name, "expected true or false, got " + describe(v));
-    return static_cast<bool>(v);
+    if (!get(name, v)) return def;
+    bool b;
+    if (v.getType() == XmlRpcValue::TypeBoolean) b = static_cast<bool>(v);
+    else if (!decodeString(v, b)) throw ParamError(name, "expected true or false, got " + describe(v));
+    return b;
   }
-  std::string text(const std::string& name, const std::string& def) const {
+  std::string text(const std::string& name, const std::string& def) {
     XmlRpcValue v;
-    if (!pnh_.getParam(name, v)) return def;
+    if (!get(name, v)) return def;
     if (v.getType() != XmlRpcValue::TypeString) throw ParamError(name, "expected a string, got " + describe(v));
     return static_cast<std::string>(v);
   }
-  Eigen::Vector3d vec3(const std::string& name, const Eigen::Vector3d& def) const {
+  Eigen::Vector3d vec3(const std::string& name, const Eigen::Vector3d& def) {
     XmlRpcValue v;
-    if (!pnh_.getParam(name, v)) return def;
+    if (!get(name, v)) return def;
     if (v.getType() != XmlRpcValue::TypeArray || v.size() != 3)
       throw ParamError(name, "expected [x, y, z], got " + describe(v));
     Eigen::Vector3d out;
     for (int i = 0; i < 3; ++i) {
-      XmlRpcValue& e = v[i];
-      if (e.getType() == XmlRpcValue::TypeDouble) out[i] = static_cast<double>(e);
-      else if (e.getType() == XmlRpcValue::TypeInt) out[i] = static_cast<int>(e);
-      else throw ParamError(name + "[" + std::to_string(i) + "]", "expected a number, got " + describe(e));
-      if (!std::isfinite(out[i])) throw ParamError(name + "[" + std::to_string(i) + "]", "must be finite");
+      const std::string element = name + "[" + std::to_string(i) + "]";
+      if (!decodeNumber(v[i], out[i])) throw ParamError(element, "expected a number, got " + describe(v[i]));
+      if (!std::isfinite(out[i])) throw ParamError(element, "must be finite");
     }
     return out;
   }
+  // Names read from elsewhere (~scene: loadScene).
+  void accept(const std::string& name) { known_.push_back(name); }
+
+  // Every parameter in the private namespace must be one that was read: a misspelt one would be
+  // ignored silently. Throws ParamError naming it, with the closest accepted name or the list.
+  void checkUnknown() const {
+    XmlRpcValue tree;
+    if (!pnh_.getParam(pnh_.getNamespace(), tree) || tree.getType() != XmlRpcValue::TypeStruct) return;
+    checkGroup(tree, "");
+  }
 
  private:
+  bool get(const std::string& name, XmlRpcValue& v) {
+    known_.push_back(name);
+    return pnh_.getParam(name, v);
+  }
+  // The accepted names directly under `group` ("" or "rates/"): leaves, and sub-groups as "motion/".
+  std::vector<std::string> acceptedIn(const std::string& group) const {
+    std::vector<std::string> out;
+    for (const std::string& k : known_) {
+      if (k.compare(0, group.size(), group) != 0) continue;
+      std::string rest = k.substr(group.size());
+      const auto slash = rest.find('/');
+      if (slash != std::string::npos) rest = rest.substr(0, slash + 1);
+      if (std::find(out.begin(), out.end(), rest) == out.end()) out.push_back(rest);
+    }
+    return out;
+  }
+  void checkGroup(XmlRpcValue& tree, const std::string& group) const {
+    const std::vector<std::string> accepted = acceptedIn(group);
+    for (auto it = tree.begin(); it != tree.end(); ++it) {
+      const std::string& key = it->first;
+      if (std::find(accepted.begin(), accepted.end(), key) != accepted.end()) continue;  // a leaf
+      if (std::find(accepted.begin(), accepted.end(), key + "/") != accepted.end() &&
+          it->second.getType() == XmlRpcValue::TypeStruct) {
+        checkGroup(it->second, group + key + "/");
+        continue;
+      }
+      std::string message = riser_sim::unknownKeyMessage(key, accepted);
+      message.replace(0, std::string("unknown key").size(), "unknown parameter");
+      if (message.find("did you mean") != std::string::npos) {
+        std::string list;
+        for (const std::string& a : accepted) list += (list.empty() ? "" : ", ") + a;
+        message += "; accepted" + (group.empty() ? std::string() : " under ~" + group) + ": " + list;
+      }
+      throw ParamError(group + key, message);
+    }
+  }
+
   const ros::NodeHandle& pnh_;
+  std::vector<std::string> known_;
 };
 
 void positive(const std::string& name, double v) {
@@ -97,7 +167,7 @@ std::string stripSlash(std::string s) {
 }  // namespace
 
 NodeParams loadNodeParams(const ros::NodeHandle& pnh, const std::string& node_name) {
-  const Reader r(pnh);
+  Reader r(pnh);
   NodeParams p;
   p.vessel_input = r.text("vessel_input", p.vessel_input);
   if (p.vessel_input != "pose" && p.vessel_input != "odom" && p.vessel_input != "tf")
@@ -129,27 +199,23 @@ NodeParams loadNodeParams(const ros::NodeHandle& pnh, const std::string& node_na
   positive("tf_poll_rate", p.tf_poll_rate);
 
   const char* off = " (0 = off)";
-  p.rates.tension = r.number("rates/tension", p.rates.tension);
-  nonNegative("rates/tension", p.rates.tension, off);
-  p.rates.state = r.number("rates/state", p.rates.state);
-  nonNegative("rates/state", p.rates.state, off);
-  p.rates.markers = r.number("rates/markers", p.rates.markers);
-  nonNegative("rates/markers", p.rates.markers, off);
-  p.rates.tf = r.number("rates/tf", p.rates.tf);
-  nonNegative("rates/tf", p.rates.tf, off);
-  p.rates.wrench = r.number("rates/wrench", p.rates.tension > 0.0 ? p.rates.tension : p.rates.wrench);
-  nonNegative("rates/wrench", p.rates.wrench, off);
-  p.rates.diagnostics = r.number("rates/diagnostics", p.rates.diagnostics);
-  nonNegative("rates/diagnostics", p.rates.diagnostics, off);
+  std::vector<std::string> rate_names;
+  for (const TopicRate& t : dataTopicRates()) {
+    const double def = t.default_as && p.rates.at(t.default_as) > 0.0 ? p.rates.at(t.default_as) : t.hz;
+    rate_names.push_back(t.name);
+    p.rates[t.name] = r.number("rates/" + rate_names.back(), def);
+    nonNegative("rates/" + rate_names.back(), p.rates[t.name], off);
+  }
+  rate_names.push_back("diagnostics");
+  p.rates["diagnostics"] = r.number("rates/diagnostics", 1.0);
+  nonNegative("rates/diagnostics", p.rates["diagnostics"], off);
 
   p.loop_rate = r.number("loop_rate", p.loop_rate);
   positive("loop_rate", p.loop_rate);
-  for (auto [name, rate] : {std::pair<const char*, double>{"rates/tension", p.rates.tension},
-                            {"rates/state", p.rates.state}, {"rates/markers", p.rates.markers},
-                            {"rates/tf", p.rates.tf}, {"rates/wrench", p.rates.wrench},
-                            {"rates/diagnostics", p.rates.diagnostics}})
-    if (rate > p.loop_rate)
-      throw ParamError(name, "must not exceed ~loop_rate (" + show(p.loop_rate) + " Hz), got " + show(rate));
+  for (const std::string& name : rate_names)
+    if (p.rates[name] > p.loop_rate)
+      throw ParamError("rates/" + name, "must not exceed ~loop_rate (" + show(p.loop_rate) + " Hz), got " +
+                                            show(p.rates[name]));
   p.max_steps_per_cycle = r.integer("max_steps_per_cycle", p.max_steps_per_cycle);
   if (p.max_steps_per_cycle < 1)
     throw ParamError("max_steps_per_cycle", "must be >= 1, got " + std::to_string(p.max_steps_per_cycle));
@@ -179,6 +245,8 @@ NodeParams loadNodeParams(const ros::NodeHandle& pnh, const std::string& node_na
     const auto colon = err.find(':');
     throw ParamError("motion/" + err.substr(0, colon), err.substr(colon + 2));
   }
+  r.accept("scene");  // read by loadScene
+  r.checkUnknown();
   return p;
 }
 

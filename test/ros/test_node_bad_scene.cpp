@@ -16,8 +16,8 @@ struct Run {
 };
 
 Run runNode(const std::string& name) {
-  // `timeout` guards against a node that would not exit (then code 124).
-  const std::string cmd = std::string("timeout 30 ") + RISER_SIM_NODE_BIN + " __name:=" + name + " 2>&1";
+  // `timeout` guards against a node that would not exit (then code 124; a valid node exits within a second).
+  const std::string cmd = std::string("timeout 10 ") + RISER_SIM_NODE_BIN + " __name:=" + name + " 2>&1";
   Run r;
   FILE* p = popen(cmd.c_str(), "r");
   if (!p) return r;
@@ -49,6 +49,24 @@ TEST(NodeBadScene, NodeParameterErrorsNameTheParameter) {
   expectFatal("bad_input", "~vessel_input: unknown value 'gps' (accepted: pose, odom, tf)");
   expectFatal("bad_offset", "~hangoff_offset: expected [x, y, z]");
   expectFatal("bad_motion", "~motion/stop_time: must be > 0");
+}
+
+// A misspelt private parameter is fatal like a misspelt scene key (it would be ignored silently).
+TEST(NodeBadScene, UnknownParametersAreFatal) {
+  expectFatal("misspelt_rate", "~rates/tensoin: unknown parameter (did you mean 'tension'?); accepted under "
+                               "~rates/: tension, state, wrench, tf, markers, diagnostics");
+  expectFatal("misspelt_loop_rate", "~loop_rat: unknown parameter (did you mean 'loop_rate'?)");
+}
+
+// Numbers in the forms the scene loader accepts (YAML 1.2: 1e8), also when rosparam (YAML 1.1) hands
+// them over as strings; what is not a number still fails naming the parameter.
+TEST(NodeBadScene, NumbersAsInSceneFiles) {
+  const auto r = runNode("yaml11_floats");
+  EXPECT_EQ(r.code, 2) << r.output;
+  EXPECT_NE(r.output.find("~max_pose_age: must be > 0, got -1"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("max_position"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("hangoff_offset"), std::string::npos) << r.output;
+  expectFatal("not_a_number", "~max_position: expected a number, got '1e8x'");
 }
 
 }  // namespace

@@ -138,6 +138,13 @@ TEST(NodeClock, StalledClockPausesBackwardsClockResets) {
   std::printf("[clock] paused: node CPU %.1f %% of a core\n", 100.0 * cpu_share);
   EXPECT_EQ(tension.count(), tension_at_pause) << "data published while the clock stood still";
   EXPECT_EQ(diagValue(diag.last(), "riser_sim", "sim time [s]"), sim_at_pause) << "stepped while paused";
+  // While paused the message says so, and claims no real-time factor (there is none without ROS time).
+  for (const auto& a : diag.all())
+    if (const auto* s = status(a))
+      if (s->message.find("paused: ROS time has not advanced") != std::string::npos) {
+        EXPECT_EQ(s->message.find("real time"), std::string::npos) << s->message;
+        EXPECT_NE(s->message.find("simulation held at t = " + sim_at_pause + " s"), std::string::npos) << s->message;
+      }
   // An idle loop (500 wake-ups/s doing nothing) is a few per cent of a core; a busy spin is ~100 %.
   EXPECT_LT(cpu_share, 0.25);
 

@@ -8,6 +8,7 @@
 #include "riser_sim/scene_yaml.h"
 #include "riser_sim_ros/line_markers.h"
 #include "riser_sim_ros/line_messages.h"
+#include "riser_sim_ros/tf_listener.h"
 #include "riser_sim_ros/timing_stats.h"
 #include "riser_sim_ros/vessel_input.h"
 #include "riser_sim_ros/xmlrpc_yaml.h"
@@ -102,6 +103,32 @@ TEST(CheckPose, AcceptsValidAndNamesEachProblem) {
   EXPECT_NE(checkPose(header("world"), q, "world", pose, 1e7).find("beyond ~max_position"), std::string::npos);
   q.position.z = -9.9e6;  // a UTM northing is fine
   EXPECT_EQ(checkPose(header("world"), q, "world", pose, 1e7), "");
+}
+
+// What tf2's BufferCore::setTransform refuses (and logs per message) must be refused before it.
+TEST(CheckTransform, RefusesWhatTf2WouldRefuse) {
+  geometry_msgs::TransformStamped t;
+  t.header.frame_id = "/world";
+  t.child_frame_id = "vessel";
+  t.transform.rotation.w = 1.0;
+  EXPECT_EQ(checkTransform(t), "");
+  t.transform.rotation.w = 1.0 + 4e-6;  // |q|^2 - 1 = 8e-6: under tf2's 1e-5
+  EXPECT_EQ(checkTransform(t), "");
+  t.transform.rotation.w = 1.0 + 6e-6;  // 1.2e-5: tf2 refuses it
+  EXPECT_NE(checkTransform(t).find("not a unit quaternion"), std::string::npos);
+  t.transform.rotation.w = 0.0;
+  EXPECT_NE(checkTransform(t).find("zero quaternion"), std::string::npos);
+  t.transform.rotation.w = 1.0;
+  t.transform.translation.y = NAN;
+  EXPECT_NE(checkTransform(t).find("translation is not finite"), std::string::npos);
+  t.transform.translation.y = 0.0;
+  t.transform.rotation.z = INFINITY;
+  EXPECT_NE(checkTransform(t).find("rotation is not finite"), std::string::npos);
+  t.transform.rotation.z = 0.0;
+  t.child_frame_id = "world";
+  EXPECT_NE(checkTransform(t).find("both 'world'"), std::string::npos);
+  t.child_frame_id = "";
+  EXPECT_NE(checkTransform(t).find("child_frame_id is empty"), std::string::npos);
 }
 
 TEST(CheckStamp, AgeLeadAndOrder) {

@@ -1,0 +1,170 @@
+#include "riser_sim_ros/node_diagnostics.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace riser_sim_ros {
+
+std::string num(double v, const char* format) {
+  if (!std::isfinite(v)) return "n/a";
+  char buf[48];
+  std::snprintf(buf, sizeof(buf), format, v);
+  return buf;
+}
+
+namespace {
+const char* modeName(RunMode m) {
+  static const char* names[] = {"waiting for vessel pose", "running", "diverged", "statics failed"};
+  return names[static_cast<int>(m)];
+}
+}  // namespace
+
+NodeDiagnostics::NodeDiagnostics(ros::NodeHandle& nh, const std::string& name, const std::string& hardware_id,
+                                 double rate, double pose_timeout, const VesselInput& input,
+                                 const RosClockWatch& clock)
+    : pub_(nh.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 5)), name_(name),
+      pose_timeout_(pose_timeout), input_(input), clock_(clock) {
+  schedule_.period = periodOf(rate);
+  msg_.status.resize(1);
+  msg_.status[0].name = name.substr(name.find_first_not_of('/')) + ": riser simulation";
+  msg_.status[0].hardware_id = hardware_id;
+}
+
+bool NodeDiagnostics::dueWhileStalled(WallClock::time_point wall) {
+  if (!clock_.stalled() || schedule_.period <= 0.0) {
+    next_stalled_ = WallClock::time_point();
+    return false;
+  }
+  if (next_stalled_ != WallClock::time_point() && wall < next_stalled_) return false;
+  next_stalled_ = wall + std::chrono::duration_cast<WallClock::duration>(std::chrono::duration<double>(schedule_.period));
+  return true;
+}
+
+void NodeDiagnostics::restartWindow(const ros::Time& now, double sim_time) {
+  win_ros_ = now;
+  win_sim_ = sim_time;
+  win_compute_ = win_dropped_ = win_step_max_ = 0.0;
+  win_steps_ = 0;
+}
+
+void NodeDiagnostics::addSteps(long n, double seconds) {
+  win_compute_ += seconds;
+  win_steps_ += n;
+  win_step_max_ = std::max(win_step_max_, seconds / n);
+}
+
+void NodeDiagnostics::addDropped(double seconds) {
+  win_dropped_ += seconds;
+  total_dropped_ += seconds;
+}
+
+void NodeDiagnostics::addCycleWork(double seconds, bool period_end) {
+  work_acc_ += seconds;
+  if (!period_end) return;
+  period_work_.add(work_acc_);
+  work_acc_ = 0.0;
+}
+
+void NodeDiagnostics::clearTiming() {
+  period_work_.clear();
+  publish_work_.clear();
+  work_acc_ = 0.0;
+}
+
+void NodeDiagnostics::addValue(const char* key, const std::string& value) {
+  diagnostic_msgs::KeyValue k;
+  k.key = key;
+  k.value = value;
+  msg_.status[0].values.push_back(k);
+}
+
+std::string NodeDiagnostics::runningMessage(const ros::Time& now, const RunView& run, double pose_age) {
+  using diagnostic_msgs::DiagnosticStatus;
+  DiagnosticStatus& st = msg_.status[0];
+  riser_sim::Simulator& sim = *run.sim;
+  const double ros_span = (now - win_ros_).toSec();
+  const double sim_span = sim.time() - win_sim_;
+  const double rtf = ros_span > 0.0 ? sim_span / ros_span : NAN;
+  const double compute_rtf = win_compute_ > 0.0 ? sim_span / win_compute_ : NAN;
+  const double step_mean = win_steps_ > 0 ? win_compute_ / win_steps_ : NAN;
+  addValue("real-time factor", num(rtf, "%.3f"));
+  addValue("compute real-time factor", num(compute_rtf, "%.2f"));
+  addValue("step time mean [us]", num(step_mean * 1e6, "%.2f"));
+  addValue("step time max [us]", num(win_step_max_ * 1e6, "%.2f"));
+  addValue("steps in window", std::to_string(win_steps_));
+  addValue("work per publish period p99 [ms]", num(period_work_.percentile(0.99) * 1e3, "%.3f"));
+  addValue("publish period [ms]", num(publish_period_ * 1e3, "%.1f"));
+  addValue("publish time mean [ms]", num(publish_work_.mean() * 1e3, "%.3f"));
+  addValue("publish time p99 [ms]", num(publish_work_.percentile(0.99) * 1e3, "%.3f"));
+  addValue("time dropped in window [s]", num(win_dropped_, "%.3f"));
+  addValue("time dropped total [s]", num(total_dropped_, "%.3f"));
+  addValue("sim time [s]", num(sim.time(), "%.3f"));
+  addValue("dt [s]", num(sim.dt()));
+  addValue("constraint error [m]", num(sim.constraintError(), "%.3e"));
+  addValue("max constraint error [m]", num(sim.maxConstraintError(), "%.3e"));
+  addValue("energy [J]", num(sim.totalEnergy(), "%.6e"));
+  addValue("energy balance error (relative)", num(sim.energyDrift(), "%.3e"));
+  const riser_sim::PointMotion top = run.motion->at(sim.time());
+  addValue("hang-off x [m]", num(top.p.x(), "%.4f"));
+  addValue("hang-off z [m]", num(top.p.y(), "%.4f"));
+  std::string message = "running: real-time factor " + num(rtf, "%.2f") + " (compute " + num(compute_rtf, "%.1f") +
+                        "x real time)";
+  if (win_dropped_ > 0.0 || (std::isfinite(rtf) && rtf < 0.95)) {
+    st.level = DiagnosticStatus::WARN;
+    message = "falling behind real time: " + message + ", dropped " + num(win_dropped_, "%.3f") + " s";
+  } else if (std::isfinite(pose_age) && pose_age > pose_timeout_) {
+    st.level = DiagnosticStatus::WARN;
+    message = "no vessel pose for " + num(pose_age, "%.1f") + " s: holding the last one";
+  }
+  return message;
+}
+
+void NodeDiagnostics::publish(const ros::Time& now, const RunView& run) {
+  using diagnostic_msgs::DiagnosticStatus;
+  DiagnosticStatus& st = msg_.status[0];
+  msg_.header.stamp = now;
+  st.values.clear();
+  const bool stalled = clock_.stalled();
+  addValue("mode", stalled ? std::string("paused: ROS time stalled (") + modeName(run.mode) + ")"
+                           : std::string(modeName(run.mode)));
+  addValue("vessel input", input_.source());
+  addValue("poses accepted", std::to_string(input_.accepted()));
+  addValue("poses rejected", std::to_string(input_.rejected()));
+  const std::string last_rejection = input_.lastRejection();
+  if (!last_rejection.empty()) addValue("last rejection", last_rejection);
+  const double pose_age = run.last_pose.isZero() ? NAN : (now - run.last_pose).toSec();
+  addValue("last pose age [s]", num(pose_age, "%.3f"));
+
+  st.level = DiagnosticStatus::OK;
+  std::string message;
+  if (run.mode == RunMode::kRunning && run.sim) {
+    message = runningMessage(now, run, pose_age);
+    // Without ROS time advancing there is no real-time factor to claim.
+    if (stalled) message = "simulation held at t = " + num(run.sim->time(), "%.3f") + " s";
+  } else if (run.mode == RunMode::kWaiting) {
+    st.level = DiagnosticStatus::WARN;
+    message = "waiting for the first valid vessel pose (" + input_.source() + ")";
+    if (!clock_.lastJump().empty()) message = clock_.lastJump() + ": simulation reset; " + message;
+  } else {
+    st.level = DiagnosticStatus::ERROR;
+    message = (run.mode == RunMode::kDiverged ? "integration diverged: " : "") + run.reason +
+              "; publishing stopped, call " + name_ + "/reset";
+    addValue("reason", run.reason);
+  }
+  if (clock_.jumps() > 0) {
+    addValue("ROS time jumps back", std::to_string(clock_.jumps()));
+    addValue("last ROS time jump", clock_.lastJump());
+  }
+  if (stalled) {
+    const double still = clock_.stillFor(WallClock::now());
+    addValue("ROS time still for [s] (wall)", num(still, "%.1f"));
+    if (st.level < DiagnosticStatus::WARN) st.level = DiagnosticStatus::WARN;
+    message = "paused: ROS time has not advanced for " + num(still, "%.1f") + " s of wall time (" +
+              (now.isZero() ? "no /clock yet" : "/clock stalled") + "); " + message;
+  }
+  st.message = message;
+  pub_.publish(msg_);
+  if (run.sim) restartWindow(now, run.sim->time());
+}
+
+}  // namespace riser_sim_ros
