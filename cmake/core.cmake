@@ -25,6 +25,9 @@ add_library(riser_sim_core
   src/core/implicit_integrators.cpp
   src/core/simulator.cpp
   src/core/statics.cpp
+  src/core/statics_residual.cpp
+  src/core/statics_guess.cpp
+  src/core/statics_check.cpp
   src/core/modal.cpp
   src/core/scene.cpp
   src/core/scene_yaml.cpp
