@@ -10,13 +10,36 @@ namespace statics_detail {
 
 namespace {
 
-// Angles of the rfes along a polyline given by at(σ) (σ: unstretched arc length from the top).
+// Places the rfes (lengths l_i + Δ_i, Δ_i as set in kin) from the top along a curve at(σ) (σ:
+// unstretched arc length from the top): each joint at the curve's height for its arc length, towards
+// the curve's side. Heights matter most: a joint 1 cm into a stiff seabed carries a force far beyond
+// the line's weight.
 template <class At>
-void anglesAlong(const Model& model, At&& at, Kinematics& kin) {
+void placeAlong(const Model& model, const Vec2& top, At&& at, Kinematics& kin) {
+  Vec2 A = top;
   for (int i = 0; i < model.bodies(); ++i) {
     const Rfe& r = model.rfe(i);
-    const Vec2 d = at(r.s_begin + r.length) - at(r.s_begin);
-    kin[i].phi = std::atan2(d.y(), d.x());
+    const double len = r.length + kin[i].delta;
+    const Vec2 target = at(r.s_begin + r.length), chord = at(r.s_begin + r.length) - at(r.s_begin);
+    const double dy = target.y() - A.y();
+    const double side = (std::abs(target.x() - A.x()) > 1e-12 * len ? target.x() - A.x() : chord.x()) < 0.0 ? -1.0 : 1.0;
+    const double phi = std::abs(dy) < len ? std::atan2(dy, side * std::sqrt(len * len - dy * dy)) : (dy < 0.0 ? -M_PI / 2 : M_PI / 2);
+    BodyKinematics& b = kin[i];
+    b.A = A;
+    b.phi = phi;
+    b.c = std::cos(phi);
+    b.s = std::sin(phi);
+    b.len = len;
+    A = b.end();
+  }
+}
+
+// Δ_i of an elastic line under the tension T(σ) at the middle of each rfe (0 when inextensible).
+template <class Tension>
+void stretch(const Model& model, Tension&& T, Kinematics& kin) {
+  for (int i = 0; i < model.bodies(); ++i) {
+    const Rfe& r = model.rfe(i);
+    kin[i].delta = model.options().axial_flexibility ? T(r.s_begin + 0.5 * r.length) / r.axial_stiffness : 0.0;
   }
 }
 
@@ -75,16 +98,21 @@ bool displacedGuess(const Model& model, const StaticsProblem& p, const StaticTer
   }
   const double H = hi;
   extent(H, lay);
-  // Points from the end (σ = L) up to the top, then shifted so the top is at p.top.
+  // Points from the end (σ = L) up to the top, each step stretched by T/EA (the Δ_i set below), then
+  // shifted so the top is at p.top, or with a laid part, so that it lies on the sunk seabed.
+  const double flex = model.options().axial_flexibility ? 1.0 / model.line().EA : 0.0;
+  auto tension = [&](double s) {  // s from the end
+    return std::hypot(H, s < lay ? 0.0 : (lay > 0.0 ? w * (s - lay) : Ve + w * s));
+  };
   std::vector<Vec2> pts(m + 1);
   pts[0] = Vec2::Zero();
   for (int k = 0; k < m; ++k) {
     const double s = (k + 0.5) * L / m;
     const double V = s < lay ? 0.0 : (lay > 0.0 ? w * (s - lay) : Ve + w * s);
     const Vec2 dir = Vec2(H, V).normalized();
-    pts[k + 1] = pts[k] + L / m * Vec2(-dir.x() * (p.end_dx < 0 ? -1.0 : 1.0), dir.y());
+    pts[k + 1] = pts[k] + L / m * (1.0 + tension(s) * flex) * Vec2(-dir.x() * (p.end_dx < 0 ? -1.0 : 1.0), dir.y());
   }
-  const Vec2 shift = p.top - pts[m];
+  const Vec2 shift(p.top.x() - pts[m].x(), lay > 0.0 ? p.top.y() - h : p.top.y() - pts[m].y());
   auto at = [&](double sigma) {
     const double f = (L - sigma) / L * m;
     const int k = std::min(std::max(static_cast<int>(f), 0), m - 1);
@@ -92,7 +120,8 @@ bool displacedGuess(const Model& model, const StaticsProblem& p, const StaticTer
   };
   end_force = p.end_dx < 0 ? -H : H;
   kin = straightLine(model, p.top, 0.0);
-  anglesAlong(model, at, kin);
+  stretch(model, [&](double sigma) { return tension(L - sigma); }, kin);
+  placeAlong(model, p.top, at, kin);
   return true;
 }
 
@@ -137,7 +166,7 @@ bool betweenPointsGuess(const Model& model, const StaticsProblem& p, const Stati
   }
   if (!((endOf(Fe, L) - aim).norm() < 1e-6 * L)) return false;
   kin = straightLine(model, p.top, 0.0);
-  anglesAlong(model, [&](double s) { return Vec2(p.top + endOf(Fe, s)); }, kin);
+  placeAlong(model, p.top, [&](double s) { return Vec2(p.top + endOf(Fe, s)); }, kin);
   end_force = Fe + Vec2(0.0, Wm);
   // Into the seabed: lay the rest on it if the anchor is on it (within a segment).
   const double level = terms.seabedLevel();
@@ -175,16 +204,23 @@ bool hangingOnSeabedGuess(const Model& model, const StaticsProblem& p, const Sta
   const double y_bed = level - segmentSink(model, terms, w);
   Vec2 A = p.top;
   for (int i = 0; i < model.bodies(); ++i) {
-    const double l = model.rfe(i).length, above = A.y() - y_bed;
+    const Rfe& r = model.rfe(i);
+    double above = A.y() - y_bed;
+    // Stretch under the weight hanging below the rfe's middle (the laid part and the end mass rest on the seabed).
+    const double T = w * std::max(above - 0.5 * r.length, 0.0);
+    BodyKinematics& b = kin[i];
+    b.delta = model.options().axial_flexibility ? T / r.axial_stiffness : 0.0;
+    const double l = r.length + b.delta;
     double phi;
-    if (above >= l) phi = -M_PI / 2;                                    // hanging
+    if (above >= l) phi = -M_PI / 2;                                                          // hanging
     else if (above > 0.0) phi = std::atan2(-above, side * std::sqrt(l * l - above * above));  // touching down
-    else phi = side > 0.0 ? 0.0 : M_PI;                                 // laid
-    kin[i].phi = phi;
-    kin[i].c = std::cos(phi);
-    kin[i].s = std::sin(phi);
-    kin[i].A = A;
-    A = kin[i].end();
+    else phi = side > 0.0 ? 0.0 : M_PI;                                                       // laid
+    b.phi = phi;
+    b.c = std::cos(phi);
+    b.s = std::sin(phi);
+    b.len = l;
+    b.A = A;
+    A = b.end();
   }
   return true;
 }

@@ -127,5 +127,21 @@ void StaticResidual::jacobian(const VecX& x, const VecX& r, MatX& J) {
   }
 }
 
+void StaticResidual::centralJacobian(const VecX& x, MatX& J) {
+  const int n = size(), nt = coordinates();
+  J.resize(n, n);
+  VecX x1 = x, rp(n), rm(n);
+  for (int j = 0; j < n; ++j) {
+    double h = 1e-6 * std::max(std::abs(x[j]), weight_);  // end force
+    if (j < nt) h = axial_ && j % 2 == 0 ? 1e-8 * model_.rfe(j / per_).length : 1e-6;
+    x1[j] = x[j] + h;
+    (*this)(x1, rp);
+    x1[j] = x[j] - h;
+    (*this)(x1, rm);
+    J.col(j) = (rp - rm) / (2.0 * h);
+    x1[j] = x[j];
+  }
+}
+
 }  // namespace statics_detail
 }  // namespace riser_sim

@@ -48,8 +48,11 @@ class StaticResidual {
   // Force carried through each joint A_0..A_n (the sum of the loads beyond it) at the last evaluation [N].
   const AlignedVector<Vec2>& jointForces() const { return joint_; }
   const Kinematics& kinematics() const { return kin_; }
-  // Forward-difference Jacobian at x (r = residual at x).
+  // Forward-difference Jacobian at x (r = residual at x), for Newton.
   void jacobian(const VecX& x, const VecX& r, MatX& J);
+  // Central-difference Jacobian at x (steps 1e-6 rad, 1e-8 of the rfe length, 1e-6 of the end force
+  // or weight): round-off and truncation ~1e-9 of the entries, for the stability check.
+  void centralJacobian(const VecX& x, MatX& J);
 
  private:
   const Model& model_;
