@@ -40,9 +40,10 @@ std::string stabilityCheck(const Model& model, StaticResidual& F, const VecX& x)
     const MatX R = qr.matrixQR().topRows(m).triangularView<Eigen::Upper>();
     const double big = Ct.norm();
     for (int k = 0; k < m; ++k)
-      if (!(std::abs(R(k, k)) > 1e-9 * big))
+      if (!(std::abs(R(k, k)) > 1e-7 * big))  // central differences: ~1e-9 relative noise
         return "the end conditions are degenerate (their Jacobian has rank < " + std::to_string(m) +
-               "): e.g. an inextensible line held at exactly its length";
+               ", the end force is not determined): e.g. an inextensible line held at exactly its length, or "
+               "folded at a joint straight below both its ends; move bottom.position or use axial flexibility";
     const MatX QtKQ = qr.householderQ().adjoint() * K * qr.householderQ();
     K = QtKQ.bottomRightCorner(nt - m, nt - m);
   }
