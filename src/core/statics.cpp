@@ -191,39 +191,6 @@ Attempt seabedRamp(const Model& model, const StaticsProblem& problem, StaticTerm
   return a;
 }
 
-// Seabed geometries without a resting state (empty if none applies). An anchor deeper in the seabed
-// than the whole line's weight could sink it is buried. A heavy line without bending stiffness that
-// reaches the seabed lies on it in a straight run from the touchdown: if it is longer than the way down
-// to the seabed and along it to the end (and up to an anchor), its end can only be held there by pushing
-// the laid part back, folding it (a real chain would pile up; these rods are then balanced in
-// compression). A pipe with bending stiffness can arch up instead: left to the solver and the checks.
-std::string seabedGeometry(const Model& model, const StaticsProblem& p, const StaticTerms& terms) {
-  using Kind = StaticsProblem::Kind;
-  const double level = terms.seabedLevel(), k = terms.seabedStiffness(), L = model.length();
-  if (!(k > 0.0) || p.kind == Kind::kHanging || !(statics_detail::netWeightPerLength(model, terms, p.top) > 0.0))
-    return "";
-  const double h = p.top.y() - level;
-  const bool chain = !(model.bendingStiffness() > 0.0);
-  std::ostringstream o;
-  if (p.kind == Kind::kEndDisplaced && chain && h > 0.0 && h + std::abs(p.end_dx) < L)
-    o << "initial.end_dx: " << p.end_dx << " m, but the line (line.length " << L << " m) is longer than the way "
-      << "down to seabed.level " << level << " m and along it to the end (" << h + std::abs(p.end_dx)
-      << " m): its end cannot be held there without folding the line on the seabed; use a larger |end_dx| or "
-         "initial.type hanging";
-  if (p.kind == Kind::kBetweenPoints) {
-    const double W = model.totalMass() * std::abs(model.gravity());
-    const double ha = p.end_point.y() - level;
-    if (ha < -2.0 * W / k)
-      o << "bottom.position: " << -ha << " m below seabed.level " << level << " m, deeper than the whole line's "
-        << "weight could sink it (" << 2.0 * W / k << " m with seabed.stiffness_normal " << k << " N/m): buried";
-    else if (chain && h > 0.0 && h + std::abs(p.end_point.x() - p.top.x()) + std::max(ha, 0.0) < L)
-      o << "bottom.position: the line (line.length " << L << " m) is longer than the way down to seabed.level "
-        << level << " m, along it and up to the anchor (" << h + std::abs(p.end_point.x() - p.top.x()) + std::max(ha, 0.0)
-        << " m): it would have to fold on the seabed; move the anchor farther from the top";
-  }
-  return o.str();
-}
-
 }  // namespace
 
 StaticsResult solveStatics(const Model& model, const StaticsProblem& problem, double t) {
@@ -244,7 +211,7 @@ StaticsResult solveStatics(const Model& model, const StaticsProblem& problem, do
     return res;
   }
   StaticTerms terms(model, t);
-  res.message = seabedGeometry(model, problem, terms);
+  res.message = statics_detail::seabedGeometry(model, problem, terms);
   if (!res.message.empty()) return res;
   StaticResidual F(model, problem, terms, t);
   // Attempts in turn until one converges and passes checkEquilibrium(). Without a seabed: Newton from

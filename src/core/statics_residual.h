@@ -78,6 +78,8 @@ bool hangingOnSeabedGuess(const Model& model, const StaticsProblem& p, const Sta
 // Net weight per unit length [N/m] of the line in the steady sea (gravity, buoyancy), from the terms.
 double netWeightPerLength(const Model& model, const StaticTerms& terms, const Vec2& top);
 
+// Seabed geometries without a resting state (statics_check.cpp): empty if none, else the reason.
+std::string seabedGeometry(const Model& model, const StaticsProblem& p, const StaticTerms& terms);
 // Stability of the equilibrium at x (statics_check.cpp): empty if stable, else the reason.
 std::string stabilityCheck(const Model& model, StaticResidual& F, const VecX& x);
 
