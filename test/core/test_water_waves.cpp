@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "riser_sim/scene_yaml.h"
 #include "riser_sim/water.h"
 
 namespace riser_sim {
@@ -114,6 +115,20 @@ TEST(WaterWaves, RampScalesTheAmplitude) {
     wf.at(p, t, vf, af);
     EXPECT_NEAR((v - vf).norm(), 0.0, 1e-15);
     EXPECT_NEAR((a - af).norm(), 0.0, 1e-15);
+  }
+}
+
+// The scene key: read, and refused when negative, named.
+TEST(WaterWaves, RampKey) {
+  const std::string scene =
+      "line: {length: 10, elements: 4, outer_diameter: 0.1, youngs_modulus: 2e11, density: 7850}\n"
+      "environment:\n  water: {}\n  waves: {height: 1, period: 6, ramp: ";
+  EXPECT_EQ(loadSceneText(scene + "12.5}\n", "ramp").water.waves.ramp, 12.5);
+  try {
+    loadSceneText(scene + "-1}\n", "ramp");
+    ADD_FAILURE() << "a negative ramp was accepted";
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("environment.waves.ramp"), std::string::npos) << e.what();
   }
 }
 
