@@ -27,6 +27,9 @@ add_library(riser_sim_core
   src/core/solver_setup.cpp
   src/core/stability_estimate.cpp
   src/core/statics.cpp
+  src/core/statics_residual.cpp
+  src/core/statics_guess.cpp
+  src/core/statics_check.cpp
   src/core/modal.cpp
   src/core/scene.cpp
   src/core/run_builder.cpp

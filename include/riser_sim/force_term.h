@@ -60,6 +60,9 @@ class ForceTerm {
   }
   // Seabed level y_b [m] for terms that model one (-inf otherwise); used by the statics' first guess.
   virtual double seabedLevel() const { return -INFINITY; }
+  // The term as the statics see it at time t [s] when that differs from the term itself: a steady sea
+  // (no waves, the current frozen at its velocity at t). Null: the term itself.
+  virtual std::unique_ptr<ForceTerm> steadyTerm(double /*t*/) const { return nullptr; }
 
   // --- History (optional) ---
   // The term's run data, preallocated for the model (null: the term has no history).

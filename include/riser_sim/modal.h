@@ -4,8 +4,9 @@
 //
 //   M_II θ'' + K θ = 0,   K = -∂Q_θ/∂θ,   Q_θ = J^T Q_abs,   M_II = J^T M J.
 //
-// - K: central finite differences of the generalised forces of every force term of the model
-//   (springs, gravity, buoyancy, seabed, current drag at rest, internal-flow centrifugal part), so
+// - K: central finite differences of the generalised forces of every force term of the model in a
+//   steady sea, as the statics see it (springs, gravity, buoyancy, seabed, current drag at rest,
+//   internal-flow centrifugal part; no waves, the current at its velocity at ModalOptions::time), so
 //   geometric stiffness (tension, weight) comes in through J(θ). The seabed's tangential anchors are
 //   placed at the static contact points (sticking contact). K is symmetrised; the dropped
 //   antisymmetric part (follower loads such as current drag) is reported as `asymmetry`.

@@ -1,5 +1,5 @@
 // Static equilibrium for initial states: Newton on the independent coordinates (Δ_i, φ_i) with
-// A_0 held, the end loads solved for alongside.
+// A_0 held, the end loads solved for alongside; every solution is checked (checkEquilibrium).
 #pragma once
 #include <string>
 
@@ -31,7 +31,34 @@ struct StaticsResult {
   std::string message;
 };
 
+// Solves in a steady sea at time t (no waves, the current at its velocity at t; ForceTerm::steadyTerm)
+// and returns converged only if checkEquilibrium() passes; otherwise the message names the check.
 StaticsResult solveStatics(const Model& model, const StaticsProblem& problem, double t = 0.0);
+
+// What solveStatics() verifies before it reports success (docs/statics.md), each check named in
+// the message when it fails:
+// - finite: every coordinate and the end force are finite;
+// - residual: the equilibrium residual with every term of the statics (steady sea, seabed, end
+//   force) and the end conditions, relative to the line's weight, is <= problem.tolerance;
+// - seabed: no contact point carries more than kSeabedLoadFactor x the load (it would sink deeper
+//   than the whole line's load on one spring);
+// - tension: the force through every joint is <= kTensionLoadFactor x the load;
+// - stability: the stiffness about the equilibrium (reduced to the end conditions) is positive
+//   definite: a resting state, not a balanced unstable one (a column on the seabed, a folded line).
+// The load: the sum over the rfes of the magnitude of every force on it but the seabed's (weight
+// in water, current drag), plus the end force.
+struct EquilibriumCheck {
+  bool ok = false;
+  std::string message;          // "<check>: ..." when a check fails, empty when ok
+  double residual = 0.0;        // as StaticsResult::residual
+  double load = 0.0;            // [N]
+  double max_joint_force = 0.0; // [N]
+  double max_seabed_force = 0.0;  // largest contact force [N]
+};
+constexpr double kSeabedLoadFactor = 2.0;
+constexpr double kTensionLoadFactor = 3.0;
+EquilibriumCheck checkEquilibrium(const Model& model, const StaticsProblem& problem, const Kinematics& kin,
+                                  const Vec2& end_force, double t = 0.0);
 
 // Straight line from A_0 at angle phi [rad], unstretched, at rest.
 Kinematics straightLine(const Model& model, const Vec2& top, double phi);

@@ -23,6 +23,7 @@ struct WaveSpec {
   double phase = 0.0;      // [rad]
   double direction = 1.0;  // +1 travels towards +x, -1 towards -x
   double depth = 1000.0;   // water depth for the dispersion relation [m]
+  double ramp = 0.0;       // amplitude ramped from 0 at t = 0 to full at t = ramp, ½(1 - cos πt/ramp) [s]; 0 = none
 };
 
 struct WaterSpec {
@@ -41,8 +42,14 @@ class WaterKinematics {
   // Water particle velocity and acceleration at point p [m] and time t [s] (zero above the surface).
   void at(const Vec2& p, double t, Vec2& velocity, Vec2& acceleration) const;
   double waveNumber() const { return k_; }  // from ω² = g k tanh(k h)
+  // The steady part at time t: no waves, the current frozen at its velocity at t (what the statics see).
+  WaterKinematics steady(double t) const;
+  // Wave amplitude factor at t (0 before, 1 after the ramp) and its rate [1/s] in *rate.
+  double rampFactor(double t, double* rate = nullptr) const;
 
  private:
+  // cosh(k(z+h))/sinh(kh) and sinh(k(z+h))/sinh(kh) at z below the surface, finite for any k h.
+  void depthRatios(double z, double& c, double& s) const;
   WaterSpec spec_;
   double omega_ = 0.0, k_ = 0.0;
   bool moving_ = false;

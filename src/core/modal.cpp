@@ -10,6 +10,7 @@
 #include "riser_sim/independent_formulation.h"
 #include "riser_sim/run_builder.h"
 #include "riser_sim/scene.h"
+#include "statics_residual.h"
 
 namespace riser_sim {
 
@@ -18,7 +19,8 @@ namespace {
 // θ ↔ kinematics of the chain hanging from A_0 (zero velocities), k = 2 (Δ, φ) or 1 (φ) per rfe.
 class Chain {
  public:
-  Chain(const Model& m, const TermDataSet& data, const Vec2& top, double t) : model_(m), data_(data), top_(top), t_(t) {
+  Chain(const Model& m, const statics_detail::StaticTerms& terms, const TermDataSet& data, const Vec2& top, double t)
+      : model_(m), terms_(terms), data_(data), top_(top), t_(t) {
     k_ = m.options().axial_flexibility ? 2 : 1;
     kin_.resize(m.bodies());
     Q_.setZero(m.dofs());
@@ -52,7 +54,7 @@ class Chain {
   const VecX& absoluteForces(const VecX& theta, const Vec2& end_force) {
     kinematics(theta);
     Q_.setZero();
-    addTermForces(model_, &data_, kin_, t_, Q_);
+    for (size_t k = 0; k < terms_.terms().size(); ++k) terms_.terms()[k]->addForces(model_, data_.at(k), kin_, t_, Q_);
     const int n = model_.bodies() - 1;
     Q_.segment<4>(4 * n) += pointForce(kin_[n], model_.rfe(n).length, 1.0, end_force);
     return Q_;
@@ -72,6 +74,7 @@ class Chain {
 
  private:
   const Model& model_;
+  const statics_detail::StaticTerms& terms_;  // in a steady sea, as the statics
   const TermDataSet& data_;
   Vec2 top_;
   double t_;
@@ -131,7 +134,8 @@ ModalResult computeModes(const Model& model, const Kinematics& equilibrium, cons
   data.startRun(model, equilibrium);
 
   const Vec2 top = equilibrium[0].A;
-  Chain chain(model, data, top, options.time);
+  const statics_detail::StaticTerms steady(model, options.time);  // no waves: modes about the still-water state
+  Chain chain(model, steady, data, top, options.time);
   const int nt = chain.size(), k = chain.k();
   VecX theta0;
   chain.pack(equilibrium, theta0);
@@ -150,9 +154,9 @@ ModalResult computeModes(const Model& model, const Kinematics& equilibrium, cons
   // Equilibrium check: residual generalised forces (forces / F, moments / (F L)) with F the largest
   // force any term applies.
   double F = std::max(model.totalMass() * std::abs(model.gravity()), end_force.norm());
-  for (size_t k = 0; k < model.terms().size(); ++k) {
+  for (size_t k = 0; k < steady.terms().size(); ++k) {
     VecX Qa = VecX::Zero(model.dofs());
-    model.terms()[k]->addForces(model, data.at(k), kin0, options.time, Qa);
+    steady.terms()[k]->addForces(model, data.at(k), kin0, options.time, Qa);
     for (int i = 0; i < nb; ++i) F = std::max(F, Qa.segment<3>(4 * i).lpNorm<Eigen::Infinity>());
   }
   Vec2 load = end_force;

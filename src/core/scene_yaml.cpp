@@ -339,7 +339,7 @@ void parseCurrent(const Section& env, Scene& s) {
 }
 
 void parseWaves(const Section& env, Scene& s) {
-  const Section w = env.section("waves", {"height", "period", "phase", "direction", "depth"});
+  const Section w = env.section("waves", {"height", "period", "phase", "direction", "depth", "ramp"});
   WaveSpec& wave = s.water.waves;
   wave = WaveSpec();
   wave.height = w.number("height", 0.0);
@@ -351,6 +351,8 @@ void parseWaves(const Section& env, Scene& s) {
   if (wave.direction != 1.0 && wave.direction != -1.0) throw SceneError(w.key("direction"), "must be 1 or -1");
   wave.depth = w.number("depth", 1000.0);
   requirePositive(w.key("depth"), wave.depth);
+  wave.ramp = w.number("ramp", 0.0);
+  requireNonNegative(w.key("ramp"), wave.ramp);
 }
 
 void parseEnvironment(const Section& root, Scene& s) {

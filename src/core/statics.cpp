@@ -4,102 +4,31 @@
 #include <cmath>
 #include <sstream>
 
-#include "riser_sim/force_term.h"
+#include "statics_residual.h"
 
 namespace riser_sim {
 
+using statics_detail::StaticResidual;
+using statics_detail::StaticTerms;
+
 namespace {
-
-// Unknowns: per rfe (Δ_i if axial) and φ_i, then the end-force unknowns of the problem.
-class StaticResidual {
- public:
-  StaticResidual(const Model& m, const StaticsProblem& p, double t) : model_(m), prob_(p), t_(t) {
-    axial_ = m.options().axial_flexibility;
-    per_ = axial_ ? 2 : 1;
-    extra_ = p.kind == StaticsProblem::Kind::kHanging ? 0 : (p.kind == StaticsProblem::Kind::kEndDisplaced ? 1 : 2);
-    kin_.resize(m.bodies());
-    Q_.setZero(m.dofs());
-    weight_ = std::max(m.totalMass() * std::abs(m.gravity()), 1e-9);
-  }
-  int size() const { return per_ * model_.bodies() + extra_; }
-
-  void toKinematics(const VecX& x, Kinematics& kin) const {
-    Vec2 A = prob_.top;
-    for (int i = 0; i < model_.bodies(); ++i) {
-      BodyKinematics& b = kin[i];
-      b.A = A;
-      b.A_dot.setZero();
-      b.delta = axial_ ? x[per_ * i] : 0.0;
-      b.phi = x[per_ * i + per_ - 1];
-      b.delta_dot = b.phi_dot = 0.0;
-      b.c = std::cos(b.phi);
-      b.s = std::sin(b.phi);
-      b.len = model_.rfe(i).length + b.delta;
-      A = b.end();
-    }
-  }
-  void fromKinematics(const Kinematics& kin, VecX& x) const {
-    for (int i = 0; i < model_.bodies(); ++i) {
-      if (axial_) x[per_ * i] = kin[i].delta;
-      x[per_ * i + per_ - 1] = kin[i].phi;
-    }
-  }
-  Vec2 endForce(const VecX& x) const {
-    const int o = per_ * model_.bodies();
-    if (extra_ == 1) return Vec2(x[o], 0.0);
-    if (extra_ == 2) return Vec2(x[o], x[o + 1]);
-    return Vec2::Zero();
-  }
-
-  // Scaled residual: generalised forces in independent coordinates / weight (moments / weight·L),
-  // geometric end conditions / L.
-  void operator()(const VecX& x, VecX& r) {
-    toKinematics(x, kin_);
-    Q_.setZero();
-    addTermForces(model_, nullptr, kin_, t_, Q_);  // no history: the seabed's tangential springs are free
-    const int nb = model_.bodies();
-    Q_.segment<4>(4 * (nb - 1)) += pointForce(kin_[nb - 1], model_.rfe(nb - 1).length, 1.0, endForce(x));
-    Vec2 below = Vec2::Zero();  // net force on the rfes beyond rfe i
-    const double L = model_.length();
-    for (int i = nb - 1; i >= 0; --i) {
-      const BodyKinematics& b = kin_[i];
-      const Vec4 q = Q_.segment<4>(4 * i);
-      if (axial_) r[per_ * i] = (q[kDelta] + b.e().dot(below)) / weight_;
-      r[per_ * i + per_ - 1] = (q[kPhi] + b.len * b.nrm().dot(below)) / (weight_ * L);
-      below += q.head<2>();
-    }
-    const int o = per_ * nb;
-    const Vec2 end = kin_[nb - 1].end();
-    if (extra_ == 1) r[o] = (end.x() - prob_.top.x() - prob_.end_dx) / L;
-    if (extra_ == 2) r.segment<2>(o) = (end - prob_.end_point) / L;
-  }
-
-  const Model& model_;
-  const StaticsProblem& prob_;
-  double t_;
-  bool axial_;
-  int per_, extra_;
-  Kinematics kin_;
-  VecX Q_;
-  double weight_;
-};
 
 // Damped Newton with a forward-difference Jacobian; Levenberg-Marquardt step when Newton stalls.
 bool newton(StaticResidual& F, VecX& x, const StaticsProblem& p, int& iters, double& res) {
   const int n = F.size();
   VecX r(n), r1(n), x1(n);
-  MatX J(n, n);
+  MatX J;
   F(x, r);
   res = r.lpNorm<Eigen::Infinity>();
+  if (!std::isfinite(res)) return false;
+  // Stagnation: 50 iterations without lowering the best residual by 1 % (contacts switching back and
+  // forth); slow but steady progress (a line swept by a strong current) goes on.
+  double best = res;
+  int best_at = 0;
   for (iters = 0; iters < p.max_iterations && res > p.tolerance; ++iters) {
-    for (int j = 0; j < n; ++j) {
-      const double typical = j < F.per_ * F.model_.bodies() ? 1e-3 : F.weight_;
-      const double h = 1e-7 * std::max(std::abs(x[j]), typical);
-      x1 = x;
-      x1[j] += h;
-      F(x1, r1);
-      J.col(j) = (r1 - r) / h;
-    }
+    if (res < 0.99 * best) best = res, best_at = iters;
+    if (iters - best_at > 50) return false;
+    F.jacobian(x, r, J);
     VecX dx = J.partialPivLu().solve(-r);
     double alpha = 1.0, res1 = INFINITY;
     for (int k = 0; k < 12; ++k, alpha *= 0.5) {
@@ -129,74 +58,53 @@ bool newton(StaticResidual& F, VecX& x, const StaticsProblem& p, int& iters, dou
   return res <= p.tolerance;
 }
 
-// Shape of an inextensible catenary for the displaced-end problem, used as Newton's starting point:
-// horizontal force H at the end, vertical end load Ve, weight w per length; on a seabed the last part
-// lies flat. Returns false when no such shape fits.
-bool catenaryGuess(const Model& model, const StaticsProblem& p, Kinematics& kin, double& end_force) {
-  const double L = model.length(), X = std::abs(p.end_dx);
-  // Net weight per length from the terms themselves (a horizontal line just below the top, at rest).
-  Kinematics probe = straightLine(model, p.top - Vec2(0.0, 1e-6), 0.0);
-  VecX Q = VecX::Zero(model.dofs());
-  double level = -INFINITY;
-  for (const auto& term : model.terms())
-    if (!std::isfinite(term->seabedLevel())) term->addForces(model, nullptr, probe, 0.0, Q);
-  for (const auto& term : model.terms()) level = std::max(level, term->seabedLevel());
-  double W = 0.0;
-  for (int i = 0; i < model.bodies(); ++i) W -= Q[4 * i + kY];
-  const double Ve = model.endMass() * model.gravity();
-  const double w = (W - Ve) / L;
-  if (!(w > 0.0)) return false;
-  const double h = p.top.y() - level + 1e-3;  // height above the seabed (+1 mm into it, so it bears)
-  const int m = 4000;
-  // Horizontal extent of the shape for H; fills 'lay' (length on the seabed).
-  auto extent = [&](double H, double& lay) {
-    const double a = H / w;
-    lay = 0.0;
-    if (std::isfinite(h) && h > 0.0) {
-      const double ss = a * std::sqrt(std::pow(h / a + 1.0, 2) - 1.0);
-      if (ss < L) {
-        lay = L - ss;
-        return a * std::asinh(ss / a) + lay;
-      }
-    }
-    double x = 0.0;
-    for (int k = 0; k < m; ++k) {
-      const double s = (k + 0.5) * L / m;
-      x += L / m / std::sqrt(1.0 + std::pow((Ve + w * s) / H, 2));
-    }
-    return x;
-  };
-  double lo = 1e-6 * w * L, hi = 1e6 * w * L, lay = 0.0;
-  if (extent(lo, lay) > X || extent(hi, lay) < X) return false;
-  for (int it = 0; it < 200; ++it) {
-    const double mid = std::sqrt(lo * hi);
-    (extent(mid, lay) < X ? lo : hi) = mid;
+// Continuous angles: the bending springs see φ_i - φ_{i-1}.
+void unwrap(Kinematics& kin) {
+  for (size_t i = 1; i < kin.size(); ++i)
+    kin[i].phi -= 2.0 * M_PI * std::round((kin[i].phi - kin[i - 1].phi) / (2.0 * M_PI));
+}
+
+// Newton's starting point for the problem.
+void firstGuess(const Model& model, const StaticsProblem& problem, const StaticTerms& terms, StaticResidual& F,
+                VecX& x) {
+  using Kind = StaticsProblem::Kind;
+  const double L = model.length();
+  Kinematics guess;
+  Vec2 fe = Vec2::Zero();
+  if (problem.kind == Kind::kHanging) {
+    if (!statics_detail::hangingOnSeabedGuess(model, problem, terms, guess))
+      guess = straightLine(model, problem.top, -M_PI / 2);
+  } else if (problem.kind == Kind::kEndDisplaced) {
+    const double dx = problem.end_dx;
+    const double w = (model.endMass() + 0.5 * model.line().mass_per_length * L) * model.gravity();
+    fe.x() = w * dx / std::sqrt(L * L - dx * dx);
+    if (!statics_detail::displacedGuess(model, problem, terms, guess, fe.x()))
+      guess = straightLine(model, problem.top, std::atan2(-std::sqrt(L * L - dx * dx), dx));
+  } else if (!statics_detail::betweenPointsGuess(model, problem, terms, guess, fe)) {
+    // Taut (or stretched) chord: straight, the anchor pulling along it.
+    const Vec2 chord = problem.end_point - problem.top;
+    guess = straightLine(model, problem.top, std::atan2(chord.y(), chord.x()));
+    const double stretch = model.line().EA * std::max(chord.norm() / L - 1.0, 0.0);
+    fe = chord.normalized() * stretch + Vec2(0.0, (model.endMass() + 0.5 * model.line().mass_per_length * L) *
+                                                       model.gravity());
   }
-  const double H = hi;
-  extent(H, lay);
-  // Points from the end (σ = 0) up to the top, then shifted so the top is at p.top.
-  std::vector<Vec2> pts(m + 1);
-  pts[0] = Vec2::Zero();
-  for (int k = 0; k < m; ++k) {
-    const double s = (k + 0.5) * L / m;
-    const double V = s < lay ? 0.0 : (lay > 0.0 ? w * (s - lay) : Ve + w * s);
-    const Vec2 dir = Vec2(H, V).normalized();
-    pts[k + 1] = pts[k] + L / m * Vec2(-dir.x() * (p.end_dx < 0 ? -1.0 : 1.0), dir.y());
-  }
-  const Vec2 shift = p.top - pts[m];
-  auto at = [&](double sigma) {  // arc length from the top
-    const double f = (L - sigma) / L * m;
-    const int k = std::min(std::max(static_cast<int>(f), 0), m - 1);
-    return Vec2(pts[k] + (f - k) * (pts[k + 1] - pts[k]) + shift);
-  };
-  end_force = p.end_dx < 0 ? -H : H;
-  kin = straightLine(model, p.top, 0.0);
-  for (int i = 0; i < model.bodies(); ++i) {
-    const Rfe& r = model.rfe(i);
-    const Vec2 d = at(r.s_begin + r.length) - at(r.s_begin);
-    kin[i].phi = std::atan2(d.y(), d.x());
-  }
-  return true;
+  unwrap(guess);
+  F.fromKinematics(guess, x);
+  F.setEndForce(fe, x);
+}
+
+// The scene keys that set up the problem, for failure messages.
+std::string problemKeys(const Model& model, const StaticsProblem& p, const StaticTerms& terms) {
+  using Kind = StaticsProblem::Kind;
+  std::ostringstream o;
+  o << "top at (" << p.top.x() << ", " << p.top.y() << "), line.length " << model.length() << " m";
+  if (p.kind == Kind::kBetweenPoints)
+    o << ", bottom.position (" << p.end_point.x() << ", " << p.end_point.y() << "), "
+      << (p.end_point - p.top).norm() << " m from the top";
+  if (p.kind == Kind::kEndDisplaced) o << ", initial.end_dx " << p.end_dx << " m";
+  if (std::isfinite(terms.seabedLevel()))
+    o << ", seabed.level " << terms.seabedLevel() << " m, seabed.stiffness_normal " << terms.seabedStiffness() << " N/m";
+  return o.str();
 }
 
 }  // namespace
@@ -216,90 +124,143 @@ Kinematics straightLine(const Model& model, const Vec2& top, double phi) {
   return kin;
 }
 
-StaticsResult solveStatics(const Model& model, const StaticsProblem& problem, double t) {
-  StaticResidual F(model, problem, t);
-  const int nb = model.bodies();
-  const double L = model.length();
-  VecX x = VecX::Zero(F.size());
-  Kinematics guess;
-  using Kind = StaticsProblem::Kind;
-  if (problem.kind == Kind::kHanging) {
-    guess = straightLine(model, problem.top, -M_PI / 2);
-  } else if (problem.kind == Kind::kEndDisplaced) {
-    const double dx = problem.end_dx;
-    if (std::abs(dx) >= L) {
-      StaticsResult res;
-      res.message = "initial.end_dx: |end_dx| must be < line.length for a displaced initial state";
-      return res;
-    }
-    const double w = (model.endMass() + 0.5 * model.line().mass_per_length * L) * model.gravity();
-    double fx = w * dx / std::sqrt(L * L - dx * dx);
-    if (!catenaryGuess(model, problem, guess, fx))
-      guess = straightLine(model, problem.top, std::atan2(-std::sqrt(L * L - dx * dx), dx));
-    x[F.per_ * nb] = fx;
-  } else {  // between points: straight chord, or a V of two straight halves when slack
-    const Vec2 chord = problem.end_point - problem.top;
-    const double c = chord.norm();
-    guess = straightLine(model, problem.top, std::atan2(chord.y(), chord.x()));
-    if (c < L) {
-      // Inextensible catenary through both points: solve end(F) = chord for the end force F.
-      const double w = model.line().mass_per_length * model.gravity(), Wm = model.endMass() * model.gravity();
-      auto endOf = [&](const Vec2& Fe, double s) {
-        const double H = std::max(std::abs(Fe.x()), 1e-9 * w * L);
-        const double V0 = Wm - Fe.y() + w * L, Vs = Wm - Fe.y() + w * (L - s);
-        return Vec2(Fe.x() / w * (std::asinh(V0 / H) - std::asinh(Vs / H)),
-                    -(std::hypot(H, V0) - std::hypot(H, Vs)) / w);
-      };
-      Vec2 Fe(w * L * chord.x() / L, 0.5 * w * L);
-      for (int it = 0; it < 100; ++it) {
-        const Vec2 r = endOf(Fe, L) - chord;
-        if (r.norm() < 1e-12 * L) break;
-        Mat2 J;
-        for (int j = 0; j < 2; ++j) {
-          Vec2 F1 = Fe;
-          const double h = 1e-7 * std::max(std::abs(Fe[j]), w * L);
-          F1[j] += h;
-          J.col(j) = (endOf(F1, L) - chord - r) / h;
-        }
-        const Vec2 dF = -J.inverse() * r;
-        double a = 1.0;
-        while (a > 1e-3 && (endOf(Fe + a * dF, L) - chord).norm() > r.norm()) a *= 0.5;
-        Fe += a * dF;
-      }
-      for (int i = 0; i < nb; ++i) {
-        const double sm = model.rfe(i).s_begin + 0.5 * model.rfe(i).length;
-        guess[i].phi = std::atan2(-(Wm - Fe.y() + w * (L - sm)), Fe.x());
-      }
-      x[F.per_ * nb] = Fe.x();
-      x[F.per_ * nb + 1] = Fe.y();
-    }
-  }
-  for (int i = 1; i < nb; ++i)  // continuous angles: the bending springs see φ_i - φ_{i-1}
-    guess[i].phi -= 2.0 * M_PI * std::round((guess[i].phi - guess[i - 1].phi) / (2.0 * M_PI));
-  F.fromKinematics(guess, x);
-  StaticsResult res;
-  bool ok = newton(F, x, problem, res.iterations, res.residual);
-  if (!ok && problem.kind == Kind::kEndDisplaced) {  // continuation in the end offset
+namespace {
+
+// One attempt: its solution (valid when converged), its cost and why it failed.
+struct Attempt {
+  bool converged = false;
+  int iterations = 0;
+  double residual = INFINITY;
+  VecX x;
+  std::string failure;  // empty when converged and checked
+};
+
+// Newton from the first guess; a displaced end that fails is retried by continuation in end_dx
+// (without a seabed: the straight start would hang into it).
+Attempt direct(const Model& model, const StaticsProblem& problem, const StaticTerms& terms, double t) {
+  Attempt a;
+  StaticResidual F(model, problem, terms, t);
+  a.x = VecX::Zero(F.size());
+  firstGuess(model, problem, terms, F, a.x);
+  a.converged = newton(F, a.x, problem, a.iterations, a.residual);
+  if (!a.converged && problem.kind == StaticsProblem::Kind::kEndDisplaced && !(terms.seabedStiffness() > 0.0)) {
     StaticsProblem step = problem;
-    StaticResidual Fs(model, step, t);
+    StaticResidual Fs(model, step, terms, t);
     VecX xs = VecX::Zero(Fs.size());
     Fs.fromKinematics(straightLine(model, problem.top, -M_PI / 2), xs);
-    int it = 0;
-    ok = true;
+    bool ok = true;
     for (int k = 1; k <= 20 && ok; ++k) {
+      int it = 0;
       step.end_dx = problem.end_dx * k / 20.0;
-      ok = newton(Fs, xs, step, it, res.residual);
-      res.iterations += it;
+      ok = newton(Fs, xs, step, it, a.residual);
+      a.iterations += it;
     }
-    x = xs;
+    if (ok) a.x = xs, a.converged = true;
   }
-  res.converged = ok;
-  res.kin.resize(nb);
-  F.toKinematics(x, res.kin);
-  res.end_force = F.endForce(x);
+  return a;
+}
+
+// Seabed continuation: a solution on a soft seabed, then its normal stiffness raised to the scene's
+// (x10^(1/2) per step, halved in the exponent when Newton fails), so the line settles onto the seabed
+// along a path of equilibria instead of jumping into a stiff one. Starts from the first guess on a
+// seabed 10^start_exp as stiff, or (start_exp = -inf) from the solution without the seabed at 1e-6.
+Attempt seabedRamp(const Model& model, const StaticsProblem& problem, StaticTerms& terms, double t, double start_exp) {
+  const bool from_free = !std::isfinite(start_exp);
+  double e = from_free ? -6.0 : std::min(start_exp, 0.0), step = 0.5;  // log10 of the stiffness factor
+  StaticsProblem loose = problem;  // the intermediate states need not be exact
+  loose.tolerance = std::max(problem.tolerance, 1e-6);
+  terms.scaleSeabed(from_free ? 0.0 : std::pow(10.0, e));
+  Attempt a = direct(model, loose, terms, t);
+  StaticResidual F(model, problem, terms, t);
+  while (a.converged && e < 0.0 && step > 1e-3) {
+    const double next = std::min(e + step, 0.0);
+    terms.scaleSeabed(std::pow(10.0, next));
+    VecX x = a.x;
+    int it = 0;
+    double res = INFINITY;
+    const bool ok = newton(F, x, next < 0.0 ? loose : problem, it, res);
+    a.iterations += it;
+    if (ok) {
+      a.x = x, a.residual = res, e = next, step = std::min(2.0 * step, 1.0);
+    } else {
+      step *= 0.5;
+    }
+  }
+  terms.scaleSeabed(1.0);
+  if (e < 0.0) a.converged = false;
+  return a;
+}
+
+}  // namespace
+
+StaticsResult solveStatics(const Model& model, const StaticsProblem& problem, double t) {
+  using Kind = StaticsProblem::Kind;
+  StaticsResult res;
+  const double L = model.length();
+  if (problem.kind == Kind::kEndDisplaced && !(std::abs(problem.end_dx) < L)) {
+    res.message = "initial.end_dx: |end_dx| must be < line.length for a displaced initial state";
+    return res;
+  }
+  const double span = (problem.end_point - problem.top).norm();
+  if (problem.kind == Kind::kBetweenPoints && !model.options().axial_flexibility && !(span < L * (1.0 - 1e-9))) {
+    std::ostringstream o;
+    o << "bottom.position: " << span << " m from the top, not closer than line.length (" << L
+      << " m): an inextensible line held at its full length has no equilibrium (infinite tension, or, straight "
+         "down, no unique one)";
+    res.message = o.str();
+    return res;
+  }
+  StaticTerms terms(model, t);
+  res.message = statics_detail::seabedGeometry(model, problem, terms);
+  if (!res.message.empty()) return res;
+  StaticResidual F(model, problem, terms, t);
+  // Attempts in turn until one converges and passes checkEquilibrium(). Without a seabed: Newton from
+  // the first guess. With one: the stiffness ramped up from a soft seabed (contact points sinking
+  // 1e-3 L under their share of the weight) starting from the first guess (fewer iterations than a
+  // direct start on a stiff seabed: J-lay n = 400, 17 vs 48); Newton from the first guess; the
+  // stiffness ramped up from the solution without the seabed.
+  const char* names[] = {"from the first guess ", "with the seabed stiffness ramped up from the first guess ",
+                         "with the seabed stiffness ramped up from the solution without the seabed "};
+  const double k = terms.seabedStiffness();
+  const double soft = std::log10(F.weight() / (model.bodies() + 1) / (1e-3 * L) / std::max(k, 1e-300));
+  const int order[] = {1, 0, 2};
+  Attempt a;
+  std::string failures;
+  for (int attempt : order) {
+    if (attempt != 0 && !(k > 0.0)) continue;
+    if (attempt == 1 && !(soft < 0.0)) continue;  // the seabed is soft already
+    const int before = a.iterations;
+    a = attempt == 0 ? direct(model, problem, terms, t)
+                     : seabedRamp(model, problem, terms, t, attempt == 1 ? soft : -INFINITY);
+    a.iterations += before;
+    std::ostringstream o;
+    if (a.converged) {
+      Kinematics kin(model.bodies());
+      F.toKinematics(a.x, kin);
+      const EquilibriumCheck check = checkEquilibrium(model, problem, kin, F.endForce(a.x), t);
+      if (!check.ok)
+        o << "to a valid equilibrium: its solution (" << a.iterations << " iterations, residual " << a.residual
+          << ") fails the check " << check.message;
+    } else {
+      o << "in " << a.iterations << " iterations, residual " << a.residual << " (tolerance " << problem.tolerance
+        << ")";
+    }
+    a.failure = o.str();
+    if (a.failure.empty()) break;
+    failures += (failures.empty() ? "" : "; ") + std::string(names[attempt]) + a.failure;
+  }
+  res.converged = a.failure.empty();
+  res.iterations = a.iterations;
+  res.residual = a.residual;
+  res.kin.resize(model.bodies());
+  F.toKinematics(a.x, res.kin);
+  res.end_force = F.endForce(a.x);
   std::ostringstream msg;
-  msg << (ok ? "statics converged" : "statics did not converge") << " in " << res.iterations
-      << " iterations, residual " << res.residual << " (tolerance " << problem.tolerance << ")";
+  if (res.converged)
+    msg << "statics converged in " << res.iterations << " iterations, residual " << res.residual << " (tolerance "
+        << problem.tolerance << ")";
+  else
+    msg << "statics did not converge " << failures << " [" << problemKeys(model, problem, terms) << "]";
   res.message = msg.str();
   return res;
 }

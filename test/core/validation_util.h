@@ -79,6 +79,55 @@ inline double catenaryShapeError(const Model& model, const Kinematics& kin, cons
 }
 
 // ---------------------------------------------------------------------------------------------
+// Catenary resting on a flat rigid seabed: the top at height h above it, the end at horizontal
+// distance X from the top, lying on the seabed with no friction, so the horizontal tension H is the
+// same everywhere and the suspended part (unstretched length s) meets the seabed tangentially (V = 0
+// at the touchdown). Elastic (EA) or inextensible (EA = inf); weight w per unstretched length:
+//   h = (H/w) (sqrt(1 + (w s/H)²) - 1) + w s² / (2 EA)
+//   X = (H/w) asinh(w s/H) + H s/EA + (L - s)(1 + H/EA)
+// Valid while 0 < s < L (part of the line lies on the seabed).
+struct SeabedCatenary {
+  double L = 0.0, w = 0.0, EA = INFINITY, h = 0.0, X = 0.0;
+  double H = 0.0, s = 0.0;  // solution: horizontal tension [N], suspended unstretched length [m]
+
+  double flex() const { return std::isinf(EA) ? 0.0 : 1.0 / EA; }
+  // Suspended length for tension H (height equation, increasing in s: bisection).
+  double suspended(double Hh) const {
+    double lo = 0.0, hi = 2.0 * h + 10.0 * Hh / w + L;
+    for (int k = 0; k < 200; ++k) {
+      const double m = 0.5 * (lo + hi);
+      const double y = Hh / w * (std::sqrt(1.0 + std::pow(w * m / Hh, 2)) - 1.0) + 0.5 * w * m * m * flex();
+      (y < h ? lo : hi) = m;
+    }
+    return 0.5 * (lo + hi);
+  }
+  double touchdownX(double Hh, double ss) const { return Hh / w * std::asinh(w * ss / Hh) + Hh * ss * flex(); }
+  double extent(double Hh) const {
+    const double ss = suspended(Hh);
+    return touchdownX(Hh, ss) + (L - ss) * (1.0 + Hh * flex());
+  }
+  // Solves for H (X increases with H) and s; returns false when no part of the line would lie on the seabed.
+  bool solve() {
+    double lo = 1e-9 * w * L, hi = 1e9 * w * L;
+    for (int k = 0; k < 300; ++k) {  // largest H that leaves some length on the seabed
+      const double m = std::sqrt(lo * hi);
+      (suspended(m) < L ? lo : hi) = m;
+    }
+    hi = lo;
+    lo = 1e-9 * w * L;
+    for (int k = 0; k < 300; ++k) {
+      const double m = std::sqrt(lo * hi);
+      (extent(m) < X ? lo : hi) = m;
+    }
+    H = std::sqrt(lo * hi);
+    s = suspended(H);
+    return s < L;
+  }
+  double topTension() const { return std::hypot(H, w * s); }
+  double touchdownX() const { return touchdownX(H, s); }
+};
+
+// ---------------------------------------------------------------------------------------------
 // Complete elliptic integral of the first kind K(k) = π / (2 AGM(1, sqrt(1 - k²))).
 inline double ellipticK(double k) {
   double a = 1.0, b = std::sqrt(1.0 - k * k);

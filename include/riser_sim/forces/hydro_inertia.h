@@ -13,6 +13,9 @@ class HydroInertia : public ForceTerm {
   HydroInertia(const WaterKinematics& water, double inertia_coefficient)
       : water_(water), cm_(inertia_coefficient) {}
   std::string name() const override { return "hydro_inertia"; }
+  std::unique_ptr<ForceTerm> steadyTerm(double t) const override {
+    return std::make_unique<HydroInertia>(water_.steady(t), cm_);
+  }
   void addForces(const Model& model, const TermData*, const Kinematics& kin, double t, VecX& Q) const override;
   bool hasInertia() const override { return cm_ != 1.0; }
   void addInertia(const Model& model, const Kinematics& kin, double t, AlignedVector<Mat4>& M,

@@ -11,6 +11,9 @@ class MorisonDrag : public ForceTerm {
   MorisonDrag(const WaterKinematics& water, double drag_tangential, double drag_normal)
       : water_(water), cd_t_(drag_tangential), cd_n_(drag_normal) {}
   std::string name() const override { return "morison_drag"; }
+  std::unique_ptr<ForceTerm> steadyTerm(double t) const override {
+    return std::make_unique<MorisonDrag>(water_.steady(t), cd_t_, cd_n_);
+  }
   void addForces(const Model& model, const TermData*, const Kinematics& kin, double t, VecX& Q) const override;
   double power(const Model& model, const TermData*, const Kinematics& kin, double t) const override;
   double potentialEnergy(const Model&, const TermData*, const Kinematics&) const override { return 0.0; }  // dissipative: power() only

@@ -33,6 +33,7 @@ class Seabed : public ForceTerm {
   double potentialEnergy(const Model& model, const TermData* data, const Kinematics& kin) const override;
   double power(const Model& model, const TermData* data, const Kinematics& kin, double t) const override;
   double seabedLevel() const override { return spec_.level; }
+  const SeabedSpec& spec() const { return spec_; }
   std::unique_ptr<TermData> makeData(const Model& model) const override;
   void startRun(const Model& model, const Kinematics& kin, TermData& data) const override;
   void endStep(const Model& model, const Kinematics& kin, TermData& data) const override;
