@@ -24,7 +24,7 @@ Scene pinnedChain(const Vec2& anchor, double end_mass, bool axial) {
   s.end_mass = end_mass;
   s.bottom = BottomBoundary::kPinned;
   s.bottom_point = anchor;
-  s.initial.type = "between_points";
+  s.initial.type = InitialKind::kBetweenPoints;
   return s;
 }
 
@@ -143,7 +143,7 @@ TEST(StaticsChecks, WavesDoNotChangeTheStatics) {
 TEST(StaticsChecks, CheckNamesWhatIsWrong) {
   Scene s = pinnedChain(Vec2::Zero(), 0.0, false);
   s.bottom = BottomBoundary::kFree;
-  s.initial.type = "hanging";
+  s.initial.type = InitialKind::kHanging;
   s.seabed.enabled = true;
   s.seabed.level = -7.0;
   s.seabed.stiffness_normal = 1e5;

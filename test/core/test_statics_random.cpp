@@ -107,7 +107,7 @@ TEST(StaticsRandom, SolvedStatesPassTheChecksOrFailWithAReason) {
     const EquilibriumCheck check = checkEquilibrium(*model, staticsProblem(s), st.kin, st.end_force);
     EXPECT_TRUE(check.ok) << check.message;
     // 1 s of rk4 at 0.8x its stable step.
-    s.solver.integrator = "rk4";
+    s.solver.integrator = IntegratorKind::kRk4;
     s.solver.dt = 0.8 * sim->stableStepEstimate();
     sim = buildSimulator(s);
     const AlignedVector<Vec2> start = sim->outputs().points;

@@ -73,9 +73,9 @@ TEST(StaticsSeabed, DisplacedEndLaysTheRestOnTheSeabed) {
     for (double k : {3e6, 3e4}) {  // stiff (sink 0.1 mm) and soft (sink 11 mm at n = 90) seabed
       for (int n : {90, 180}) {
         Scene s = chainOverSeabed(n, axial, k);
-        s.initial.type = "displaced";
+        s.initial.type = InitialKind::kDisplaced;
         s.initial.end_dx = 70.0;
-        s.initial.end_force = "hold";
+        s.initial.end_force = EndForceKind::kHold;
         const SeabedResult r = solve(s);
         const double eh = std::abs(r.H / r.ref.H - 1.0), et = std::abs(r.top_tension / r.ref.topTension() - 1.0);
         const double d = s.length / n;
@@ -95,7 +95,7 @@ TEST(StaticsSeabed, DisplacedEndLaysTheRestOnTheSeabed) {
 TEST(StaticsSeabed, AnchorOnTheSeabed) {
   for (bool axial : {true, false}) {
     Scene s = chainOverSeabed(90, axial, 3e6);
-    s.initial.type = "between_points";
+    s.initial.type = InitialKind::kBetweenPoints;
     s.bottom = BottomBoundary::kPinned;
     s.bottom_point = Vec2(75.0, s.seabed.level);
     const SeabedResult r = solve(s);
@@ -116,7 +116,7 @@ TEST(StaticsSeabed, AnchorOnTheSeabed) {
 TEST(StaticsSeabed, HangingStraightDownOntoTheSeabed) {
   for (bool axial : {true, false}) {
     Scene s = chainOverSeabed(90, axial, 3e6);
-    s.initial.type = "hanging";
+    s.initial.type = InitialKind::kHanging;
     StaticsResult st;
     auto sim = buildSimulator(s, &st);
     ASSERT_TRUE(st.converged) << st.message;
