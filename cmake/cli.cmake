@@ -13,9 +13,11 @@ set_target_properties(riser_sim_cli PROPERTIES
   RUNTIME_OUTPUT_DIRECTORY ${CATKIN_DEVEL_PREFIX}/${CATKIN_PACKAGE_BIN_DESTINATION})
 install(TARGETS riser_sim_cli RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
 
-# test/core/test_cli.cpp (made a gtest by cmake/core.cmake's glob) runs the built binary.
-if(CATKIN_ENABLE_TESTING AND TARGET test_cli)
-  target_compile_definitions(test_cli PRIVATE
-    RISER_SIM_CLI_BINARY="${CATKIN_DEVEL_PREFIX}/${CATKIN_PACKAGE_BIN_DESTINATION}/riser_sim_cli")
-  add_dependencies(test_cli riser_sim_cli)
-endif()
+# test/core/test_cli*.cpp (made gtests by cmake/core.cmake's glob) run the built binary.
+foreach(t test_cli test_cli_outputs)
+  if(CATKIN_ENABLE_TESTING AND TARGET ${t})
+    target_compile_definitions(${t} PRIVATE
+      RISER_SIM_CLI_BINARY="${CATKIN_DEVEL_PREFIX}/${CATKIN_PACKAGE_BIN_DESTINATION}/riser_sim_cli")
+    add_dependencies(${t} riser_sim_cli)
+  endif()
+endforeach()
