@@ -16,6 +16,10 @@
 
 namespace riser_sim {
 
+// |E - E0 - W| / (m g L) above which a run warns that its step does not resolve the motion (the CLI's
+// summary and the node's diagnostics): a resolved run closes its balance to round-off or ~1e-7.
+constexpr double kEnergyDriftWarning = 1e-3;
+
 struct SolverSettings {
   double dt = 1e-3;                     // solver.dt [s]
   IntegratorKind integrator = IntegratorKind::kRk4;

@@ -27,8 +27,6 @@ constexpr int kExitInternal = 1;
 constexpr int kExitBadInput = 2;     // bad option, scene or value; an output file that cannot be opened
 constexpr int kExitDiverged = 3;     // the run diverged, or the initial statics failed
 constexpr int kExitWriteFailed = 4;  // an output (file or stdout) could not be written completely
-// |E - E0 - W| / (m g L) above which a finished run warns that its step does not resolve the motion.
-constexpr double kEnergyDriftWarning = 1e-3;
 
 // Bad command line (exit code 2).
 class UsageError : public std::runtime_error {

@@ -103,7 +103,8 @@ std::string NodeDiagnostics::runningMessage(const ros::Time& now, const RunView&
   addValue("constraint error [m]", num(sim.constraintError(), "%.3e"));
   addValue("max constraint error [m]", num(sim.maxConstraintError(), "%.3e"));
   addValue("energy [J]", num(sim.totalEnergy(), "%.6e"));
-  addValue("energy balance error (relative)", num(sim.energyDrift(), "%.3e"));
+  const double drift = sim.energyDrift();
+  addValue("energy balance error (relative)", num(drift, "%.3e"));
   const riser_sim::PointMotion top = run.motion->at(sim.time());
   addValue("hang-off x [m]", num(top.p.x(), "%.4f"));
   addValue("hang-off z [m]", num(top.p.y(), "%.4f"));
@@ -115,6 +116,10 @@ std::string NodeDiagnostics::runningMessage(const ros::Time& now, const RunView&
   } else if (std::isfinite(pose_age) && pose_age > pose_timeout_) {
     st.level = DiagnosticStatus::WARN;
     message = "no vessel pose for " + num(pose_age, "%.1f") + " s: holding the last one";
+  } else if (std::abs(drift) > riser_sim::kEnergyDriftWarning) {
+    st.level = DiagnosticStatus::WARN;
+    message = "energy balance off by " + num(drift, "%.3g") + " of m g L: solver.dt does not resolve "
+              "the motion, positions and forces may be wrong (smaller solver.dt or midpoint); " + message;
   }
   return message;
 }
