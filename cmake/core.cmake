@@ -16,6 +16,7 @@ add_library(riser_sim_core
   src/core/forces/internal_flow.cpp
   src/core/water.cpp
   src/core/absolute_formulation.cpp
+  src/core/chain_kinematics.cpp
   src/core/chain_formulation.cpp
   src/core/chain_shifted_solver.cpp
   src/core/independent_formulation.cpp
