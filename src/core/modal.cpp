@@ -182,12 +182,13 @@ ModalResult computeModes(const Model& model, const Kinematics& equilibrium, cons
   MatX M;
   {
     IndependentFormulation f(model, 0.0);
+    const std::unique_ptr<FormulationData> fd = f.makeData();
     VecX y = VecX::Zero(2 * nt), dy(2 * nt);
     y.head(nt) = theta0;
     PointMotion pm;
     pm.p = top;
-    f.derivative(options.time, y, pm, dy);
-    M = f.massMatrix().selfadjointView<Eigen::Lower>();
+    f.derivative(options.time, y, pm, dy, *fd);
+    M = f.massMatrix(*fd).selfadjointView<Eigen::Lower>();
   }
 
   // Pinned bottom: orthonormal null space of the end-point Jacobian C (E' = C θ').
