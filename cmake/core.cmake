@@ -15,7 +15,9 @@ add_library(riser_sim_core
   src/core/forces/end_load.cpp
   src/core/forces/internal_flow.cpp
   src/core/water.cpp
+  src/core/formulation.cpp
   src/core/absolute_formulation.cpp
+  src/core/chain_kinematics.cpp
   src/core/chain_formulation.cpp
   src/core/chain_shifted_solver.cpp
   src/core/independent_formulation.cpp

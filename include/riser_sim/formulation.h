@@ -1,61 +1,70 @@
-// Equations of motion behind one small interface: given the state, return accelerations.
+// Equations of motion behind one small interface, in the style of Pinocchio's aba(model, data, q, v, tau):
+// a Formulation is immutable (it holds the model and its settings); every call takes its inputs (time,
+// state, top motion) explicitly and writes what it computed into a FormulationData made by makeData().
 #pragma once
+#include <memory>
+#include <stdexcept>
 #include <string>
 
-#include "riser_sim/kinematics.h"
+#include "riser_sim/formulation_data.h"
 #include "riser_sim/model.h"
-#include "riser_sim/top_motion.h"
 
 namespace riser_sim {
 
-class TermDataSet;
-
-// Results of the last evaluation that outputs need (reactions, constraint error).
-struct Reactions {
-  Vec2 top = Vec2::Zero();     // force the line exerts on the hang-off point A_0 [N]
-  Vec2 bottom = Vec2::Zero();  // force the line exerts on the bottom anchor (pinned) [N]
-  AlignedVector<Vec2> joint;   // λ_k: force on rfe k-1 at its end (= minus force on rfe k at A_k), k=0..n+1
-};
-
 class Formulation {
  public:
+  explicit Formulation(const Model& model) : model_(model) {}
   virtual ~Formulation() = default;
   virtual std::string name() const = 0;
+  const Model& model() const { return model_; }
   // Size of the position and of the velocity part of the state vector y = [q; v].
   virtual int positionSize() const = 0;
+  // Data for this formulation's evaluations, sized once (evaluating then allocates nothing).
+  virtual std::unique_ptr<FormulationData> makeData() const = 0;
   // Fills the state for a line whose rfes have the given A_0, Δ_i, φ_i (and rates).
   virtual void packState(const Kinematics& kin, VecX& y) const = 0;
-  // Kinematics of every rfe for state y.
-  virtual void kinematics(const VecX& y, Kinematics& kin) const = 0;
-  // dy/dt at time t; top gives A_0's motion.
-  virtual void derivative(double t, const VecX& y, const PointMotion& top, VecX& dy) = 0;
-  virtual const Reactions& reactions() const = 0;
+  // Kinematics of every rfe for state y with A_0 moving as `top` (the chain formulations hang the line
+  // from top.p, top.v; the absolute one has A_0 in y and ignores it).
+  virtual void kinematics(const VecX& y, const PointMotion& top, Kinematics& kin) const = 0;
+  // dy/dt at time t [s], A_0 moving as `top`. data then holds this evaluation: t, top, kin, reactions,
+  // term_power, constraint_error (FormulationData).
+  virtual void derivative(double t, const VecX& y, const PointMotion& top, VecX& dy, FormulationData& data) const = 0;
   // Largest violation of the joint constraints for state y [m].
   virtual double constraintError(const VecX& y, const PointMotion& top) const = 0;
-  // Kinematics of the last derivative() call.
-  virtual const Kinematics& lastKinematics() const = 0;
-  // Summed power of the terms' non-conservative parts at the last derivative() call [W].
-  double lastTermPower() const { return last_term_power_; }
-  // Largest joint-constraint violation seen by the last derivative() call [m] (0 when exact).
-  virtual double lastConstraintError() const = 0;
-  // Kinetic energy of the line (with every term's inertia) for state y [J].
-  virtual double kineticEnergy(double t, const VecX& y) = 0;
+  // Kinetic energy of the line (with every term's inertia) for state y [J]. Uses a workspace of its own in
+  // data: data's evaluation is left as it was.
+  double kineticEnergy(double t, const VecX& y, const PointMotion& top, FormulationData& data) const;
+  // Whether data holds this formulation's evaluation at exactly (t, y, top).
+  bool evaluatedAt(double t, const VecX& y, const PointMotion& top, const FormulationData& data) const;
 
   // --- Structured implicit solves (optional; O(n), see chain_shifted_solver.h) ---
+  // Without them the three calls below throw std::logic_error.
   virtual bool hasShiftedSolve() const { return false; }
-  // Linearises about the state of the last derivative() call at time t [s].
-  virtual void linearize(double /*t*/) {}
-  // x = (I - c J)^-1 b on [q; v] (the first 2p entries), J ≈ ∂(q', v')/∂(q, v) of that linearisation.
-  virtual void factorShifted(double /*c*/) {}
-  virtual void solveShifted(const VecX& /*b*/, VecX& /*x*/) {}
-
-  // Run data of the model's terms (history such as the seabed's anchors), owned by the Simulator;
-  // null (the default): the terms are evaluated without history.
-  void setTermData(const TermDataSet* data) { term_data_ = data; }
+  // Linearises about the evaluation at (t, y, top) into data's solver workspace: data's evaluation is used
+  // when it was made at exactly these inputs (evaluatedAt), else linearize() evaluates there first (data
+  // then holds that evaluation). The linearisation stays in data until the next linearize().
+  virtual void linearize(double t, const VecX& y, const PointMotion& top, FormulationData& data) const;
+  // Factorises I - c J for data's linearisation, J ≈ ∂(q', v')/∂(q, v) (throws before any linearize()).
+  virtual void factorShifted(double c, FormulationData& data) const;
+  // x = (I - c J)^-1 b on [q; v] (the first 2p entries) with data's factorisation (throws before any
+  // factorShifted() on the current linearisation).
+  virtual void solveShifted(const VecX& b, VecX& x, FormulationData& data) const;
 
  protected:
-  const TermDataSet* term_data_ = nullptr;
-  double last_term_power_ = 0.0;
+  // data as this formulation's own data type D; throws std::invalid_argument when another formulation
+  // made it.
+  template <class D>
+  D& dataOf(FormulationData& data) const {
+    checkOwner(data);
+    return static_cast<D&>(data);
+  }
+  void checkOwner(const FormulationData& data) const {
+    if (&data.owner() != this) throw std::invalid_argument(name() + " formulation: data made by another formulation");
+  }
+  // Whether kin holds exactly the coordinates and rates of state y (as kinematics() copies them).
+  virtual bool holdsState(const VecX& y, const Kinematics& kin) const = 0;
+
+  const Model& model_;
 };
 
 }  // namespace riser_sim

@@ -12,21 +12,30 @@
 
 namespace riser_sim {
 
+class IndependentFormulation;
+
+// Workspaces of the dense solve (ChainData's besides).
+class IndependentData : public ChainData {
+ public:
+  IndependentData(const IndependentFormulation& owner, const Model& model);
+
+  MatX Mii;  // M_II (lower triangle filled)
+  MatX W, C, X;
+  VecX f;    // generalised forces of every rfe with θ'' = 0 (4 per rfe, absolute coordinates)
+  VecX rhs, qdd;
+  Eigen::LDLT<MatX> ldlt;
+  AlignedVector<Vec2> abias, A_dd;
+};
+
 class IndependentFormulation : public ChainFormulation {
  public:
   IndependentFormulation(const Model& model, double stabilization);
   std::string name() const override { return "independent"; }
-  void derivative(double t, const VecX& y, const PointMotion& top, VecX& dy) override;
+  std::unique_ptr<FormulationData> makeData() const override;
+  void derivative(double t, const VecX& y, const PointMotion& top, VecX& dy, FormulationData& data) const override;
 
-  // The last dense mass matrix (lower triangle filled) — for tests.
-  const MatX& massMatrix() const { return Mii_; }
-
- private:
-  MatX Mii_, W_, C_, X_;
-  VecX rhs_, qdd_;
-  Eigen::LDLT<MatX> ldlt_;
-  AlignedVector<Vec2> abias_, A_dd_;
-  AlignedVector<Vec4> f_;  // generalised forces of rfe i with θ'' = 0
+  // The dense mass matrix of data's evaluation (lower triangle filled).
+  const MatX& massMatrix(const FormulationData& data) const;
 };
 
 }  // namespace riser_sim

@@ -14,17 +14,19 @@
 // gives the force that meets the end's Baumgarte-stabilised acceleration, still O(n).
 // Λ_i is kept symmetric explicitly: its antisymmetric round-off part would otherwise grow ~2.3x per rfe.
 #pragma once
+#include <vector>
+
 #include "riser_sim/chain_formulation.h"
 
 namespace riser_sim {
 
-class RecursiveFormulation : public ChainFormulation {
- public:
-  RecursiveFormulation(const Model& model, double stabilization);
-  std::string name() const override { return "recursive"; }
-  void derivative(double t, const VecX& y, const PointMotion& top, VecX& dy) override;
+class RecursiveFormulation;
 
- private:
+// Workspaces of the recursion (ChainData's besides).
+class RecursiveData : public ChainData {
+ public:
+  RecursiveData(const RecursiveFormulation& owner, const Model& model);
+
   // Per rfe, from the backward pass (K = coordinates per rfe; stored with room for K = 2).
   struct Node {
     Mat2 Lam;    // Λ_i
@@ -35,13 +37,6 @@ class RecursiveFormulation : public ChainFormulation {
     Vec2 beta, rho, c;
     EIGEN_MAKE_ALIGNED_OPERATOR_NEW
   };
-  template <int K, bool General>
-  void backward();
-  template <int K>
-  void forward(const Vec2& a_top, VecX& dy, int nt);
-  template <int K>
-  Vec2 pinnedTipForce(const Vec2& a_top);
-
   // Fast path (rigid parts only, free bottom): the same recursion in scalars, in each rfe's frame
   // (e_i, n_i), where G, B and D are diagonal (see rigidBackwardAxial for the closed-form Λ).
   // Per rfe, everything affine in A''_i so that the forward pass is three 2x2 products per rfe:
@@ -51,17 +46,35 @@ class RecursiveFormulation : public ChainFormulation {
     double La, Lb, Ld, bx, by;         // Λ_i = [[La, Lb], [Lb, Ld]], β_i
     double M00, M01, M10, M11, mx, my;  // A''_{i+1}
   };
+  AlignedVector<Node> node;
+  std::vector<RigidNode> rigid;
+};
+
+class RecursiveFormulation : public ChainFormulation {
+ public:
+  RecursiveFormulation(const Model& model, double stabilization);
+  std::string name() const override { return "recursive"; }
+  std::unique_ptr<FormulationData> makeData() const override;
+  void derivative(double t, const VecX& y, const PointMotion& top, VecX& dy, FormulationData& data) const override;
+
+ private:
+  using Node = RecursiveData::Node;
+  using RigidNode = RecursiveData::RigidNode;
+  template <int K, bool General>
+  void backward(RecursiveData& d) const;
+  template <int K>
+  void forward(const Vec2& a_top, VecX& dy, int nt, RecursiveData& d) const;
+  template <int K>
+  Vec2 pinnedTipForce(const Vec2& a_top, RecursiveData& d) const;
+
   // Fills the forward coefficients of nd from the backward pass's quantities in the rfe frame.
   static void finishNode(RigidNode& nd, double c, double s, double len, double c0, double c1, double Di00,
                          double Di01, double Di11, double Bh00, double Bh01, double Bh10, double Bh11, double rho0,
                          double rho1, double L00, double L01, double L11, double be, double bn);
-  void rigidBackwardAxial();
-  void rigidBackwardLocked();
+  void rigidBackwardAxial(RecursiveData& d) const;
+  void rigidBackwardLocked(RecursiveData& d) const;
   template <bool Axial>
-  void rigidForward(const Vec2& a_top, VecX& dy, int nt);
-
-  AlignedVector<Node> node_;
-  std::vector<RigidNode> rigid_;
+  void rigidForward(const Vec2& a_top, VecX& dy, int nt, RecursiveData& d) const;
 };
 
 }  // namespace riser_sim

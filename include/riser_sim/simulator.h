@@ -61,7 +61,11 @@ class Simulator : private OdeSystem {
   const Model& model() const { return *model_; }
   const SolverSettings& settings() const { return settings_; }
   const Formulation& formulation() const { return *formulation_; }
+  // The formulation's last evaluation: of the last step's last stage, or of outputs() when called since.
+  const FormulationData& formulationData() const { return *data_; }
   const VecX& state() const { return y_; }
+  // Kinematics of every rfe at the current state and time.
+  void kinematics(Kinematics& kin) const { formulation_->kinematics(y_, top_->at(t_), kin); }
 
   // Every output at the current state (one extra evaluation for the reactions).
   const LineOutputs& outputs();
@@ -88,9 +92,9 @@ class Simulator : private OdeSystem {
  private:
   void rhs(double t, const VecX& y, VecX& dy) override;
   bool hasShiftedSolve() const override { return formulation_->hasShiftedSolve(); }
-  void linearize(double t, const VecX& y) override;
-  void factorShifted(double c) override { formulation_->factorShifted(c); }
-  void solveShifted(const VecX& b, VecX& x) override { formulation_->solveShifted(b, x); }
+  void linearize(double t, const VecX& y) override { formulation_->linearize(t, y, top_->at(t), *data_); }
+  void factorShifted(double c) override { formulation_->factorShifted(c, *data_); }
+  void solveShifted(const VecX& b, VecX& x) override { formulation_->solveShifted(b, x, *data_); }
   double potentialEnergy(const Kinematics& kin) const;
   void checkDivergence(bool stepped);
   void estimateHighestFrequency();
@@ -99,10 +103,9 @@ class Simulator : private OdeSystem {
   std::unique_ptr<TopMotion> top_;
   SolverSettings settings_;
   std::unique_ptr<Formulation> formulation_;
+  std::unique_ptr<FormulationData> data_;  // every evaluation of this run (rhs, linearize, outputs)
   std::unique_ptr<Integrator> integrator_;
-  VecX y_, dy_, probe_y_, probe_a_, probe_x_, lin_dy_;
-  VecX last_rhs_y_;               // state of the formulation's last evaluation (for linearize())
-  double last_rhs_t_ = NAN;
+  VecX y_, dy_, probe_y_, probe_a_, probe_x_;
   double omega_max_ = 0.0;
   double damped_step_ = INFINITY;  // largest stable explicit step from the Ritz values (damping included)
   double t_ = 0.0, e0_ = 0.0, energy_scale_ = 1.0, max_constraint_error_ = 0.0;

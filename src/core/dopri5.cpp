@@ -162,7 +162,7 @@ bool Dopri5::step(OdeSystem& sys, double t, VecX& y, double H) {
       last_rejected = true;
     }
   }
-  // The system's last evaluation was f(t_end, y): the chain formulations read A_0 from it.
+  // The last stage was f(t_end, y) (FSAL): reused by the next step when it starts from (t_end, y).
   y_last_ = y;
   t_last_ = t_end;
   return true;

@@ -167,7 +167,7 @@ bool ImplicitMidpoint::single(OdeSystem& sys, double t, VecX& y, double h) {
   h_prev_ = h;
   y += h * fz_;  // y1 = y0 + h f(z) (= 2z - y0 on the implicit part; W by the same midpoint rule)
   ++stats_.substeps;
-  // End evaluation: the chain formulations read A_0 from the last call; it is the next f0.
+  // End evaluation: the next step's f0 (and the last stage the simulator's divergence check reads).
   sys.rhs(t + h, y, f0_);
   ++stats_.rhs;
   return true;

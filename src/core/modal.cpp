@@ -6,6 +6,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "riser_sim/chain_kinematics.h"
 #include "riser_sim/force_term.h"
 #include "riser_sim/independent_formulation.h"
 #include "riser_sim/run_builder.h"
@@ -36,18 +37,7 @@ class Chain {
     }
   }
   const Kinematics& kinematics(const VecX& theta) {
-    Vec2 A = top_;
-    for (int i = 0; i < model_.bodies(); ++i) {
-      BodyKinematics& b = kin_[i];
-      b = BodyKinematics();
-      b.A = A;
-      b.delta = k_ == 2 ? theta[2 * i] : 0.0;
-      b.phi = theta[k_ * i + k_ - 1];
-      b.c = std::cos(b.phi);
-      b.s = std::sin(b.phi);
-      b.len = model_.rfe(i).length + b.delta;
-      A = b.end();
-    }
+    chainKinematics(model_, top_, Vec2::Zero(), theta.data(), nullptr, kin_);
     return kin_;
   }
   // Absolute forces of every term plus the dead end load at the end of rfe n.
@@ -59,16 +49,10 @@ class Chain {
     Q_.segment<4>(4 * n) += pointForce(kin_[n], model_.rfe(n).length, 1.0, end_force);
     return Q_;
   }
-  // Q_θ = J^T Q_abs in O(n): rfe j's Δ_j, φ_j move every rfe beyond it rigidly by e_j, (l_j+Δ_j) n_j.
+  // Q_θ = J^T Q_abs in O(n).
   void project(const VecX& Q, VecX& Qt) const {
     Qt.resize(size());
-    Vec2 below = Vec2::Zero();
-    for (int i = model_.bodies() - 1; i >= 0; --i) {
-      const BodyKinematics& b = kin_[i];
-      if (k_ == 2) Qt[2 * i] = Q[4 * i + kDelta] + b.e().dot(below);
-      Qt[k_ * i + k_ - 1] = Q[4 * i + kPhi] + b.len * b.nrm().dot(below);
-      below += Q.segment<2>(4 * i);
-    }
+    projectToChain(model_, kin_, Q.data(), Qt.data());
   }
   void generalised(const VecX& theta, const Vec2& end_force, VecX& Qt) { project(absoluteForces(theta, end_force), Qt); }
 
@@ -202,12 +186,13 @@ ModalResult computeModes(const Model& model, const Kinematics& equilibrium, cons
   MatX M;
   {
     IndependentFormulation f(model, 0.0);
+    const std::unique_ptr<FormulationData> fd = f.makeData();
     VecX y = VecX::Zero(2 * nt), dy(2 * nt);
     y.head(nt) = theta0;
     PointMotion pm;
     pm.p = top;
-    f.derivative(options.time, y, pm, dy);
-    M = f.massMatrix().selfadjointView<Eigen::Lower>();
+    f.derivative(options.time, y, pm, dy, *fd);
+    M = f.massMatrix(*fd).selfadjointView<Eigen::Lower>();
   }
 
   // Pinned bottom: orthonormal null space of the end-point Jacobian C (E' = C θ').

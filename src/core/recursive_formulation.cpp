@@ -2,15 +2,23 @@
 
 #include <Eigen/LU>
 
+#include "riser_sim/rfe_inertia.h"
+
 namespace riser_sim {
 
-RecursiveFormulation::RecursiveFormulation(const Model& model, double stabilization)
-    : ChainFormulation(model, stabilization) {
+RecursiveData::RecursiveData(const RecursiveFormulation& owner, const Model& model) : ChainData(owner, model) {
   Node zero;
   zero.Lam = zero.T = zero.Bh = zero.Dinv = zero.G = Mat2::Zero();
   zero.beta = zero.rho = zero.c = Vec2::Zero();
-  node_.assign(model.bodies(), zero);
-  rigid_.assign(model.bodies(), RigidNode{});
+  node.assign(model.bodies(), zero);
+  rigid.assign(model.bodies(), RigidNode{});
+}
+
+RecursiveFormulation::RecursiveFormulation(const Model& model, double stabilization)
+    : ChainFormulation(model, stabilization) {}
+
+std::unique_ptr<FormulationData> RecursiveFormulation::makeData() const {
+  return std::make_unique<RecursiveData>(*this, model_);
 }
 
 inline void RecursiveFormulation::finishNode(RigidNode& nd, double c, double s, double len, double c0, double c1,
@@ -43,13 +51,13 @@ inline void RecursiveFormulation::finishNode(RigidNode& nd, double c, double s, 
 // the articulated inertia along e is part (1) alone. Hence Λ_i = m1 I + σ n n^T (σ = Λ_nn - m1), and
 // with α = φ_i - φ_{i+1}, Λ' in rfe i's frame is p = m1' + σ' sin²α, q = σ' sinα cosα, r = m1' + σ' cos²α,
 // D̂_ee = mk + p, det D̂ = N0 + σ' N1 (the σ'² terms cancel): one division per rfe on the serial chain.
-void RecursiveFormulation::rigidBackwardAxial() {
+void RecursiveFormulation::rigidBackwardAxial(RecursiveData& d) const {
   const int nb = model_.bodies();
   double sig = 0.0, m1n = 0.0, cn = 1.0, sn = 0.0, bx = 0.0, by = 0.0;  // rfe i+1: Λ' = m1n I + sig n'n'^T, β'
   for (int i = nb - 1; i >= 0; --i) {
     const Rfe& r = model_.rfe(i);
-    const BodyKinematics& k = kin_[i];
-    RigidNode& nd = rigid_[i];
+    const BodyKinematics& k = d.kin[i];
+    RigidNode& nd = d.rigid[i];
     const double c = k.c, s = k.s, len = k.len, w = k.phi_dot, w2 = w * w, dw = 2.0 * k.delta_dot * w;
     const double m = r.mass, mk = r.mass_k, S = r.firstMoment(k.delta), Sk = r.firstMomentK(k.delta);
     const double I = r.inertiaAboutA(k.delta), l2 = len * len;
@@ -64,7 +72,7 @@ void RecursiveFormulation::rigidBackwardAxial() {
     // β: t = β' + Λ'c in the frame, c = (-l w², 2Δ'w); ρ = r_u - G^T t; β = K ρ + t - r_A, K = B̂ D̂^-1.
     const double c0 = -len * w2, c1 = dw;
     const double t0 = c * bx + s * by + p * c0 + q * c1, t1 = -s * bx + c * by + q * c0 + rr * c1;
-    const double* Q = Q_.data() + 4 * i;
+    const double* Q = d.Q.data() + 4 * i;
     const double rAe = c * Q[0] + s * Q[1] + S * w2, rAn = -s * Q[0] + c * Q[1] - mk * dw;
     const double rho0 = Q[2] + Sk * w2 - t0, rho1 = Q[3] - Sk * dw - len * t1;
     const double K00 = Bh00 * Di00 + Bh01 * Di01, K01 = Bh00 * Di01 + Bh01 * Di11;
@@ -77,21 +85,21 @@ void RecursiveFormulation::rigidBackwardAxial() {
 }
 
 // Rigid parts, inextensible line (φ only): B̂, D̂ reduce to the φ column and entry; Λ is a full 2x2.
-void RecursiveFormulation::rigidBackwardLocked() {
+void RecursiveFormulation::rigidBackwardLocked(RecursiveData& d) const {
   const int nb = model_.bodies();
-  double a = 0.0, b = 0.0, d = 0.0, bx = 0.0, by = 0.0;  // Λ' = [[a, b], [b, d]], β' in world axes
+  double la = 0.0, lb = 0.0, ld = 0.0, bx = 0.0, by = 0.0;  // Λ' = [[la, lb], [lb, ld]], β' in world axes
   for (int i = nb - 1; i >= 0; --i) {
     const Rfe& r = model_.rfe(i);
-    const BodyKinematics& k = kin_[i];
-    RigidNode& nd = rigid_[i];
+    const BodyKinematics& k = d.kin[i];
+    RigidNode& nd = d.rigid[i];
     const double c = k.c, s = k.s, len = k.len, w = k.phi_dot, w2 = w * w;
     const double m = r.mass, S = r.firstMoment(0.0), I = r.inertiaAboutA(0.0);
     const double cc = c * c, ss = s * s, cs = c * s;
-    const double p = a * cc + 2.0 * b * cs + d * ss, rr = a * ss - 2.0 * b * cs + d * cc;
-    const double q = (d - a) * cs + b * (cc - ss);
+    const double p = la * cc + 2.0 * lb * cs + ld * ss, rr = la * ss - 2.0 * lb * cs + ld * cc;
+    const double q = (ld - la) * cs + lb * (cc - ss);
     const double c0 = -len * w2;
     const double t0 = c * bx + s * by + p * c0, t1 = -s * bx + c * by + q * c0;
-    const double* Q = Q_.data() + 4 * i;
+    const double* Q = d.Q.data() + 4 * i;
     const double rAe = c * Q[0] + s * Q[1] + S * w2, rAn = -s * Q[0] + c * Q[1];
     const double Bh01 = q * len, Bh11 = S + rr * len, Di11 = 1.0 / (I + rr * len * len);
     const double K01 = Bh01 * Di11, K11 = Bh11 * Di11;
@@ -100,25 +108,25 @@ void RecursiveFormulation::rigidBackwardLocked() {
     const double rho1 = Q[3] - len * t1;
     const double be = K01 * rho1 + t0 - rAe, bn = K11 * rho1 + t1 - rAn;
     finishNode(nd, c, s, len, c0, 0.0, 0.0, 0.0, Di11, 0.0, Bh01, 0.0, Bh11, 0.0, rho1, L00, L01, L11, be, bn);
-    a = nd.La, b = nd.Lb, d = nd.Ld, bx = nd.bx, by = nd.by;
+    la = nd.La, lb = nd.Lb, ld = nd.Ld, bx = nd.bx, by = nd.by;
   }
 }
 
 // Forward from A''_0 = a_top: a short serial chain (A'' only), the rest per rfe.
 template <bool Axial>
-void RecursiveFormulation::rigidForward(const Vec2& a_top, VecX& dy, int nt) {
+void RecursiveFormulation::rigidForward(const Vec2& a_top, VecX& dy, int nt, RecursiveData& d) const {
   const int nb = model_.bodies();
   double Ax = a_top.x(), Ay = a_top.y();
   double* out = dy.data() + nt;
   for (int i = 0; i < nb; ++i) {
-    const RigidNode& nd = rigid_[i];
+    const RigidNode& nd = d.rigid[i];
     if (Axial) {
       out[2 * i] = nd.U00 * Ax + nd.U01 * Ay + nd.u0;
       out[2 * i + 1] = nd.U10 * Ax + nd.U11 * Ay + nd.u1;
     } else {
       out[i] = nd.U10 * Ax + nd.U11 * Ay + nd.u1;
     }
-    reactions_.joint[i] = Vec2(-(nd.La * Ax + nd.Lb * Ay + nd.bx), -(nd.Lb * Ax + nd.Ld * Ay + nd.by));
+    d.reactions.joint[i] = Vec2(-(nd.La * Ax + nd.Lb * Ay + nd.bx), -(nd.Lb * Ax + nd.Ld * Ay + nd.by));
     const double x = nd.M00 * Ax + nd.M01 * Ay + nd.mx;
     Ay = nd.M10 * Ax + nd.M11 * Ay + nd.my;
     Ax = x;
@@ -126,7 +134,7 @@ void RecursiveFormulation::rigidForward(const Vec2& a_top, VecX& dy, int nt) {
 }
 
 template <int K, bool General>
-void RecursiveFormulation::backward() {
+void RecursiveFormulation::backward(RecursiveData& d) const {
   using M2K = Eigen::Matrix<double, 2, K>;
   using MKK = Eigen::Matrix<double, K, K>;
   using VK = Eigen::Matrix<double, K, 1>;
@@ -135,17 +143,17 @@ void RecursiveFormulation::backward() {
   Mat2 Lp = Mat2::Zero(), Tp = Mat2::Identity();
   Vec2 bp = Vec2::Zero();
   for (int i = nb - 1; i >= 0; --i) {
-    const BodyKinematics& b = kin_[i];
+    const BodyKinematics& b = d.kin[i];
     const Vec2 e = b.e(), nv = b.nrm();
-    const double* q = Q_.data() + 4 * i;
+    const double* q = d.Q.data() + 4 * i;
     Mat2 P;
     M2K B, G;
     MKK D;
     Vec2 rA;
     VK ru;
     if (General) {
-      const Mat4& M = M_[i];
-      const double* h = h_.data() + 4 * i;
+      const Mat4& M = d.M[i];
+      const double* h = d.h.data() + 4 * i;
       P = M.topLeftCorner<2, 2>();
       rA = Vec2(q[0] - h[0], q[1] - h[1]);
       B = M.block<2, K>(0, 4 - K);
@@ -170,11 +178,11 @@ void RecursiveFormulation::backward() {
     G.col(K - 1) = b.len * nv;
     if (K == 2) G.col(0) = e;
 
-    Node& nd = node_[i];
+    Node& nd = d.node[i];
     const M2K LG = Lp * G;
     const MKK Dh = D + G.transpose() * LG;
     const M2K Bh = B + LG;
-    const Vec2 c = bias_[i];
+    const Vec2 c = d.bias[i];
     const VK rho = ru - G.transpose() * (bp + Lp * c);
     const MKK Dinv = Dh.inverse();
     const M2K Kg = Bh * Dinv;
@@ -198,21 +206,21 @@ void RecursiveFormulation::backward() {
 }
 
 template <int K>
-void RecursiveFormulation::forward(const Vec2& a_top, VecX& dy, int nt) {
+void RecursiveFormulation::forward(const Vec2& a_top, VecX& dy, int nt, RecursiveData& d) const {
   using VK = Eigen::Matrix<double, K, 1>;
   const int nb = model_.bodies();
   Vec2 A = a_top;
   for (int i = 0; i < nb; ++i) {
-    const Node& nd = node_[i];
+    const Node& nd = d.node[i];
     const VK u = nd.Dinv.topLeftCorner<K, K>() * (nd.rho.head<K>() - nd.Bh.leftCols<K>().transpose() * A);
-    reactions_.joint[i] = -(nd.Lam * A + nd.beta);
+    d.reactions.joint[i] = -(nd.Lam * A + nd.beta);
     dy.segment<K>(nt + K * i) = u;
     A += nd.G.leftCols<K>() * u + nd.c;
   }
 }
 
 template <int K>
-Vec2 RecursiveFormulation::pinnedTipForce(const Vec2& a_top) {
+Vec2 RecursiveFormulation::pinnedTipForce(const Vec2& a_top, RecursiveData& d) const {
   using M2K = Eigen::Matrix<double, 2, K>;
   using VK = Eigen::Matrix<double, K, 1>;
   using MK2 = Eigen::Matrix<double, K, 2>;
@@ -221,8 +229,8 @@ Vec2 RecursiveFormulation::pinnedTipForce(const Vec2& a_top) {
   Vec2 A = a_top;
   Mat2 S = Mat2::Zero();
   for (int i = 0; i < nb; ++i) {
-    const Node& nd = node_[i];
-    const Mat2 Tn = i + 1 < nb ? node_[i + 1].T : Mat2::Identity();
+    const Node& nd = d.node[i];
+    const Mat2 Tn = i + 1 < nb ? d.node[i + 1].T : Mat2::Identity();
     const auto Dinv = nd.Dinv.topLeftCorner<K, K>();
     const M2K Bh = nd.Bh.leftCols<K>(), G = nd.G.leftCols<K>();
     const VK u = Dinv * (nd.rho.head<K>() - Bh.transpose() * A);
@@ -230,53 +238,54 @@ Vec2 RecursiveFormulation::pinnedTipForce(const Vec2& a_top) {
     A += G * u + nd.c;
     S += G * U;
   }
-  const BodyKinematics& last = kin_[nb - 1];
+  const BodyKinematics& last = d.kin[nb - 1];
   const Vec2 E = last.end() - model_.bottomPoint(), Ed = last.endVelocity();
   const Vec2 target = -2.0 * omega_ * Ed - omega_ * omega_ * E;
   const Vec2 F = S.inverse() * (target - A);
   for (int i = 0; i < nb; ++i) {
-    Node& nd = node_[i];
-    const Mat2 Tn = i + 1 < nb ? node_[i + 1].T : Mat2::Identity();
+    Node& nd = d.node[i];
+    const Mat2 Tn = i + 1 < nb ? d.node[i + 1].T : Mat2::Identity();
     nd.rho.head<K>() -= nd.G.leftCols<K>().transpose() * (Tn * F);
     nd.beta += nd.T * F;
   }
-  last_constraint_error_ = E.norm();
+  d.constraint_error = E.norm();
   return F;
 }
 
-void RecursiveFormulation::derivative(double t, const VecX& y, const PointMotion& top, VecX& dy) {
+void RecursiveFormulation::derivative(double t, const VecX& y, const PointMotion& top, VecX& dy,
+                                      FormulationData& data) const {
+  RecursiveData& d = dataOf<RecursiveData>(data);
   const int nb = model_.bodies(), nt = positionSize();
-  updateKinematics(y, top);
-  evaluateForces(t);
+  beginEvaluation(t, y, top, d);
   if (rigid_only_ && !pinned()) {
     if (k_ == 2) {
-      rigidBackwardAxial();
-      rigidForward<true>(top.a, dy, nt);
+      rigidBackwardAxial(d);
+      rigidForward<true>(top.a, dy, nt, d);
     } else {
-      rigidBackwardLocked();
-      rigidForward<false>(top.a, dy, nt);
+      rigidBackwardLocked(d);
+      rigidForward<false>(top.a, dy, nt, d);
     }
-    reactions_.joint[nb].setZero();
-    reactions_.top = reactions_.joint[0];
-    reactions_.bottom.setZero();
+    d.reactions.joint[nb].setZero();
+    d.reactions.top = d.reactions.joint[0];
+    d.reactions.bottom.setZero();
     dy.head(nt) = y.segment(nt, nt);
     return;
   }
-  if (!rigid_only_) generalMassBlocks(t);
+  if (!rigid_only_) rfeMassBlocks(model_, d.kin, t, d.M, d.h);
   if (k_ == 2) {
-    rigid_only_ ? backward<2, false>() : backward<2, true>();
+    rigid_only_ ? backward<2, false>(d) : backward<2, true>(d);
   } else {
-    rigid_only_ ? backward<1, false>() : backward<1, true>();
+    rigid_only_ ? backward<1, false>(d) : backward<1, true>(d);
   }
   Vec2 tip = Vec2::Zero();
-  if (pinned()) tip = k_ == 2 ? pinnedTipForce<2>(top.a) : pinnedTipForce<1>(top.a);
+  if (pinned()) tip = k_ == 2 ? pinnedTipForce<2>(top.a, d) : pinnedTipForce<1>(top.a, d);
   if (k_ == 2)
-    forward<2>(top.a, dy, nt);
+    forward<2>(top.a, dy, nt, d);
   else
-    forward<1>(top.a, dy, nt);
-  reactions_.joint[nb] = -tip;
-  reactions_.top = reactions_.joint[0];
-  reactions_.bottom = pinned() ? tip : Vec2::Zero();
+    forward<1>(top.a, dy, nt, d);
+  d.reactions.joint[nb] = -tip;
+  d.reactions.top = d.reactions.joint[0];
+  d.reactions.bottom = pinned() ? tip : Vec2::Zero();
   dy.head(nt) = y.segment(nt, nt);
 }
 

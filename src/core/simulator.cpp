@@ -43,7 +43,8 @@ Simulator::Simulator(std::shared_ptr<const Model> model, std::unique_ptr<TopMoti
     throw std::invalid_argument(error->what());
   formulation_ = makeFormulation(*model_, settings_);
   term_data_ = TermDataSet(*model_);
-  formulation_->setTermData(&term_data_);
+  data_ = formulation_->makeData();
+  data_->term_data = &term_data_;
   IntegratorOptions io;
   io.tolerance = settings_.tolerance;
   io.jacobian_interval = settings_.jacobian_interval;
@@ -55,8 +56,6 @@ Simulator::Simulator(std::shared_ptr<const Model> model, std::unique_ptr<TopMoti
   probe_y_.setZero(n);
   probe_a_.setZero(n);
   probe_x_.setZero(formulation_->positionSize());
-  lin_dy_.setZero(n);
-  last_rhs_y_.setZero(n);
   integrator_->reset(StateLayout{n, formulation_->positionSize()});
   kin_.resize(model_->bodies());
   const int nb = model_->bodies();
@@ -77,7 +76,7 @@ void Simulator::setInitialState(const Kinematics& kin, double t0) {
   reason_.clear();
   y_.setZero();
   formulation_->packState(kin, y_);
-  formulation_->kinematics(y_, kin_);
+  formulation_->kinematics(y_, PointMotion{kin[0].A, kin[0].A_dot, Vec2::Zero()}, kin_);
   term_data_.startRun(*model_, kin_);
   integrator_->restart();
   estimateHighestFrequency();
@@ -124,7 +123,7 @@ void Simulator::estimateHighestFrequency() {
   const Rk4 rk4;  // the reference scheme for implicit ones (stableStepEstimate)
   const Integrator& scheme = integrator_->explicitFixedStep() ? *integrator_ : static_cast<const Integrator&>(rk4);
   damped_step_ = largestStableStep(ritz, [&](Complex z) { return scheme.stabilityFunction(z); });
-  rhs(t_, y_, dy_);  // leave the formulation's last evaluation at the state
+  rhs(t_, y_, dy_);  // leave data_'s evaluation at the state
 }
 
 double Simulator::stableStepEstimate() const {
@@ -144,19 +143,12 @@ double Simulator::stableStepEstimate() const {
   return factor * std::min(undamped, damped_step_);
 }
 
-void Simulator::linearize(double t, const VecX& y) {
-  if (!(t == last_rhs_t_ && y == last_rhs_y_)) rhs(t, y, lin_dy_);
-  formulation_->linearize(t);
-}
-
 void Simulator::rhs(double t, const VecX& y, VecX& dy) {
-  last_rhs_t_ = t;
-  last_rhs_y_ = y;
   const PointMotion top = top_->at(t);
-  formulation_->derivative(t, y, top, dy);
+  formulation_->derivative(t, y, top, dy, *data_);
   // dW/dt: power of the top motion (force on rfe 0 at A_0 is -λ_0) and of the non-conservative terms
   // (summed by the formulation with the forces, at the same state).
-  dy[dy.size() - 1] = -formulation_->reactions().top.dot(top.v) + formulation_->lastTermPower();
+  dy[dy.size() - 1] = -data_->reactions.top.dot(top.v) + data_->term_power;
 }
 
 bool Simulator::step() {
@@ -165,7 +157,7 @@ bool Simulator::step() {
   ++steps_;
   t_ += settings_.dt;
   if (term_data_.any()) {
-    formulation_->kinematics(y_, kin_);
+    kinematics(kin_);
     term_data_.endStep(*model_, kin_);
     integrator_->forcesChanged();
   }
@@ -184,7 +176,7 @@ void Simulator::checkDivergence(bool stepped) {
   const bool finite = y_.allFinite();
   double err = 0.0;
   if (finite) {
-    err = formulation_->lastConstraintError();  // monitored at the last stage, free
+    err = data_->constraint_error;  // monitored at the last stage, free
     max_constraint_error_ = std::max(max_constraint_error_, err);
   }
   const double limit = settings_.max_constraint_error * model_->segmentLength();
@@ -195,7 +187,7 @@ void Simulator::checkDivergence(bool stepped) {
   int fast = -1;
   double turn = 0.0, stretch = 0.0;
   if (finite) {
-    const Kinematics& kin = formulation_->lastKinematics();
+    const Kinematics& kin = data_->kin;
     for (int i = 0; i < model_->bodies() && fast < 0; ++i) {
       turn = std::abs(kin[i].phi_dot) * settings_.dt;
       stretch = std::abs(kin[i].delta_dot) * settings_.dt / model_->rfe(i).length;
@@ -240,23 +232,23 @@ double Simulator::potentialEnergy(const Kinematics& kin) const {
 }
 
 double Simulator::totalEnergy() {
-  last_rhs_t_ = NAN;  // kineticEnergy() moves the formulation's kinematics
-  formulation_->kinematics(y_, kin_);
-  return formulation_->kineticEnergy(t_, y_) + potentialEnergy(kin_);
+  const PointMotion top = top_->at(t_);
+  formulation_->kinematics(y_, top, kin_);
+  return formulation_->kineticEnergy(t_, y_, top, *data_) + potentialEnergy(kin_);
 }
 
 double Simulator::energyDrift() { return (totalEnergy() - e0_ - work()) / std::max(std::abs(e0_), energy_scale_); }
 
 const LineOutputs& Simulator::outputs() {
   const int nb = model_->bodies();
-  formulation_->derivative(t_, y_, top_->at(t_), dy_);
-  last_rhs_t_ = NAN;
-  formulation_->kinematics(y_, kin_);
-  const Reactions& re = formulation_->reactions();
+  const PointMotion top = top_->at(t_);
+  formulation_->derivative(t_, y_, top, dy_, *data_);
+  const Kinematics& kin = data_->kin;
+  const Reactions& re = data_->reactions;
   out_.t = t_;
   double tmax = 0.0;
   for (int i = 0; i < nb; ++i) {
-    const BodyKinematics& b = kin_[i];
+    const BodyKinematics& b = kin[i];
     const Rfe& r = model_->rfe(i);
     out_.points[i] = b.A;
     out_.angles[i] = b.phi;
@@ -267,17 +259,17 @@ const LineOutputs& Simulator::outputs() {
                               : re.joint[i].dot(b.e());  // tension at A_i from the joint reaction
     tmax = std::max(tmax, out_.axial_force[i]);
   }
-  out_.points[nb] = kin_[nb - 1].end();
+  out_.points[nb] = kin[nb - 1].end();
   for (int i = 1; i < nb; ++i)
-    out_.bending_moment[i - 1] = model_->bendingStiffness() * (kin_[i].phi - kin_[i - 1].phi) +
-                                 model_->bendingDamping() * (kin_[i].phi_dot - kin_[i - 1].phi_dot);
+    out_.bending_moment[i - 1] = model_->bendingStiffness() * (kin[i].phi - kin[i - 1].phi) +
+                                 model_->bendingDamping() * (kin[i].phi_dot - kin[i - 1].phi_dot);
   out_.top_force = re.top;
   out_.bottom_force = re.bottom;
   out_.top_tension = re.top.norm();
   out_.bottom_tension = out_.axial_force[nb - 1];
   out_.max_tension = tmax;
-  out_.kinetic_energy = formulation_->kineticEnergy(t_, y_);
-  out_.potential_energy = potentialEnergy(kin_);
+  out_.kinetic_energy = formulation_->kineticEnergy(t_, y_, top, *data_);
+  out_.potential_energy = potentialEnergy(kin);
   out_.work_in = work();
   out_.constraint_error = constraintError();
   return out_;

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "riser_sim/chain_kinematics.h"
 #include "riser_sim/forces/seabed.h"
 
 namespace riser_sim {
@@ -56,19 +57,7 @@ StaticResidual::StaticResidual(const Model& m, const StaticsProblem& p, const St
 }
 
 void StaticResidual::toKinematics(const VecX& x, Kinematics& kin) const {
-  Vec2 A = prob_.top;
-  for (int i = 0; i < model_.bodies(); ++i) {
-    BodyKinematics& b = kin[i];
-    b.A = A;
-    b.A_dot.setZero();
-    b.delta = axial_ ? x[per_ * i] : 0.0;
-    b.phi = x[per_ * i + per_ - 1];
-    b.delta_dot = b.phi_dot = 0.0;
-    b.c = std::cos(b.phi);
-    b.s = std::sin(b.phi);
-    b.len = model_.rfe(i).length + b.delta;
-    A = b.end();
-  }
+  chainKinematics(model_, prob_.top, Vec2::Zero(), x.data(), nullptr, kin);  // the first per_ (n+1) entries
 }
 
 void StaticResidual::fromKinematics(const Kinematics& kin, VecX& x) const {

@@ -73,7 +73,7 @@ VecX randomState(const Model& m, std::mt19937& rng, bool consistent) {
 
 double potential(const ForceTerm& term, const Model& m, const AbsoluteFormulation& f, const VecX& y) {
   Kinematics kin(m.bodies());
-  f.kinematics(y, kin);
+  f.kinematics(y, PointMotion(), kin);  // absolute: A_0 is in y
   return term.potentialEnergy(m, nullptr, kin);
 }
 
@@ -88,7 +88,7 @@ TEST(Formulation, ForcesAreMinusGradientOfPotential) {
     VecX y = randomState(*model, rng, false);
     y.tail(nq).setZero();  // no velocity: damping off, the forces are the conservative ones
     Kinematics kin(model->bodies());
-    f.kinematics(y, kin);
+    f.kinematics(y, PointMotion(), kin);  // absolute: A_0 is in y
     for (const auto& term : model->terms()) {
       VecX Q = VecX::Zero(nq);
       term->addForces(*model, nullptr, kin, 0.0, Q);
@@ -112,11 +112,12 @@ TEST(Formulation, KineticEnergyIsSumOverRigidParts) {
   const Scene s = smallScene();
   auto model = buildModel(s);
   AbsoluteFormulation f(*model, 50.0);
+  const auto fd = f.makeData();
   std::mt19937 rng(11);
   for (int trial = 0; trial < 5; ++trial) {
     const VecX y = randomState(*model, rng, false);
     Kinematics kin(model->bodies());
-    f.kinematics(y, kin);
+    f.kinematics(y, PointMotion(), kin);  // absolute: A_0 is in y
     double T = 0.0;
     for (int i = 0; i < model->bodies(); ++i) {
       const Rfe& r = model->rfe(i);
@@ -126,23 +127,24 @@ TEST(Formulation, KineticEnergyIsSumOverRigidParts) {
              0.5 * part.inertia * kin[i].phi_dot * kin[i].phi_dot;
       }
     }
-    EXPECT_NEAR(f.kineticEnergy(0.0, y), T, kEnergyRelTol * T);
+    EXPECT_NEAR(f.kineticEnergy(0.0, y, PointMotion(), *fd), T, kEnergyRelTol * T);
   }
 }
 
 // M(q) v̇ + Ṁ v - ∂T/∂q = Q + constraint forces, with M and the velocity terms taken from finite
-// differences of Formulation::kineticEnergy and the joint forces from reactions().
+// differences of Formulation::kineticEnergy and the joint forces from the data's reactions.
 TEST(Formulation, AccelerationsSatisfyLagrangeEquations) {
   const Scene s = smallScene();
   auto model = buildModel(s);
   AbsoluteFormulation f(*model, 50.0);
+  const auto fd = f.makeData();
   const int nq = model->dofs(), nb = model->bodies();
   std::mt19937 rng(3);
   const PointMotion top{Vec2::Zero(), Vec2::Zero(), Vec2::Zero()};
   auto T = [&](const VecX& q, const VecX& v) {
     VecX y(2 * nq);
     y << q, v;
-    return f.kineticEnergy(0.0, y);
+    return f.kineticEnergy(0.0, y, top, *fd);
   };
   auto massMatrix = [&](const VecX& q) {
     MatX M(nq, nq);
@@ -161,11 +163,11 @@ TEST(Formulation, AccelerationsSatisfyLagrangeEquations) {
     const VecX y = randomState(*model, rng, trial > 0);
     const VecX q = y.head(nq), v = y.tail(nq);
     VecX dy(2 * nq);
-    f.derivative(0.0, y, top, dy);
+    f.derivative(0.0, y, top, dy, *fd);
     const VecX acc = dy.tail(nq);
-    const Reactions re = f.reactions();
+    const Reactions re = fd->reactions;
     Kinematics kin(nb);
-    f.kinematics(y, kin);
+    f.kinematics(y, PointMotion(), kin);  // absolute: A_0 is in y
     VecX Q = VecX::Zero(nq);
     for (const auto& term : model->terms()) term->addForces(*model, nullptr, kin, 0.0, Q);
     for (int i = 0; i < nb; ++i) {  // joint forces: -λ_i at A_i, +λ_{i+1} at the end of rfe i
@@ -196,12 +198,13 @@ TEST(Formulation, ConstraintAccelerationsVanish) {
   const Scene s = smallScene();
   auto model = buildModel(s);
   AbsoluteFormulation f(*model, 50.0);
+  const auto fd = f.makeData();
   const int nq = model->dofs(), nb = model->bodies();
   std::mt19937 rng(5);
   const PointMotion top{Vec2::Zero(), Vec2::Zero(), Vec2::Zero()};
   auto jointVelocityGaps = [&](const VecX& y) {
     Kinematics kin(nb);
-    f.kinematics(y, kin);
+    f.kinematics(y, PointMotion(), kin);  // absolute: A_0 is in y
     VecX g(2 * nb);
     g.head<2>() = top.v - kin[0].A_dot;
     for (int k = 1; k < nb; ++k) g.segment<2>(2 * k) = kin[k - 1].endVelocity() - kin[k].A_dot;
@@ -212,7 +215,7 @@ TEST(Formulation, ConstraintAccelerationsVanish) {
     EXPECT_LT(f.constraintError(y, top), 1e-12);
     EXPECT_LT(jointVelocityGaps(y).lpNorm<Eigen::Infinity>(), 1e-12);
     VecX dy(2 * nq);
-    f.derivative(0.0, y, top, dy);
+    f.derivative(0.0, y, top, dy, *fd);
     const double eps = 1e-6;
     const VecX cdd = (jointVelocityGaps(y + eps * dy) - jointVelocityGaps(y - eps * dy)) / (2 * eps);
     std::printf("[formulation] constraint acceleration %.2e m/s^2 (accelerations up to %.2e)\n",
@@ -261,7 +264,7 @@ void freeFall(const std::string& formulation, bool bending) {
   EXPECT_LT(worst, kFreeFallForceRelTol * weight);
   ASSERT_TRUE(sim.advanceTo(1.0)) << sim.divergenceReason();
   Kinematics now(model->bodies());
-  sim.formulation().kinematics(sim.state(), now);
+  sim.kinematics(now);
   double shape = 0.0;
   const Vec2 drop = sim.topMotion().at(sim.time()).p;
   for (int i = 0; i < model->bodies(); ++i) shape = std::max(shape, (now[i].end() - drop - kin[i].end()).norm());

@@ -85,6 +85,7 @@ void compareAtRandomStates(const Case& c) {
   AbsoluteFormulation abs(*model, 50.0);
   IndependentFormulation ind(*model, 50.0);
   RecursiveFormulation rec(*model, 50.0);
+  const auto da = abs.makeData(), di = ind.makeData(), dr = rec.makeData();
   const int nt = ind.positionSize(), nb = model->bodies(), nq = model->dofs();
   std::mt19937 rng(1234);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
@@ -103,11 +104,11 @@ void compareAtRandomStates(const Case& c) {
     PointMotion top{Vec2(3.0 * u(rng), 2.0 * u(rng)), Vec2(u(rng), u(rng)), Vec2(2.0 * u(rng), 2.0 * u(rng))};
     const double t = 1.5;
     VecX dyi(2 * nt), dyr(2 * nt), ya(2 * nq), dya(2 * nq);
-    ind.derivative(t, y, top, dyi);
-    rec.derivative(t, y, top, dyr);
+    ind.derivative(t, y, top, dyi, *di);
+    rec.derivative(t, y, top, dyr, *dr);
     ya.setZero();
-    abs.packState(ind.lastKinematics(), ya);
-    abs.derivative(t, ya, top, dya);
+    abs.packState(di->kin, ya);
+    abs.derivative(t, ya, top, dya, *da);
 
     // Absolute accelerations in independent order.
     VecX dya_theta(nt);
@@ -116,15 +117,15 @@ void compareAtRandomStates(const Case& c) {
       dya_theta[ind.dofsPerRfe() * i + ind.dofsPerRfe() - 1] = dya[nq + 4 * i + kPhi];
     }
     const VecX ai = dyi.tail(nt), ar = dyr.tail(nt);
-    auto joints = [&](const Formulation& f) {
+    auto joints = [&](const FormulationData& d) {
       VecX v(2 * (nb + 1));
-      for (int k = 0; k <= nb; ++k) v.segment<2>(2 * k) = f.reactions().joint[k];
+      for (int k = 0; k <= nb; ++k) v.segment<2>(2 * k) = d.reactions.joint[k];
       return v;
     };
     const double e_ri = relDiff(ai, ar), e_ai = relDiff(ai, dya_theta);
-    const double j_ri = relDiff(joints(ind), joints(rec)), j_ai = relDiff(joints(ind), joints(abs));
-    const double top_ri = (ind.reactions().top - rec.reactions().top).norm() / ind.reactions().top.norm();
-    const double top_ai = (ind.reactions().top - abs.reactions().top).norm() / ind.reactions().top.norm();
+    const double j_ri = relDiff(joints(*di), joints(*dr)), j_ai = relDiff(joints(*di), joints(*da));
+    const double top_ri = (di->reactions.top - dr->reactions.top).norm() / di->reactions.top.norm();
+    const double top_ai = (di->reactions.top - da->reactions.top).norm() / di->reactions.top.norm();
     EXPECT_LT(e_ri, kRoundOffRel) << c.label << " trial " << trial;
     EXPECT_LT(e_ai, kRoundOffRel) << c.label << " trial " << trial;
     EXPECT_LT(j_ri, kRoundOffRel) << c.label << " trial " << trial;
@@ -132,14 +133,15 @@ void compareAtRandomStates(const Case& c) {
     EXPECT_LT(top_ri, kRoundOffRel) << c.label << " trial " << trial;
     EXPECT_LT(top_ai, kRoundOffRel) << c.label << " trial " << trial;
     if (c.pinned) {
-      const double b = (ind.reactions().bottom - rec.reactions().bottom).norm() / ind.reactions().bottom.norm();
-      const double ba = (ind.reactions().bottom - abs.reactions().bottom).norm() / ind.reactions().bottom.norm();
+      const double b = (di->reactions.bottom - dr->reactions.bottom).norm() / di->reactions.bottom.norm();
+      const double ba = (di->reactions.bottom - da->reactions.bottom).norm() / di->reactions.bottom.norm();
       EXPECT_LT(b, kRoundOffRel) << c.label;
       EXPECT_LT(ba, kRoundOffRel) << c.label;
       worst = std::max({worst, b, ba});
     }
     // Kinetic energy: the same state, the same T.
-    const double Ti = ind.kineticEnergy(t, y), Tr = rec.kineticEnergy(t, y), Ta = abs.kineticEnergy(t, ya);
+    const double Ti = ind.kineticEnergy(t, y, top, *di), Tr = rec.kineticEnergy(t, y, top, *dr),
+                 Ta = abs.kineticEnergy(t, ya, top, *da);
     EXPECT_NEAR(Ti, Ta, kRoundOffRel * Ta) << c.label;
     EXPECT_NEAR(Tr, Ta, kRoundOffRel * Ta) << c.label;
     worst = std::max({worst, e_ri, e_ai, j_ri, j_ai, top_ri, top_ai});
@@ -197,7 +199,7 @@ TEST(FormulationsAgree, Table1EndPositionAfter20s) {
 }
 
 // Conservative case (no damping, fixed top): E(t) - E(0) stays at RK4's truncation level; with the top
-// moving, E(t) - E(0) - W(t) with W the work of the top force reactions().top (checks that reaction).
+// moving, E(t) - E(0) - W(t) with W the work of the top force (the data's reactions.top; checks that reaction).
 // Bound: 1e-7 of m g L over 5 s at h = 1e-4 (measured ≤ 2e-15 fixed, see the printout when moving).
 constexpr double kEnergyDriftTol = 1e-7;
 
@@ -281,11 +283,11 @@ TEST(FormulationsAgree, RecursiveJointGapIsExactlyZero) {
   EXPECT_EQ(sim->outputs().constraint_error, 0.0);
   AbsoluteFormulation abs(sim->model(), 50.0);
   VecX ya = VecX::Zero(2 * sim->model().dofs());
-  abs.packState(sim->formulation().lastKinematics(), ya);
+  abs.packState(sim->formulationData().kin, ya);
   EXPECT_EQ(abs.constraintError(ya, sim->topMotion().at(sim->time())), 0.0);
   // Output points are the chain's: every rfe ends exactly where the next begins.
   const LineOutputs& o = sim->outputs();
-  const Kinematics& kin = sim->formulation().lastKinematics();
+  const Kinematics& kin = sim->formulationData().kin;
   for (int i = 0; i + 1 < sim->model().bodies(); ++i) EXPECT_EQ(kin[i].end(), o.points[i + 1]);
 }
 

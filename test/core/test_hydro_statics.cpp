@@ -123,7 +123,7 @@ TEST(HydroStatics, UniformCurrentGivesTheDragCableShape) {
     {
       const Model& model = sim->model();
       Kinematics kin(model.bodies());
-      sim->formulation().kinematics(sim->state(), kin);
+      sim->kinematics(kin);
       VecX Q = VecX::Zero(model.dofs());
       ASSERT_NE(model.findTerm("morison_drag"), nullptr);
       model.findTerm("morison_drag")->addForces(model, nullptr, kin, 0.0, Q);

@@ -246,7 +246,7 @@ Timed timeMode(const Scene& scene, int index, double amplitude, int cycles) {
   const double t_end = (cycles + 0.6) * mode.period;
   while (sim->time() < t_end) {
     if (!sim->step()) break;
-    sim->formulation().kinematics(sim->state(), kin);
+    sim->kinematics(kin);
     double c = 0.0;
     for (int i = 0; i < model.bodies(); ++i) c += (kin[i].A - r.points[i]).dot(mode.displacement[i]);
     c += (kin.back().end() - r.points.back()).dot(mode.displacement.back());

@@ -59,7 +59,7 @@ Swing swing(double theta0, bool from_statics) {
   x.reserve(t.capacity());
   while (sim->time() < 2.1 * out.reference) {
     if (!sim->step()) break;
-    sim->formulation().kinematics(sim->state(), kin);
+    sim->kinematics(kin);
     t.push_back(sim->time());
     x.push_back(kin.back().end().x() - kin[0].A.x());
   }

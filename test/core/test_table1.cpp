@@ -49,7 +49,7 @@ Trajectory simulate(int n, double dt, bool axial) {
   const int samples = int(std::lround(kDuration / kSample));
   for (int k = 0; k <= samples; ++k) {
     EXPECT_TRUE(sim->advanceTo(k * kSample)) << sim->divergenceReason();
-    sim->formulation().kinematics(sim->state(), kin);
+    sim->kinematics(kin);
     const Vec2 e = kin.back().end() - kin[0].A;
     tr.t.push_back(sim->time());
     tr.x.push_back(e.x());

@@ -52,7 +52,7 @@ TEST(TermData, SimulatorsSharingAModelRunIndependently) {
   ASSERT_NE(bed, nullptr);
   const int contacts0 = bed->contacts(*shared, [&] {
     Kinematics kin(shared->bodies());
-    a->formulation().kinematics(a->state(), kin);
+    a->kinematics(kin);
     return kin;
   }());
   int b_contacts_min = contacts0, b_contacts_max = contacts0;
@@ -67,7 +67,7 @@ TEST(TermData, SimulatorsSharingAModelRunIndependently) {
     }
     if (k % 100 == 0) {
       Kinematics kin(shared->bodies());
-      b->formulation().kinematics(b->state(), kin);
+      b->kinematics(kin);
       const int c = bed->contacts(*shared, kin);
       b_contacts_min = std::min(b_contacts_min, c);
       b_contacts_max = std::max(b_contacts_max, c);
@@ -103,7 +103,7 @@ TEST(TermData, FusedForcesAndPowerEqualSeparateCalls) {
     ASSERT_TRUE(sim->advanceTo(0.5));  // moving: every velocity term is non-zero
     const Model& model = sim->model();
     Kinematics kin(model.bodies());
-    sim->formulation().kinematics(sim->state(), kin);
+    sim->kinematics(kin);
     int checked = 0;
     for (const auto& term : model.terms()) {
       VecX Q1 = VecX::Zero(model.dofs()), Q2 = VecX::Zero(model.dofs());

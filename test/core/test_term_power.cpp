@@ -76,12 +76,12 @@ TEST(TermPower, ForcesPowerIsMinusPotentialRatePlusReportedPower) {
     const VecX y = randomMotion(*model, rng);
     const double t = 0.3 * trial;
     Kinematics kin(model->bodies()), kp(model->bodies()), km(model->bodies());
-    f.kinematics(y, kin);
+    f.kinematics(y, PointMotion(), kin);
     VecX yp = y, ym = y;
     yp.head(nq) += kFdStep * y.tail(nq);
     ym.head(nq) -= kFdStep * y.tail(nq);
-    f.kinematics(yp, kp);
-    f.kinematics(ym, km);
+    f.kinematics(yp, PointMotion(), kp);
+    f.kinematics(ym, PointMotion(), km);
     for (const auto& term : model->terms()) {
       if (term->hasInertia()) continue;
       VecX Q = VecX::Zero(nq);
