@@ -108,6 +108,18 @@ class Master:
         return xmlrpc.client.ServerProxy(uri).getPid(CALLER)[2]
 
 
+def write_junit(suite_name, results, path):
+    """JUnit file of (name, failure or None, seconds) results, counted by catkin_test_results."""
+    suite = ET.Element("testsuite", name=suite_name, tests=str(len(results)),
+                       failures=str(sum(1 for _, f, _ in results if f)), errors="0")
+    for name, failure, secs in results:
+        case = ET.SubElement(suite, "testcase", classname="riser_sim." + suite_name, name=name, time="%.2f" % secs)
+        if failure:
+            ET.SubElement(case, "failure", message=failure.split("\n")[0]).text = failure
+    os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
+    ET.ElementTree(suite).write(path, encoding="utf-8", xml_declaration=True)
+
+
 def sockets_of(pid):
     """(proto, local address, port) of every TCP listening and UDP socket the process holds."""
     inodes = set()
@@ -298,14 +310,7 @@ def main():
         print("[master_restart] the node's XML-RPC server listens on %s (xmlrpcpp binds every interface)"
               % ctx["xmlrpc_bind"])
 
-    suite = ET.Element("testsuite", name="master_restart", tests=str(len(results)),
-                       failures=str(sum(1 for _, f, _ in results if f)), errors="0")
-    for name, failure, secs in results:
-        case = ET.SubElement(suite, "testcase", classname="riser_sim.master_restart", name=name, time="%.2f" % secs)
-        if failure:
-            ET.SubElement(case, "failure", message=failure.split("\n")[0]).text = failure
-    os.makedirs(os.path.dirname(os.path.abspath(a.xml)), exist_ok=True)
-    ET.ElementTree(suite).write(a.xml, encoding="utf-8", xml_declaration=True)
+    write_junit("master_restart", results, a.xml)
     failed = [n for n, f, _ in results if f]
     if failed or a.keep:
         print("[master_restart] logs kept in %s" % tmp)

@@ -16,10 +16,9 @@ import sys
 import tempfile
 import time
 import traceback
-import xml.etree.ElementTree as ET
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from test_master_restart import Master, Procs, free_port, wait_for  # noqa: E402
+from test_master_restart import Master, Procs, free_port, wait_for, write_junit  # noqa: E402
 
 
 def main():
@@ -100,14 +99,7 @@ def main():
     finally:
         procs.stop_all()
 
-    suite = ET.Element("testsuite", name="relaunch_scene", tests=str(len(results)),
-                       failures=str(sum(1 for _, f, _ in results if f)), errors="0")
-    for name, failure, secs in results:
-        case = ET.SubElement(suite, "testcase", classname="riser_sim.relaunch_scene", name=name, time="%.2f" % secs)
-        if failure:
-            ET.SubElement(case, "failure", message=failure.split("\n")[0]).text = failure
-    os.makedirs(os.path.dirname(os.path.abspath(a.xml)), exist_ok=True)
-    ET.ElementTree(suite).write(a.xml, encoding="utf-8", xml_declaration=True)
+    write_junit("relaunch_scene", results, a.xml)
     failed = [n for n, f, _ in results if f]
     if failed:
         print("[relaunch_scene] logs kept in %s" % tmp)
