@@ -104,7 +104,7 @@ TEST(Cli, Dopri5UnderflowMessageIsFinite) {
   EXPECT_EQ(r.err.find("reduce solver.dt"), std::string::npos) << "a smaller output step does not help: " << r.err;
 }
 
-// A finished run whose energy balance is off says so (summary "warning", stderr) but keeps exit 0; a
+// A finished run whose energy balance is off says so (status "warning" with the reason, stderr), exit 0; a
 // resolved run has no warning. rosenbrock2 at h = 0.02 s on the J-lay damps its unresolved axial modes
 // and loses 12 % of m g L (its top tension is 74 % off); midpoint at the same h closes to 2e-7.
 TEST(Cli, UnresolvedRunWarnsOnEnergyBalance) {
@@ -112,11 +112,13 @@ TEST(Cli, UnresolvedRunWarnsOnEnergyBalance) {
                            "--duration 10 --summary --quiet";
   const CliRun bad = runCli("--scene " + jlay + " --set solver.integrator=rosenbrock2");
   EXPECT_EQ(bad.code, 0) << bad.err;
+  EXPECT_NE(bad.out.find("\"status\":\"warning\""), std::string::npos) << bad.out;
   EXPECT_NE(bad.out.find("\"warning\":\"energy balance off by"), std::string::npos) << bad.out;
   EXPECT_NE(bad.err.find("warning: energy balance off by"), std::string::npos) << bad.err;
   const CliRun good = runCli("--scene " + jlay + " --set solver.integrator=midpoint");
   EXPECT_EQ(good.code, 0) << good.err;
   EXPECT_EQ(good.out.find("warning"), std::string::npos) << good.out;
+  EXPECT_NE(good.out.find("\"status\":\"ok\""), std::string::npos) << good.out;
 }
 
 // catkin_add_gtest links gtest without gtest_main here; a main of our own works either way.
