@@ -35,6 +35,7 @@ add_library(riser_sim_core
   src/core/modal.cpp
   src/core/scene.cpp
   src/core/run_builder.cpp
+  src/core/scene_sections.cpp
   src/core/scene_yaml.cpp
 )
 target_include_directories(riser_sim_core PUBLIC include ${EIGEN3_INCLUDE_DIR})

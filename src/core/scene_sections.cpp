@@ -1,0 +1,341 @@
+// Scene sections: YAML tree -> riser_sim::Scene, one small parse function per section (see
+// kSections at the bottom; adding a section = one function + one table row). Every error is a
+// SceneError naming the full key path. The accepted keys are documented in docs/scene_keys.md.
+// Reading files and --set overrides: scene_yaml.cpp.
+#include "riser_sim/scene_yaml.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "riser_sim/integrator.h"
+#include "riser_sim/solver_setup.h"
+#include "scene_section.h"
+
+namespace riser_sim {
+
+std::string unknownKeyMessage(const std::string& key, const std::vector<std::string>& accepted) {
+  for (const auto& a : accepted)
+    if (editDistance(key, a) <= 2 && key.size() > 2) return "unknown key (did you mean '" + a + "'?)";
+  return "unknown key (accepted: " + join(accepted) + ")";
+}
+
+namespace {
+
+// ---- sections ----
+
+// line: geometry + material, or EA / EI / mass_per_length directly (never both).
+void parseCrossSection(const Section& line, Scene& s) {
+  const bool geometry = line.has("youngs_modulus") || line.has("density");
+  std::string direct_key;
+  for (const char* k : {"EA", "EI", "mass_per_length"})
+    if (direct_key.empty() && line.has(k)) direct_key = k;
+  if (geometry && !direct_key.empty())
+    throw SceneError(line.key(direct_key),
+                     "cannot be combined with youngs_modulus/density: give either outer_diameter, inner_diameter, "
+                     "youngs_modulus and density, or EA, EI and mass_per_length");
+  if (!geometry && direct_key.empty()) {
+    if (line.has("outer_diameter")) line.at("youngs_modulus");  // throws "line.youngs_modulus: missing ..."
+    throw SceneError("line", "missing cross-section properties: give outer_diameter, youngs_modulus and density, "
+                             "or EA, EI and mass_per_length");
+  }
+
+  const double outer = line.number("outer_diameter", 0.0);
+  const double inner = line.number("inner_diameter", 0.0);
+  if (geometry || line.has("outer_diameter")) requirePositive(line.key("outer_diameter"), line.number("outer_diameter"));
+  requireNonNegative(line.key("inner_diameter"), inner);
+  if (line.has("inner_diameter") && !line.has("outer_diameter")) line.at("outer_diameter");
+  if (inner > 0.0 && !(inner < outer))
+    throw SceneError(line.key("inner_diameter"), "must be smaller than line.outer_diameter (" + formatNumber(outer) +
+                                                     " m), got " + formatNumber(inner));
+
+  if (geometry) {
+    const double E = line.number("youngs_modulus");
+    requirePositive(line.key("youngs_modulus"), E);
+    const double rho = line.number("density");
+    requirePositive(line.key("density"), rho);
+    s.line = LineProperties::fromGeometry(outer, inner, E, rho);
+    // Each value > 0 and yet a product may round to 0 (1e-200 m): name the key that does it.
+    if (!(s.line.wallArea() > 0.0))
+      throw SceneError(line.key(M_PI / 4.0 * outer * outer > 0.0 ? "inner_diameter" : "outer_diameter"),
+                       "leaves a wall area of 0 (rounds to 0 in double precision)");
+    if (!(s.line.mass_per_length > 0.0))
+      throw SceneError(line.key("density"), "is too small: mass per length rounds to 0");
+    if (s.options.axial_flexibility && !(s.line.EA > 0.0))
+      throw SceneError(line.key("youngs_modulus"), "is too small: EA rounds to 0");
+  } else {
+    s.line = LineProperties();
+    s.line.outer_diameter = outer;
+    s.line.inner_diameter = inner;
+    s.line.mass_per_length = line.number("mass_per_length");
+    requirePositive(line.key("mass_per_length"), s.line.mass_per_length);
+    // EA is only needed by an extensible line, EI only with bending springs.
+    s.line.EA = s.options.axial_flexibility ? line.number("EA") : line.number("EA", 0.0);
+    if (s.options.axial_flexibility) requirePositive(line.key("EA"), s.line.EA);
+    requireNonNegative(line.key("EA"), s.line.EA);
+    s.line.EI = s.options.bending ? line.number("EI") : line.number("EI", 0.0);
+    requireNonNegative(line.key("EI"), s.line.EI);
+  }
+}
+
+void parseLine(const Section& root, Scene& s) {
+  if (!root.has("line")) throw SceneError("line", "missing required section (needs at least length, elements "
+                                                  "and the cross-section properties)");
+  const Section line = root.section(
+      "line", {"length", "elements", "outer_diameter", "inner_diameter", "youngs_modulus", "density", "EA", "EI",
+               "mass_per_length", "end_mass", "bending", "axial_flexibility", "axial_damping", "bending_damping"});
+  s.length = line.number("length");
+  requirePositive(line.key("length"), s.length);
+  s.elements = line.integer("elements");
+  if (s.elements < 1) throw SceneError(line.key("elements"), "must be >= 1, got " + std::to_string(s.elements));
+  if (s.elements > kMaxSceneElements)
+    throw SceneError(line.key("elements"), "must be <= " + std::to_string(kMaxSceneElements) + ", got " +
+                                               std::to_string(s.elements) + " (the static initial state is a dense "
+                                               "solve: O(n^2) memory, O(n^3) time)");
+  s.options.bending = line.boolean("bending", true);
+  s.options.axial_flexibility = line.boolean("axial_flexibility", true);
+
+  parseCrossSection(line, s);
+  s.line.axial_damping = line.number("axial_damping", 0.0);
+  requireNonNegative(line.key("axial_damping"), s.line.axial_damping);
+  s.line.bending_damping = line.number("bending_damping", 0.0);
+  requireNonNegative(line.key("bending_damping"), s.line.bending_damping);
+  s.end_mass = line.number("end_mass", 0.0);
+  requireNonNegative(line.key("end_mass"), s.end_mass);
+}
+
+void parseKnots(const Section& motion, TopMotionSpec& top) {
+  const std::string key = motion.key("knots");
+  const YAML::Node knots = motion.at("knots");
+  if (!knots.IsSequence() || knots.size() == 0)
+    throw SceneError(key, "expected a non-empty list of [t, [vx, vy]], got " + describe(knots));
+  top.knots.clear();
+  for (size_t i = 0; i < knots.size(); ++i) {
+    const std::string k = key + "[" + std::to_string(i) + "]";
+    const YAML::Node knot = knots[i];
+    if (!knot.IsSequence() || knot.size() != 2) throw SceneError(k, "expected [t, [vx, vy]], got " + describe(knot));
+    const double t = toNumber(knot[0], k + "[0]");
+    if (i > 0 && !(t > top.knots.back().t))
+      throw SceneError(k, "knot times must increase, got " + formatNumber(t) + " after " +
+                              formatNumber(top.knots.back().t));
+    top.knots.push_back({t, toVec2(knot[1], k + "[1]")});
+  }
+}
+
+void parseTop(const Section& root, Scene& s) {
+  const Section top = root.section("top", {"position", "motion"});
+  s.top = TopMotionSpec();
+  s.top.position = top.vec2("position", Vec2::Zero());
+  const Section motion = top.section("motion", {"type", "amplitude", "period", "phase", "knots"});
+  s.top.type = motion.choice("type", MotionKind::kFixed);
+  // Keys of the other motion types are type-checked but ignored (so --set top.motion.type=... just works).
+  const bool sinusoid = s.top.type == MotionKind::kSinusoid;
+  s.top.amplitude = sinusoid ? motion.vec2("amplitude") : motion.vec2("amplitude", Vec2::Zero());
+  s.top.period = sinusoid ? motion.number("period") : motion.number("period", 1.0);
+  requirePositive(motion.key("period"), s.top.period);
+  s.top.phase = motion.number("phase", 0.0);
+  if (s.top.type == MotionKind::kVelocityProfile || motion.has("knots")) parseKnots(motion, s.top);
+}
+
+void parseBottom(const Section& root, Scene& s) {
+  const Section bottom = root.section("bottom", {"type", "position"});
+  const std::string type = bottom.choice("type", "free", {"free", "pinned"});
+  s.bottom = type == "pinned" ? BottomBoundary::kPinned : BottomBoundary::kFree;
+  s.bottom_point = s.bottom == BottomBoundary::kPinned ? bottom.vec2("position")
+                                                        : bottom.vec2("position", Vec2::Zero());
+}
+
+void parseInitial(const Section& root, Scene& s) {
+  const Section initial = root.section("initial", {"type", "end_dx", "angle", "tolerance", "end_force"});
+  s.initial = InitialSpec();
+  s.initial.type = initial.choice("type", InitialKind::kHanging);
+  s.initial.end_dx = s.initial.type == InitialKind::kDisplaced ? initial.number("end_dx") : initial.number("end_dx", 0.0);
+  s.initial.angle = initial.number("angle", -90.0) * kDegToRad;
+  s.initial.tolerance = initial.number("tolerance", 1e-9);
+  requirePositive(initial.key("tolerance"), s.initial.tolerance);
+  s.initial.end_force = initial.choice("end_force", EndForceKind::kRelease);
+}
+
+void parseCurrent(const Section& env, Scene& s) {
+  const Section cur = env.section("current", {"velocity", "acceleration", "profile"});
+  CurrentSpec& c = s.water.current;
+  c = CurrentSpec();
+  c.velocity = cur.vec2("velocity", Vec2::Zero());
+  c.acceleration = cur.vec2("acceleration", Vec2::Zero());
+  if (!cur.has("profile")) return;
+  const std::string key = cur.key("profile");
+  const YAML::Node prof = cur.at("profile");
+  if (!prof.IsSequence() || prof.size() == 0)
+    throw SceneError(key, "expected a non-empty list of [depth, vx], got " + describe(prof));
+  for (size_t i = 0; i < prof.size(); ++i) {
+    const std::string k = key + "[" + std::to_string(i) + "]";
+    const YAML::Node p = prof[i];
+    if (!p.IsSequence() || p.size() != 2) throw SceneError(k, "expected [depth, vx], got " + describe(p));
+    const double d = toNumber(p[0], k + "[0]");
+    requireNonNegative(k + "[0]", d);
+    if (i > 0 && !(d > c.profile.back().depth)) throw SceneError(k, "depths must increase");
+    c.profile.push_back({d, toNumber(p[1], k + "[1]")});
+  }
+}
+
+void parseWaves(const Section& env, Scene& s) {
+  const Section w = env.section("waves", {"height", "period", "phase", "direction", "depth", "ramp"});
+  WaveSpec& wave = s.water.waves;
+  wave = WaveSpec();
+  wave.height = w.number("height", 0.0);
+  requireNonNegative(w.key("height"), wave.height);
+  wave.period = w.has("height") ? w.number("period") : w.number("period", 10.0);
+  requirePositive(w.key("period"), wave.period);
+  wave.phase = w.number("phase", 0.0);
+  wave.direction = w.number("direction", 1.0);
+  if (wave.direction != 1.0 && wave.direction != -1.0) throw SceneError(w.key("direction"), "must be 1 or -1");
+  wave.depth = w.number("depth", 1000.0);
+  requirePositive(w.key("depth"), wave.depth);
+  wave.ramp = w.number("ramp", 0.0);
+  requireNonNegative(w.key("ramp"), wave.ramp);
+}
+
+void parseEnvironment(const Section& root, Scene& s) {
+  const Section env = root.section("environment", {"gravity", "water", "current", "waves"});
+  s.gravity = env.number("gravity", 9.81);
+  requireNonNegative(env.key("gravity"), s.gravity);
+  s.water = WaterSpec();
+  s.water.enabled = env.has("water");
+  const Section water = env.section("water", {"density", "surface"});
+  s.water.density = water.number("density", 1025.0);
+  requirePositive(water.key("density"), s.water.density);
+  s.water.surface = water.number("surface", 0.0);
+  parseCurrent(env, s);
+  parseWaves(env, s);
+  if (!s.water.enabled && (env.has("current") || env.has("waves")))
+    throw SceneError(env.key("water"), "current and waves need a water section");
+}
+
+void parseHydrodynamics(const Section& root, Scene& s) {
+  const Section h = root.section("hydrodynamics", {"drag_tangential", "drag_normal", "inertia_coefficient"});
+  s.hydro = HydroSpec();
+  s.hydro.enabled = root.has("hydrodynamics");
+  s.hydro.drag_tangential = h.number("drag_tangential", 0.0);
+  s.hydro.drag_normal = h.number("drag_normal", 0.0);
+  s.hydro.inertia_coefficient = h.number("inertia_coefficient", 1.0);
+  requireNonNegative(h.key("drag_tangential"), s.hydro.drag_tangential);
+  requireNonNegative(h.key("drag_normal"), s.hydro.drag_normal);
+  if (!(s.hydro.inertia_coefficient >= 1.0))
+    throw SceneError(h.key("inertia_coefficient"), "C_M must be >= 1 (added mass C_M - 1 >= 0)");
+}
+
+void parseSeabed(const Section& root, Scene& s) {
+  const Section b = root.section(
+      "seabed", {"level", "stiffness_normal", "stiffness_tangential", "damping_normal", "damping_tangential"});
+  s.seabed = SeabedSpec();
+  s.seabed.enabled = root.has("seabed");
+  if (!s.seabed.enabled) return;
+  s.seabed.level = b.number("level");
+  s.seabed.stiffness_normal = b.number("stiffness_normal");
+  s.seabed.stiffness_tangential = b.number("stiffness_tangential", 0.0);
+  s.seabed.damping_normal = b.number("damping_normal", 0.0);
+  s.seabed.damping_tangential = b.number("damping_tangential", 0.0);
+  requirePositive(b.key("stiffness_normal"), s.seabed.stiffness_normal);
+  for (const char* k : {"stiffness_tangential", "damping_normal", "damping_tangential"})
+    requireNonNegative(b.key(k), b.number(k, 0.0));
+}
+
+void parseInternalFluid(const Section& root, Scene& s) {
+  const Section f = root.section("internal_fluid", {"density", "velocity", "acceleration", "model"});
+  s.internal_fluid = InternalFlowSpec();
+  s.internal_fluid.density = f.number("density", 0.0);
+  requireNonNegative(f.key("density"), s.internal_fluid.density);
+  s.internal_fluid.velocity = f.number("velocity", 0.0);
+  s.internal_fluid.acceleration = f.number("acceleration", 0.0);
+  s.internal_fluid.model = f.choice("model", FlowModelKind::kPipeFlow);
+}
+
+void parseSolver(const Section& root, Scene& s) {
+  const Section solver =
+      root.section("solver", {"dt", "integrator", "formulation", "stabilization", "max_constraint_error", "tolerance",
+                              "jacobian_interval", "jacobian"});
+  const SolverSettings defaults;
+  s.solver = defaults;
+  s.solver.dt = solver.number("dt", defaults.dt);
+  requirePositive(solver.key("dt"), s.solver.dt);
+  s.solver.integrator = solver.choice("integrator", defaults.integrator);
+  s.solver.formulation = solver.choice("formulation", defaults.formulation);
+  s.solver.stabilization = solver.number("stabilization", defaults.stabilization);
+  requireNonNegative(solver.key("stabilization"), s.solver.stabilization);
+  s.solver.max_constraint_error = solver.number("max_constraint_error", defaults.max_constraint_error);
+  requirePositive(solver.key("max_constraint_error"), s.solver.max_constraint_error);
+  s.solver.tolerance = solver.number("tolerance", defaults.tolerance);
+  requirePositive(solver.key("tolerance"), s.solver.tolerance);
+  s.solver.jacobian_interval = solver.number("jacobian_interval", defaults.jacobian_interval);
+  requireNonNegative(solver.key("jacobian_interval"), s.solver.jacobian_interval);
+  s.solver.jacobian = solver.choice("jacobian", defaults.jacobian);
+  // The integrator's name, the combination and the size limits: the core's one check.
+  if (const auto error = checkSolverSetup(s.solver, s.elements, s.options.axial_flexibility))
+    throw SceneError(error->key, error->message);
+}
+
+void parseRun(const Section& root, Scene& s) {
+  const Section run = root.section("run", {"duration"});
+  s.duration = run.number("duration", 20.0);
+  requirePositive(run.key("duration"), s.duration);
+  if (!(s.duration / s.solver.dt <= kMaxSceneSteps))
+    throw SceneError(run.key("duration"), "is " + formatNumber(s.duration / s.solver.dt) + " steps of solver.dt (" +
+                                              formatNumber(s.solver.dt) + " s), more than " +
+                                              formatNumber(kMaxSceneSteps));
+}
+
+// Checks that need more than one section.
+void checkCombination(const Scene& s) {
+  const bool pinned = s.bottom == BottomBoundary::kPinned;
+  if (s.hydro.enabled && !s.water.enabled)
+    throw SceneError("hydrodynamics", "needs environment.water (the line must be in water)");
+  if ((s.water.enabled || s.hydro.enabled) && !(s.line.outer_diameter > 0.0))
+    throw SceneError("line.outer_diameter", "is needed (> 0) for buoyancy and hydrodynamic forces");
+  if (s.internal_fluid.density > 0.0 && !(s.line.inner_diameter > 0.0))
+    throw SceneError("line.inner_diameter", "is needed (> 0) for internal_fluid");
+  if (s.initial.type == InitialKind::kBetweenPoints && !pinned)
+    throw SceneError("initial.type", "'between_points' needs bottom.type: pinned (bottom.position is the end point)");
+  if (pinned && s.initial.type != InitialKind::kBetweenPoints)
+    throw SceneError("bottom.type", "'pinned' needs initial.type: between_points (the initial state must end at "
+                                    "bottom.position), got initial.type '" + std::string(name(s.initial.type)) + "'");
+  if (s.initial.type == InitialKind::kDisplaced && !(std::abs(s.initial.end_dx) < s.length))
+    throw SceneError("initial.end_dx", "must be smaller than line.length (" + formatNumber(s.length) +
+                                           " m) in magnitude, got " + formatNumber(s.initial.end_dx));
+  if (pinned && !s.options.axial_flexibility) {
+    const double span = (s.bottom_point - buildTopMotion(s.top)->at(0.0).p).norm();
+    if (span > s.length)
+      throw SceneError("bottom.position", "is " + formatNumber(span) + " m from the top at t = 0 but the line is " +
+                                              formatNumber(s.length) + " m long and inextensible");
+  }
+}
+
+using SectionParser = void (*)(const Section&, Scene&);
+struct SectionEntry {
+  const char* name;
+  SectionParser parse;
+};
+// Top-level sections, parsed in this order.
+const SectionEntry kSections[] = {
+    {"line", parseLine},   {"top", parseTop},           {"bottom", parseBottom}, {"initial", parseInitial},
+    {"environment", parseEnvironment}, {"solver", parseSolver}, {"run", parseRun},
+    {"hydrodynamics", parseHydrodynamics}, {"seabed", parseSeabed}, {"internal_fluid", parseInternalFluid},
+};
+
+}  // namespace
+
+Scene parseScene(const YAML::Node& node) {
+  std::vector<std::string> accepted = {"name"};
+  for (const auto& entry : kSections) accepted.push_back(entry.name);
+  const Section root(node, "", accepted);
+  Scene s;
+  s.name = root.text("name", "");
+  for (const auto& entry : kSections) entry.parse(root, s);
+  checkCombination(s);
+  return s;
+}
+
+}  // namespace riser_sim
