@@ -1,5 +1,7 @@
 #include "riser_sim/run_builder.h"
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "riser_sim/forces/end_load.h"
@@ -11,6 +13,16 @@ InitialState solveInitialState(const Scene& scene, const Model& model, const Vec
   const bool straight = scene.initial.type == InitialKind::kStraight;
   if (straight && !equilibrium_only) {
     init.kin = straightLine(model, top, scene.initial.angle);
+    // Not an equilibrium, but it must not start inside the seabed (the contact springs would throw it out).
+    double level = -INFINITY;
+    for (const auto& term : model.terms()) level = std::max(level, term->seabedLevel());
+    for (size_t i = 0; i < init.kin.size(); ++i) {
+      const Vec2 end = init.kin[i].end();
+      if (end.y() < level)
+        throw std::runtime_error("initial: the straight line reaches y = " + std::to_string(end.y()) +
+                                 " m at the end of rfe " + std::to_string(i) + ", below the seabed (seabed.level = " +
+                                 std::to_string(level) + " m); use initial.type hanging or change initial.angle");
+    }
     init.equilibrium = false;
     init.about = "straight line (not an equilibrium)";
     init.statics.converged = true;

@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "riser_sim/forces/seabed.h"
+#include "riser_sim/scene_yaml.h"
 #include "validation_util.h"
 
 namespace riser_sim {
@@ -136,6 +137,19 @@ TEST(StaticsSeabed, HangingStraightDownOntoTheSeabed) {
     }
     EXPECT_NEAR(std::abs(st.kin.back().end().x()), s.length - sus, d);
   }
+}
+
+// A straight initial line is no statics solve, but it must not start inside the seabed: refused naming
+// seabed.level; the same line above the seabed starts. (The 10 m chain at 45 degrees reaches y = -7.07 m.)
+TEST(StaticsSeabed, StraightStartInsideTheSeabedIsRefused) {
+  const std::string chain = std::string(RISER_SIM_SOURCE_DIR) + "/config/scenes/hanging_chain.yaml";
+  try {
+    buildSimulator(loadSceneFile(chain, {"seabed={level: -5, stiffness_normal: 1e5}"}));
+    FAIL() << "a straight line through the seabed started";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("seabed.level"), std::string::npos) << e.what();
+  }
+  EXPECT_NO_THROW(buildSimulator(loadSceneFile(chain, {"seabed={level: -8, stiffness_normal: 1e5}"})));
 }
 
 }  // namespace
