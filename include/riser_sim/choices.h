@@ -10,7 +10,7 @@
 
 namespace riser_sim {
 
-enum class IntegratorKind { kRk4, kDopri5, kRosenbrock2, kMidpoint };  // solver.integrator
+enum class IntegratorKind { kRk4, kDopri5, kRosenbrock2, kMidpoint, kGeneralizedAlpha };  // solver.integrator
 enum class FormulationKind { kAbsolute, kIndependent, kRecursive };    // solver.formulation
 enum class JacobianKind { kAuto, kStructured, kDense };                // solver.jacobian
 enum class MotionKind { kFixed, kSinusoid, kVelocityProfile, kExternal };  // top.motion.type
@@ -23,11 +23,12 @@ struct Choices;  // static constexpr std::array<std::pair<E, const char*>, N> na
 
 template <>
 struct Choices<IntegratorKind> {
-  static constexpr std::array<std::pair<IntegratorKind, const char*>, 4> names{
+  static constexpr std::array<std::pair<IntegratorKind, const char*>, 5> names{
       {{IntegratorKind::kRk4, "rk4"},
        {IntegratorKind::kDopri5, "dopri5"},
        {IntegratorKind::kRosenbrock2, "rosenbrock2"},
-       {IntegratorKind::kMidpoint, "midpoint"}}};
+       {IntegratorKind::kMidpoint, "midpoint"},
+       {IntegratorKind::kGeneralizedAlpha, "generalized_alpha"}}};
 };
 template <>
 struct Choices<FormulationKind> {
@@ -82,7 +83,7 @@ std::optional<E> parseChoice(std::string_view text) {
     if (text == name) return value;
   return std::nullopt;
 }
-// Every name, comma separated ("rk4, dopri5, rosenbrock2, midpoint").
+// Every name, comma separated ("rk4, dopri5, rosenbrock2, midpoint, generalized_alpha").
 template <class E>
 std::string choiceNames() {
   std::string out;

@@ -4,7 +4,7 @@
 // Linear solves (IntegratorOptions::jacobian):
 // - "structured": the system's own O(n) solves (OdeSystem::linearize / factorShifted / solveShifted; the
 //   chain formulations, see chain_shifted_solver.h), relinearised at every step. A Rosenbrock-W method
-//   keeps its order with any such approximate J; Newton (midpoint) converges linearly at its accuracy.
+//   keeps its order with any such approximate J; Newton (midpoint, generalized_alpha) converges linearly at its accuracy.
 // - "dense": A_q = ∂a/∂q, A_v = ∂a/∂v by forward differences (2p evaluations, p = size of q), dense,
 // refreshed every IntegratorOptions::jacobian_interval of simulated time, when h changes, or when
 // Newton stalls. The linear systems (I - c J) x = b reduce to the p x p matrix
@@ -54,26 +54,86 @@ class ImplicitIntegrator : public Integrator {
   Stats stats_;
 };
 
-// Implicit midpoint rule: y1 = y0 + h f(t + h/2, (y0 + y1)/2), modified Newton on the midpoint
-// (when Newton fails, the step is retried as 2, 4, 8 equal substeps before giving up).
-// Second order, A-stable, symmetric (time-reversible), no numerical damping; conserves quadratic
-// invariants exactly. For long conservative runs.
-class ImplicitMidpoint : public ImplicitIntegrator {
+// Schemes with one implicit stage z = b + c f(t + θh, z) (c = κh; b from y0 and the scheme's history),
+// solved by modified Newton with (I - cJ): the predictor carries the last step's increment on
+// (z0 = y0 + θ (y0 - y_prev)), a stale Jacobian is refreshed once, and when Newton still fails the step
+// is retried as 2, 4, 8 equal substeps before giving up. The scheme supplies b and the end of the step.
+class OneStageImplicit : public ImplicitIntegrator {
  public:
-  using ImplicitIntegrator::ImplicitIntegrator;
-  std::string name() const override { return "midpoint"; }
+  OneStageImplicit(const IntegratorOptions& options, double theta, double kappa)
+      : ImplicitIntegrator(options), theta_(theta), kappa_(kappa) {}
   void reset(const StateLayout& layout) override;
   void restart() override { ImplicitIntegrator::restart(); have_prev_ = false; }
   bool step(OdeSystem& sys, double t, VecX& y, double h) override;
   int stages() const override { return 3; }  // typical: 2 Newton iterations + the end evaluation
 
+ protected:
+  // b of the stage equation for a step h from y0 (f0_ = f(t, y0) is current); may return y0 itself.
+  virtual const VecX& stageBase(const VecX& y0, double h) = 0;
+  // y0 -> y1 from the converged stage (z_, fz_ = f(t + θh, z_)), on every entry (W too).
+  virtual void advance(VecX& y, double h) = 0;
+  // State beyond y (generalized-α's ẏ): taken up at the start of a step (f0_ current), saved before the
+  // first try and put back before a retry in substeps.
+  virtual void beginStep(double /*t*/, const VecX& /*y*/) {}
+  virtual void saveHistory() {}
+  virtual void restoreHistory() {}
+
+  const double theta_, kappa_;
+  VecX z_, fz_;
+
  private:
   static constexpr int kMaxPieces = 8;  // substeps tried when Newton fails on the whole step
-  bool newton(OdeSystem& sys, double t, const VecX& y0, double h);
+  bool newton(OdeSystem& sys, double t, const VecX& y0, const VecX& base, double h);
   bool single(OdeSystem& sys, double t, VecX& y, double h);
-  VecX z_, g_, dz_, fz_, y_save_, f_save_;
+  VecX g_, dz_, dy_prev_, y_save_, f_save_;
   bool have_prev_ = false;
   double h_prev_ = 0.0;
+};
+
+// Implicit midpoint rule: y1 = y0 + h f(t + h/2, z), z = y0 + (h/2) f(t + h/2, z) = (y0 + y1)/2.
+// Second order, A-stable, symmetric (time-reversible), no numerical damping; conserves quadratic
+// invariants exactly. For long conservative runs.
+class ImplicitMidpoint : public OneStageImplicit {
+ public:
+  explicit ImplicitMidpoint(const IntegratorOptions& options) : OneStageImplicit(options, 0.5, 0.5) {}
+  std::string name() const override { return "midpoint"; }
+
+ protected:
+  const VecX& stageBase(const VecX& y0, double /*h*/) override { return y0; }
+  void advance(VecX& y, double h) override { y += h * fz_; }
+};
+
+// Generalized-α in first-order form (Jansen, Whiting & Hulbert 2000; Chung & Hulbert 1993 for the
+// second-order one) with the user's high-frequency spectral radius ρ∞ = IntegratorOptions::rho_inf:
+//   y1 = y0 + h ẏ0 + γ h (ẏ1 - ẏ0),   ẏ0 + αm (ẏ1 - ẏ0) = f(t + αf h, y0 + αf (y1 - y0)),
+//   αm = (3 - ρ∞) / (2 (1 + ρ∞)),  αf = 1 / (1 + ρ∞),  γ = 1/2 + αm - αf (= αf).
+// The stage z = y0 + αf (y1 - y0) solves z = y0 + d ẏ0 + c f(t + αf h, z), c = αf γ h / αm,
+// d = αf h (αm - γ) / αm: the existing (I - cJ) solve. ẏ is the scheme's own variable (not f(y)), carried
+// from step to step; it starts as f(t, y) and again after restart() or when y was changed from outside,
+// but not on forcesChanged() (a reset to f(y) at every step turns it into another, first-order scheme).
+// On y' = λy: second order; the resolved modes lose 1 - |R| = (1 - ρ∞)³ / (4 (1 + ρ∞)³) (ωh)⁴ per step,
+// the unresolved ones are damped to |R| → ρ∞ as ωh → ∞ (as ρ∞ ± (1 + ρ∞) √(1 - ρ∞²) / (2 √(ωh)) on the
+// imaginary axis: the limit is a double root). ρ∞ = 1 is the implicit midpoint rule (same iterates),
+// ρ∞ = 0 annihilates the highest modes in one step.
+class GeneralizedAlpha : public OneStageImplicit {
+ public:
+  explicit GeneralizedAlpha(const IntegratorOptions& options);
+  std::string name() const override { return "generalized_alpha"; }
+  void reset(const StateLayout& layout) override;
+  void restart() override { OneStageImplicit::restart(); ydot_valid_ = false; }
+  double rhoInf() const { return rho_inf_; }
+
+ protected:
+  const VecX& stageBase(const VecX& y0, double h) override;
+  void advance(VecX& y, double h) override;
+  void beginStep(double t, const VecX& y) override;
+  void saveHistory() override { ydot_save_ = ydot_; }
+  void restoreHistory() override { ydot_ = ydot_save_; }
+
+ private:
+  double rho_inf_, alpha_m_, alpha_f_, gamma_;
+  VecX ydot_, ydot_save_, b_;
+  bool ydot_valid_ = false;
 };
 
 // Linearly implicit Rosenbrock-W method ROS2 (Verwer, Spee, Blom & Hundsdorfer 1999), γ = 1 + 1/√2:

@@ -75,6 +75,9 @@ struct IntegratorOptions {
   // Implicit schemes: kStructured (the system's O(n) solves, relinearised every step) or kDense
   // (finite-difference Jacobian, O(p²) per solve).
   JacobianKind jacobian = JacobianKind::kStructured;
+  // generalized_alpha: high-frequency spectral radius ρ∞ in [0, 1] (1: no numerical damping, the midpoint
+  // rule; 0: the unresolved modes are annihilated in one step). Default: solver.rho_inf's (SolverSettings).
+  double rho_inf = 0.5;
 };
 
 // Classical fixed-step fourth-order Runge-Kutta (the paper's scheme).
@@ -95,7 +98,7 @@ class Rk4 : public Integrator {
 };
 
 std::unique_ptr<Integrator> makeIntegrator(IntegratorKind kind, const IntegratorOptions& options = {});
-// rosenbrock2 and midpoint: the schemes with linear solves (and the dense-Jacobian size limits).
+// rosenbrock2, midpoint and generalized_alpha: the schemes with linear solves (and the dense-Jacobian size limits).
 bool isImplicitIntegrator(IntegratorKind kind);
 
 }  // namespace riser_sim

@@ -35,6 +35,9 @@ struct SolverSettings {
   // solver.jacobian: implicit schemes' linear solves. "auto": structured (O(n)) when the formulation has
   // them (independent, recursive), else dense; "structured"; "dense" (finite differences, O(p²)).
   JacobianKind jacobian = JacobianKind::kAuto;
+  // solver.rho_inf: generalized_alpha's high-frequency spectral radius ρ∞ in [0, 1]. 0.5: see
+  // docs/integrators.md ("generalized_alpha") for the measurements behind it.
+  double rho_inf = 0.5;
 };
 
 class Simulator : private OdeSystem {

@@ -29,7 +29,8 @@ bool Rk4::step(OdeSystem& sys, double t, VecX& y, double h) {
 }
 
 bool isImplicitIntegrator(IntegratorKind kind) {
-  return kind == IntegratorKind::kRosenbrock2 || kind == IntegratorKind::kMidpoint;
+  return kind == IntegratorKind::kRosenbrock2 || kind == IntegratorKind::kMidpoint ||
+         kind == IntegratorKind::kGeneralizedAlpha;
 }
 
 std::unique_ptr<Integrator> makeIntegrator(IntegratorKind kind, const IntegratorOptions& options) {
@@ -38,6 +39,7 @@ std::unique_ptr<Integrator> makeIntegrator(IntegratorKind kind, const Integrator
     case IntegratorKind::kDopri5: return std::make_unique<Dopri5>(options);
     case IntegratorKind::kRosenbrock2: return std::make_unique<Rosenbrock2>(options);
     case IntegratorKind::kMidpoint: return std::make_unique<ImplicitMidpoint>(options);
+    case IntegratorKind::kGeneralizedAlpha: return std::make_unique<GeneralizedAlpha>(options);
   }
   throw std::invalid_argument("solver.integrator: unknown integrator (accepted: " + choiceNames<IntegratorKind>() + ")");
 }

@@ -257,7 +257,7 @@ void parseInternalFluid(const Section& root, Scene& s) {
 void parseSolver(const Section& root, Scene& s) {
   const Section solver =
       root.section("solver", {"dt", "integrator", "formulation", "stabilization", "max_constraint_error", "tolerance",
-                              "jacobian_interval", "jacobian"});
+                              "jacobian_interval", "jacobian", "rho_inf"});
   const SolverSettings defaults;
   s.solver = defaults;
   s.solver.dt = solver.number("dt", defaults.dt);
@@ -273,6 +273,7 @@ void parseSolver(const Section& root, Scene& s) {
   s.solver.jacobian_interval = solver.number("jacobian_interval", defaults.jacobian_interval);
   requireNonNegative(solver.key("jacobian_interval"), s.solver.jacobian_interval);
   s.solver.jacobian = solver.choice("jacobian", defaults.jacobian);
+  s.solver.rho_inf = solver.number("rho_inf", defaults.rho_inf);
   // The integrator's name, the combination and the size limits: the core's one check.
   if (const auto error = checkSolverSetup(s.solver, s.elements, s.options.axial_flexibility))
     throw SceneError(error->key, error->message);

@@ -32,6 +32,7 @@ std::optional<SetupError> checkSolverSetup(const SolverSettings& s, int elements
                       "'dense' or 'auto'"};
   if (!(s.tolerance > 0.0)) return SetupError{"solver.tolerance", "must be > 0"};
   if (!(s.jacobian_interval >= 0.0)) return SetupError{"solver.jacobian_interval", "must be >= 0"};
+  if (!(s.rho_inf >= 0.0 && s.rho_inf <= 1.0)) return SetupError{"solver.rho_inf", "must be in [0, 1]"};
   const int k = coordinatesPerRfe(s.formulation, axial_flexibility);
   if (isImplicitIntegrator(s.integrator) && resolvedJacobian(s) == JacobianKind::kDense &&
       k * (elements + 1) > kMaxDenseCoordinates) {
