@@ -49,6 +49,7 @@ const Config kConfigs[] = {
     {"dopri5", "recursive", "auto", 0.01, 100000},  // per accepted substep (their number depends on n)
     {"rosenbrock2", "recursive", "structured", 0.01, 100000},
     {"midpoint", "recursive", "structured", 0.01, 100000},
+    {"generalized_alpha", "recursive", "structured", 0.01, 100000},
     {"rosenbrock2", "independent", "structured", 0.01, 200},  // O(n³) evaluations
     {"rosenbrock2", "recursive", "dense", 0.01, 400},
     {"midpoint", "recursive", "dense", 0.01, 400},

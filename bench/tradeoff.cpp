@@ -81,7 +81,7 @@ std::vector<Config> sweep(const Case& c, bool quick, const std::string& ns) {
     if (!axial)
       for (double h : {0.05, 0.02, 0.01}) cfg.push_back({&c, "recursive", "rk4", n, h, 0.0});
     for (double tol : {1e-4, 1e-6, 1e-8}) cfg.push_back({&c, "recursive", "dopri5", n, 0.01, tol});
-    for (const char* integ : {"rosenbrock2", "midpoint"})  // structured O(n) solves
+    for (const char* integ : {"rosenbrock2", "midpoint", "generalized_alpha"})  // structured O(n) solves
       for (double h : hs) cfg.push_back({&c, "recursive", integ, n, h, 0.0});
     if (n <= 40)  // the same schemes with the dense finite-difference Jacobian: same accuracy, cost O(p²)
       for (const char* integ : {"rosenbrock2", "midpoint"})
