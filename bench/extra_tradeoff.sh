@@ -2,12 +2,14 @@
 # Speed against accuracy, part of `make bench`:
 #  1. riser_sim_bench_step_cost: cost of one step vs n per integrator / formulation / linear solve
 #     -> out/bench/step_cost.csv;
-#  2. riser_sim_bench_tradeoff: integrator x formulation x n x h (or tolerance) on the five cases
+#  2. riser_sim_bench_tradeoff: integrator x formulation x n x h (or tolerance) on the seven cases
+#     (the five paper cases, the damped Table 1 line and J-lay), positions and force histories
 #     -> out/bench/tradeoff.csv, references.csv;
 #  3. bench/plot_tradeoff.py -> out/bench/pareto_<case>.png, pareto.png, step_cost.png and the cheapest
 #     setting per accuracy.
 # By default a shorter sweep than the one in docs/benchmarks.md: n in {10, 20, 40, 100}, runs over 2 s of
-# CPU skipped, step cost to n = 400 (11 min on the 2-core machine, 10.5 min of CPU). RISER_SIM_TRADEOFF_FULL=1
+# CPU skipped, step cost to n = 400 (11 min on the 2-core machine, 10.5 min of CPU, measured before the
+# force histories; their references add ~4 min of CPU: the damped variants' and Table 1's n = 200 runs). RISER_SIM_TRADEOFF_FULL=1
 # runs the documented sweep (every n to 1000, 20 s budget per run: 20 min of wall time on a quiet machine,
 # 19 min of CPU, plus the full step cost table).
 set -eo pipefail

@@ -1,10 +1,11 @@
-#!/usr/bin/env python3
 """Pareto plots of riser_sim_bench_tradeoff's CSV (out/bench/tradeoff.csv): for every case the probe
-position error against the run's time, one curve (its Pareto front) per integrator / formulation /
-linear solve, every run drawn faintly; the reference's own spread shaded; the speed/accuracy targets
-(docs/benchmarks.md) as lines. Writes <out>/pareto_<case>.png, <out>/pareto.png (all cases) and, from
-step_cost.csv when present, <out>/step_cost.png. Prints, per case and accuracy, the cheapest setting
-that reaches it.
+position error, the top tension's and the largest axial force's RMS history error against the run's
+time, one curve (its Pareto front) per integrator / formulation / linear solve, every run drawn faintly;
+the reference's own convergence shaded; the speed/accuracy targets (docs/benchmarks.md) as lines. Writes
+<out>/pareto_<case>.png (position | top tension | largest axial force), <out>/pareto.png (positions, all
+cases), <out>/pareto_forces.png (forces, all cases) and, from step_cost.csv when present,
+<out>/step_cost.png. Prints, per case and accuracy, the cheapest setting that reaches it, and whether
+the force targets are met.
 
   plot_tradeoff.py [--clock=cpu|wall] [CSV [OUT_DIR]]
 
@@ -27,13 +28,36 @@ src = args[0] if len(args) > 0 else "out/bench/tradeoff.csv"
 out = args[1] if len(args) > 1 else os.path.dirname(src) or "."
 tcol = "cpu_s" if clock == "cpu" else "wall_s"
 
-# Per case: simulated duration, title, targets (error [m], time [s]): docs/benchmarks.md, "Targets".
+# Per case: simulated duration, title, position targets (error [m], time [s]): docs/benchmarks.md, "Targets".
 CASES = {
     "table1_elastic": (20.0, "Table 1 line, elastic: end at 20 s", [(1e-3, 0.1), (1e-2, 0.02)]),
+    "table1_elastic_damped": (20.0, "Table 1 line, elastic, 2 % axial damping: end at 20 s",
+                              [(1e-3, 0.1), (1e-2, 0.02)]),
     "table1_inextensible": (20.0, "Table 1 line, inextensible: end at 20 s", [(1e-3, 0.1), (1e-2, 0.02)]),
     "jlay_elastic": (27.0, "170 m J-lay, elastic: middle point at 27 s", [(1e-2, 0.27)]),
+    "jlay_elastic_damped": (27.0, "170 m J-lay, elastic, 2 % axial damping, seabed springs per metre",
+                            [(1e-2, 0.27)]),
     "jlay_inextensible": (27.0, "170 m J-lay, inextensible: middle point at 27 s", [(1e-2, 0.27)]),
     "riser500": (60.0, "500 m riser: lower end at 60 s", [(1e-2, 0.6)]),
+}
+JLAY = ("jlay_elastic", "jlay_elastic_damped")
+# Force targets (docs/benchmarks.md, "Tension against cost"): cases, text, n (None: any), the limits
+# on tradeoff.csv's error columns, the smallest RTF (simulated time / run time).
+FORCE_TARGETS = [
+    (JLAY, "top tension <= 2 % RMS and <= 5 % max at RTF >= 100", 100,
+     [("err_top_rms", 0.02), ("err_top_max", 0.05)], 100),
+    (JLAY, "top tension <= 1 % RMS at RTF >= 30", 100, [("err_top_rms", 0.01)], 30),
+    (("riser500", "table1_elastic", "table1_elastic_damped", "table1_inextensible"), "largest axial force <= 2 % RMS at RTF >= 100",
+     None, [("err_axial_rms", 0.02)], 100),
+]
+# What a panel shows: error column, reference-convergence column, axis label, guide lines, unit scale.
+MEASURES = {
+    "pos": ("err_pos_m", "ref_spread_m", "position error vs reference [m]",
+            [(1e-4, "0.1 mm"), (1e-3, "1 mm"), (1e-2, "1 cm")]),
+    "top": ("err_top_rms", "ref_top_rms", "top tension: RMS history error / RMS reference",
+            [(1e-2, "1 %"), (2e-2, "2 %"), (5e-2, "5 %")]),
+    "axial": ("err_axial_rms", "ref_axial_rms", "largest axial force: RMS history error / RMS reference",
+              [(1e-2, "1 %"), (2e-2, "2 %"), (5e-2, "5 %")]),
 }
 
 rows = []
@@ -42,9 +66,25 @@ with open(src) as f:
         rows.append(r)
 
 
+def num(r, col):
+    try:
+        return float(r.get(col) or "nan")
+    except ValueError:
+        return float("nan")
+
+
+def case_info(case):
+    """(duration, title, position targets); a case not in CASES: its duration from rtf_cpu x cpu_s."""
+    if case in CASES:
+        return CASES[case]
+    dur = next((num(r, "rtf_cpu") * num(r, "cpu_s") for r in rows if r["case"] == case and r["status"] == "ok"), 1.0)
+    return (round(dur, 6), case, [])
+
+
 def label(r):
     solve = r.get("jacobian", "-")
-    lab = f"{r['integrator']} / {r['formulation']}"
+    integ = r["integrator"] + (f" rho_inf={r['rho_inf']}" if r.get("rho_inf") else "")
+    lab = f"{integ} / {r['formulation']}"
     if solve == "dense" and r["formulation"] != "absolute":
         lab += " (dense J)"
     return lab
@@ -65,93 +105,162 @@ def front(pts):
     return fr
 
 
-def draw(ax, case):
-    dur, title, targets = CASES.get(case, (1.0, case, []))
+def targets_of(case, measure):
+    """(error, time) lines of the panel: position targets, or the RMS force targets of this case."""
+    dur, _, pos = case_info(case)
+    if measure == "pos":
+        return [(e, t, f"{e * 1e3:g} mm in {t:g} s") for e, t in pos]
+    col = MEASURES[measure][0]
+    out = []
+    for cases, _, n, limits, rtf in FORCE_TARGETS:
+        for c, lim in limits:
+            if case in cases and c == col:
+                out.append((lim, dur / rtf, f"{lim * 100:g} % at RTF {rtf:g}" + (f", n = {n}" if n else "")))
+    return out
+
+
+def draw(ax, case, measure="pos"):
+    dur, title, _ = case_info(case)
+    col, spread_col, ylabel, guides = MEASURES[measure]
     groups = defaultdict(list)
     spread = 0.0
     for r in rows:
         if r["case"] != case:
             continue
-        spread = float(r["ref_spread_m"] or 0.0)
-        if r["status"] != "ok":
+        spread = num(r, spread_col) if math.isfinite(num(r, spread_col)) else 0.0
+        if r["status"] != "ok" or not math.isfinite(num(r, col)):
             continue
-        err = max(float(r["err_pos_m"]), 1e-7)  # below the plot: exact to the reference
+        err = max(num(r, col), 1e-7)  # below the plot: exact to the reference
         groups[label(r)].append((float(r[tcol]), err, int(r["n"]), r["h"], r["tolerance"]))
     allpts = [p for pts in groups.values() for p in pts]
     xmin = 0.5 * min((p[0] for p in allpts), default=1e-4)
     ymin = min(1e-5, 0.3 * min((p[1] for p in allpts), default=1e-5))
-    colors = {}
-    for i, (lab, pts) in enumerate(sorted(groups.items())):
+    for lab, pts in sorted(groups.items()):
         fr = front(pts)
         style = "--" if "absolute" in lab else ("-." if "dense" in lab else "-")
         line, = ax.plot([p[0] for p in fr], [p[1] for p in fr], style, marker="o", ms=3.5, lw=1.2, label=lab,
                         color=COLOR[lab])
-        colors[lab] = line.get_color()
         ax.scatter([p[0] for p in pts], [p[1] for p in pts], s=8, alpha=0.25, color=line.get_color())
         for p in fr:
             ax.annotate(str(p[2]), (p[0], p[1]), fontsize=5.5, xytext=(2, 2), textcoords="offset points")
     if spread > 0:
         ax.axhspan(ymin, spread, color="orange", alpha=0.10)
-        ax.text(0.01, spread * 0.75, f"reference spread {spread * 1e3:.2g} mm", fontsize=6.5, color="darkorange",
+        txt = f"{spread * 1e3:.2g} mm" if measure == "pos" else f"{spread * 100:.2g} %"
+        ax.text(0.01, spread * 0.75, f"reference's own convergence {txt}", fontsize=6.5, color="darkorange",
                 transform=ax.get_yaxis_transform())
-    for y, txt in [(1e-4, "0.1 mm"), (1e-3, "1 mm"), (1e-2, "1 cm")]:
+    for y, txt in guides:
         ax.axhline(y, color="grey", ls=":", lw=0.7)
         ax.text(0.995, y * 1.1, txt, fontsize=6.5, color="grey", ha="right", transform=ax.get_yaxis_transform())
-    for err, t in targets:
+    for err, t, txt in targets_of(case, measure):
         ax.plot([t, t], [ymin, err], color="red", lw=0.9, alpha=0.6)
         ax.plot([xmin, t], [err, err], color="red", lw=0.9, alpha=0.6)
-        ax.text(t, err * 1.15, f" target: {err * 1e3:g} mm in {t:g} s", fontsize=6, color="red")
+        ax.text(t, err * 1.15, f" target: {txt}", fontsize=6, color="red")
     ax.set_xscale("log")
     ax.set_yscale("log")
     ax.set_ylim(ymin, 30)
     ax.set_xlim(left=xmin)
     ax.set_xlabel(("thread CPU time" if clock == "cpu" else "median wall time") +
                   f" for {dur:g} s simulated [s]  (RTF = {dur:g} / time)")
-    ax.set_ylabel("position error vs reference [m]")
+    ax.set_ylabel(ylabel, fontsize=8)
     ax.set_title(title + "  (labels: n)", fontsize=9)
     ax.grid(True, which="both", alpha=0.15)
     ax.legend(fontsize=6, loc="upper right", ncol=1)
 
 
+def has_forces(case):
+    return any(r["case"] == case and math.isfinite(num(r, "err_top_rms")) for r in rows)
+
+
 cases = [c for c in CASES if any(r["case"] == c for r in rows)]
+cases += sorted({r["case"] for r in rows} - set(cases))
 for c in cases:
-    fig, ax = plt.subplots(figsize=(8.5, 6))
-    draw(ax, c)
+    panels = ["pos"] + (["top", "axial"] if has_forces(c) else [])
+    fig, axes = plt.subplots(1, len(panels), figsize=(8.5 * len(panels), 6), squeeze=False)
+    for ax, m in zip(axes.flat, panels):
+        draw(ax, c, m)
     fig.tight_layout()
     path = os.path.join(out, f"pareto_{c}.png")
-    fig.savefig(path, dpi=120)
+    fig.savefig(path, dpi=100)
     plt.close(fig)
     print(f"wrote {path}")
-if cases:
+
+
+def grid_plot(name, panels_of):
+    """One figure, one row of panels per case (or two cases per row for single panels)."""
+    items = [(c, m) for c in cases for m in panels_of(c)]
+    if not items:
+        return
     cols = 2
-    nrow = math.ceil(len(cases) / cols)
+    nrow = math.ceil(len(items) / cols)
     fig, axes = plt.subplots(nrow, cols, figsize=(16, 6 * nrow), squeeze=False)
-    for ax, c in zip(axes.flat, cases):
-        draw(ax, c)
-    for ax in list(axes.flat)[len(cases):]:
+    for ax, (c, m) in zip(axes.flat, items):
+        draw(ax, c, m)
+    for ax in list(axes.flat)[len(items):]:
         ax.axis("off")
     fig.tight_layout()
-    path = os.path.join(out, "pareto.png")
+    path = os.path.join(out, name)
     fig.savefig(path, dpi=85)
     plt.close(fig)
     print(f"wrote {path}")
 
-# Cheapest setting per case and accuracy.
+
+grid_plot("pareto.png", lambda c: ["pos"])
+grid_plot("pareto_forces.png", lambda c: ["top", "axial"] if has_forces(c) else [])
+
+
+def setting(b):
+    return b["tolerance"] if b["integrator"] == "dopri5" else b["h"]
+
+
+def pct(x):
+    return f"{x * 100:.3g} %"
+
+
+# Cheapest setting per case and accuracy: position, then the two force histories.
 print(f"\nCheapest run per accuracy ({'thread CPU' if clock == 'cpu' else 'median wall'} time):\n")
-print("| case | accuracy | setting | n | h or tol | CPU [s] | wall [s] | RTF (CPU) | error |")
-print("|---|---|---|---|---|---|---|---|---|")
+print("| case | measure | accuracy | setting | n | h or tol | CPU [s] | wall [s] | RTF (CPU) | error |")
+print("|---|---|---|---|---|---|---|---|---|---|")
+KINDS = [("position", "err_pos_m", (1e-2, 1e-3, 1e-4), lambda a: f"{a * 1e3:g} mm", lambda e: f"{e * 1e3:.3g} mm"),
+         ("top T RMS", "err_top_rms", (5e-2, 2e-2, 1e-2), pct, pct),
+         ("max axial RMS", "err_axial_rms", (5e-2, 2e-2, 1e-2), pct, pct)]
 for c in cases:
-    dur = CASES.get(c, (1.0,))[0]
+    dur = case_info(c)[0]
     ok = [r for r in rows if r["case"] == c and r["status"] == "ok"]
-    for acc in (1e-2, 1e-3, 1e-4):
-        good = [r for r in ok if float(r["err_pos_m"]) <= acc]
+    for kind, col, accs, fa, fe in KINDS:
+        if not any(math.isfinite(num(r, col)) for r in ok):
+            continue
+        for acc in accs:
+            good = [r for r in ok if num(r, col) <= acc]
+            if not good:
+                print(f"| {c} | {kind} | {fa(acc)} | none | | | | | | |")
+                continue
+            b = min(good, key=lambda r: float(r[tcol]))
+            print(f"| {c} | {kind} | {fa(acc)} | {label(b)} | {b['n']} | {setting(b)} | {float(b['cpu_s']):.4g} | "
+                  f"{float(b['wall_s']):.4g} | {dur / float(b['cpu_s']):.0f} | {fe(num(b, col))} |")
+
+# The force targets: met or not, and the cheapest run that meets them.
+print(f"\nForce targets (RTF by {'thread CPU' if clock == 'cpu' else 'median wall'} time):\n")
+print("| case | target | met? | cheapest run that meets it | n | h or tol | RTF | top T RMS / max | "
+      "max axial RMS / max |")
+print("|---|---|---|---|---|---|---|---|---|")
+for tcases, text, n, limits, rtf in FORCE_TARGETS:
+    for c in tcases:
+        if c not in cases:
+            continue
+        dur = case_info(c)[0]
+        ok = [r for r in rows if r["case"] == c and r["status"] == "ok" and (n is None or int(r["n"]) == n)]
+        good = [r for r in ok if dur / float(r[tcol]) >= rtf and all(num(r, col) <= lim for col, lim in limits)]
+        where = text + (f" (n = {n})" if n else "")
+        if not ok:
+            print(f"| {c} | {where} | not run | | | | | | |")
+            continue
         if not good:
-            print(f"| {c} | {acc * 1e3:g} mm | none | | | | | | |")
+            print(f"| {c} | {where} | **not met** | | | | | | |")
             continue
         b = min(good, key=lambda r: float(r[tcol]))
-        ht = b["tolerance"] if b["integrator"] == "dopri5" else b["h"]
-        print(f"| {c} | {acc * 1e3:g} mm | {label(b)} | {b['n']} | {ht} | {float(b['cpu_s']):.4g} | "
-              f"{float(b['wall_s']):.4g} | {dur / float(b['cpu_s']):.0f} | {float(b['err_pos_m']) * 1e3:.3g} mm |")
+        print(f"| {c} | {where} | **met** | {label(b)} | {b['n']} | {setting(b)} | {dur / float(b[tcol]):.0f} | "
+              f"{pct(num(b, 'err_top_rms'))} / {pct(num(b, 'err_top_max'))} | "
+              f"{pct(num(b, 'err_axial_rms'))} / {pct(num(b, 'err_axial_max'))} |")
 
 # Cost of one step against n.
 sc = os.path.join(os.path.dirname(src) or ".", "step_cost.csv")

@@ -1,14 +1,17 @@
 // Cases of the speed/accuracy sweep (riser_sim_bench_tradeoff): each is a scene family in n, a duration,
 // a probe point and a reference. References: the Table 1 line's end uses fixed converged values (elastic:
-// rk4 at n = 320; inextensible: docs/validation.md's Richardson value), its tensions an rk4 run at
-// n = 100; the paper's riser scenes are referenced to runs of our own at two fine discretisations and two
-// steps (Case::ref_runs), whose largest difference is reported as the reference's spread.
+// rk4 at n = 320; inextensible: docs/validation.md's Richardson value), its force histories rk4 runs; the
+// paper's riser scenes are referenced to runs of our own at two fine discretisations and two steps
+// (Case::ref_runs), whose differences to the finest are reported as the reference's convergence. The
+// elastic Table 1 line and the J-lay have variants with light axial damping (and, the J-lay, seabed
+// springs per metre) whose force references converge in h and n (tradeoff_cases.cpp).
 #pragma once
 #include <functional>
 #include <string>
 #include <vector>
 
 #include "riser_sim/scene.h"
+#include "tradeoff_history.h"
 
 namespace tradeoff {
 
@@ -17,9 +20,13 @@ using riser_sim::Vec2;
 
 // What a run is measured by.
 struct Measures {
-  Vec2 probe = Vec2::Zero();  // probe point at the end of the run [m]
-  double peak = 0.0;          // peak top tension over the run [N]
-  double rms = 0.0;           // RMS top tension over the run [N]
+  Vec2 probe = Vec2::Zero();        // probe point at the end of the run [m]
+  // Force histories on the grid t_k = k kHistoryDt (tradeoff_history.h) [N]:
+  std::vector<double> top_tension;  // LineOutputs::top_tension, |force on the hang-off point|
+  std::vector<double> max_axial;    // LineOutputs::max_tension: the largest axial force along the line
+                                    // (max over rfes of axial_force, floored at 0)
+  double peak() const;              // largest top tension on the grid
+  double rms() const;               // RMS top tension on the grid
 };
 
 struct Case {
@@ -38,6 +45,7 @@ struct Case {
     double h;
   };
   std::vector<RefRun> ref_runs;
+  std::string note;  // what differs from the shipped scene (e.g. the damped variants), for the tables
   // Table 1: the end position is docs/validation.md's converged value, not the reference run's.
   bool fixed_probe = false;
   Vec2 probe_ref = Vec2::Zero();

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <ctime>
+#include <stdexcept>
 #include <vector>
 
 #include "riser_sim/run_builder.h"
@@ -14,8 +15,8 @@ using namespace riser_sim;
 
 namespace {
 
-constexpr double kSampleDt = 0.01;    // [s] top-tension sampling
 constexpr double kProbeWall = 0.3;    // [s] of stepping before the cost is extrapolated
+constexpr double kGridEps = 1e-7;     // [s] a step end this close to t_k is on the grid
 
 double threadCpu() {
   timespec ts;
@@ -23,18 +24,54 @@ double threadCpu() {
   return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
 }
 
-Scene sceneOf(const Config& c) {
-  Scene s = c.c->scene(c.n);
-  s.solver.formulation = riser_sim::toChoice<riser_sim::FormulationKind>(c.formulation);
-  s.solver.integrator = riser_sim::toChoice<riser_sim::IntegratorKind>(c.integrator);
-  if (c.tol > 0.0) s.solver.tolerance = c.tol;
-  s.solver.jacobian = riser_sim::toChoice<riser_sim::JacobianKind>(c.jacobian);
-  return s;
-}
+// Records the force histories on the grid t_k (tradeoff_history.h): the outputs at a step end on t_k,
+// or linear interpolation between the outputs before and after a step that crosses t_k.
+class HistoryRecorder {
+ public:
+  HistoryRecorder(Measures& m, double duration) : m_(m), samples_(historySamples(duration)) {
+    m_.top_tension.assign(samples_, NAN);  // sized here, before the timed stepping
+    m_.max_axial.assign(samples_, NAN);
+  }
+  // Before a step to t1: keeps the outputs at its start if a grid point lies strictly inside it.
+  void before(Simulator& sim, double t1) {
+    t0_ = sim.time();
+    if (next_ < samples_ && tk(next_) < t1 - kGridEps) before_ = values(sim);
+  }
+  // After the step (also at t = 0, before any step).
+  void after(Simulator& sim) {
+    const double t1 = sim.time();
+    if (next_ >= samples_ || tk(next_) > t1 + kGridEps) return;
+    const Vals v1 = values(sim);
+    for (; next_ < samples_ && tk(next_) < t1 - kGridEps; ++next_) {
+      const double w = (tk(next_) - t0_) / (t1 - t0_);
+      put(next_, {(1.0 - w) * before_.T + w * v1.T, (1.0 - w) * before_.A + w * v1.A});
+    }
+    if (next_ < samples_ && std::abs(tk(next_) - t1) <= kGridEps) put(next_++, v1);
+  }
+  bool complete() const { return next_ == samples_; }
+
+ private:
+  struct Vals {
+    double T, A;
+  };
+  static double tk(int k) { return k * kHistoryDt; }
+  static Vals values(Simulator& sim) {
+    const LineOutputs& o = sim.outputs();
+    return {o.top_tension, o.max_tension};
+  }
+  void put(int k, const Vals& v) {
+    m_.top_tension[k] = v.T;
+    m_.max_axial[k] = v.A;
+  }
+  Measures& m_;
+  int samples_, next_ = 0;
+  double t0_ = 0.0;
+  Vals before_{NAN, NAN};
+};
 
 Result runOnce(const Config& c, double max_run) {
   Result r;
-  Scene s = sceneOf(c);
+  Scene s = applyConfig(c);
   std::unique_ptr<Simulator> sim;
   try {
     s.solver.dt = c.h > 0.0 ? c.h : 1e-3;
@@ -53,16 +90,11 @@ Result runOnce(const Config& c, double max_run) {
   const Case& k = *c.c;
   const long steps = std::lround(k.duration / r.h);
   std::chrono::steady_clock::duration wall{0};
-  double cpu = 0.0, sum2 = 0.0, next = 0.0;
-  long samples = 0;
+  double cpu = 0.0;
+  HistoryRecorder history(r.m, k.duration);
+  history.after(*sim);  // t = 0
   for (long i = 0; i < steps; ++i) {
-    if (sim->time() >= next - 1e-9) {
-      const double T = sim->outputs().top_tension;
-      r.m.peak = std::max(r.m.peak, T);
-      sum2 += T * T;
-      ++samples;
-      next += kSampleDt;
-    }
+    history.before(*sim, sim->time() + r.h);
     const auto t0 = std::chrono::steady_clock::now();
     const double c0 = threadCpu();
     const bool ok = sim->step();
@@ -73,6 +105,7 @@ Result runOnce(const Config& c, double max_run) {
       r.reason = sim->divergenceReason();
       return r;
     }
+    history.after(*sim);
     const double w = std::chrono::duration<double>(wall).count();
     if (w > kProbeWall && i + 1 < steps && max_run > 0.0) {
       const double predicted = cpu * double(steps) / double(i + 1);
@@ -85,12 +118,12 @@ Result runOnce(const Config& c, double max_run) {
       max_run = 0.0;  // predicted within budget: no more checks
     }
   }
+  if (!history.complete()) throw std::logic_error("tradeoff: the force history missed grid points");
   const LineOutputs& o = sim->outputs();
   r.status = "ok";
   r.steps = steps;
   r.m.probe = probeAt(o, k.scene(c.n).length, c.n, k.probe_s);
   if (k.probe_relative) r.m.probe -= o.points.front();
-  r.m.rms = std::sqrt(sum2 / double(std::max(1L, samples)));
   r.drift = sim->energyDrift();
   r.wall = std::chrono::duration<double>(wall).count();
   r.cpu = cpu;
@@ -99,6 +132,20 @@ Result runOnce(const Config& c, double max_run) {
 }
 
 }  // namespace
+
+Scene applyConfig(const Config& c) {
+  Scene s = c.c->scene(c.n);
+  s.solver.formulation = toChoice<FormulationKind>(c.formulation);
+  s.solver.integrator = toChoice<IntegratorKind>(c.integrator);
+  if (c.tol > 0.0) s.solver.tolerance = c.tol;
+  s.solver.jacobian = toChoice<JacobianKind>(c.jacobian);
+  if (!std::isnan(c.rho_inf)) {
+    if (s.solver.integrator != IntegratorKind::kGeneralizedAlpha)
+      throw std::invalid_argument("rho_inf: only generalized_alpha has solver.rho_inf");
+    s.solver.rho_inf = c.rho_inf;
+  }
+  return s;
+}
 
 Result run(const Config& c, double max_run, double repeat_below) {
   std::vector<Result> rs{runOnce(c, max_run)};

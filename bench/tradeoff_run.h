@@ -1,7 +1,9 @@
 // One timed run of the speed/accuracy sweep: a case at (formulation, integrator, n, h or tolerance),
-// stepped to the case's duration with the top tension sampled every 10 ms. Timing covers the stepping
-// only (not the statics nor the sampling); the thread's CPU time is recorded beside the wall time.
+// stepped to the case's duration with the force histories sampled on the grid of tradeoff_history.h.
+// Timing covers the stepping only (not the statics nor the sampling); the thread's CPU time is recorded
+// beside the wall time.
 #pragma once
+#include <cmath>
 #include <string>
 
 #include "tradeoff_cases.h"
@@ -15,7 +17,12 @@ struct Config {
   double h = 0.0;    // solver.dt (dopri5: output step) [s]; <= 0: -h x rk4's estimated limit
   double tol = 0.0;  // dopri5 only
   std::string jacobian = "auto";  // implicit schemes: auto | structured | dense
+  double rho_inf = NAN;  // solver.rho_inf of a scheme that has it (NaN: the scene's); see applyConfig
 };
+
+// The scene of a run: the case's scene at n with the Config's solver settings. The one place a Config
+// reaches the Scene (a new solver setting of the sweep goes here).
+riser_sim::Scene applyConfig(const Config& c);
 
 struct Result {
   std::string status;  // ok | diverged | skipped
