@@ -28,6 +28,7 @@ add_library(riser_sim_core
   src/core/simulator.cpp
   src/core/solver_setup.cpp
   src/core/stability_estimate.cpp
+  src/core/force_noise.cpp
   src/core/statics.cpp
   src/core/statics_residual.cpp
   src/core/statics_guess.cpp
