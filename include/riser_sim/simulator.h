@@ -7,6 +7,7 @@
 #include <string>
 
 #include "riser_sim/choices.h"
+#include "riser_sim/force_noise.h"
 #include "riser_sim/force_term.h"
 #include "riser_sim/formulation.h"
 #include "riser_sim/integrator.h"
@@ -90,7 +91,18 @@ class Simulator : private OdeSystem {
   // adaptive schemes have no such limit; stableStepEstimate() still gives rk4's for reference.
   double highestFrequency() const { return omega_max_; }
   double stableStepEstimate() const;
+  // Empty, or why solver.dt is above the explicit scheme's estimated limit, with a safe step (the node
+  // refuses to start on it: such a run diverges within milliseconds).
+  std::string stepAboveLimit() const;
   const Integrator& integrator() const { return *integrator_; }
+
+  // Step-to-step noise in the top tension and the largest axial force, relative to their RMS, over the
+  // run and over the last ~10 s (force_noise.h): above kForceNoiseWarning the step does not resolve the
+  // forces it reports.
+  const ForceNoiseMonitor& forceNoise() const { return noise_; }
+  // Empty, or why forces with noise e (forceNoise().total() or .recent()) are not resolved and what
+  // setting resolves them.
+  std::string forceWarning(const ForceNoise& e) const;
 
  private:
   void rhs(double t, const VecX& y, VecX& dy) override;
@@ -100,6 +112,8 @@ class Simulator : private OdeSystem {
   void solveShifted(const VecX& b, VecX& x) override { formulation_->solveShifted(b, x, *data_); }
   double potentialEnergy(const Kinematics& kin) const;
   void checkDivergence(bool stepped);
+  void sampleForces();
+  double axialForce(int i, const BodyKinematics& b, const Reactions& re) const;  // [N]
   void estimateHighestFrequency();
 
   std::shared_ptr<const Model> model_;
@@ -115,6 +129,7 @@ class Simulator : private OdeSystem {
   long steps_ = 0;
   TermDataSet term_data_;  // the terms' history in this run (seabed anchors); the model stays immutable
   std::string reason_;
+  ForceNoiseMonitor noise_;
   LineOutputs out_;
   Kinematics kin_;
 };

@@ -80,6 +80,7 @@ void Simulator::setInitialState(const Kinematics& kin, double t0) {
   formulation_->kinematics(y_, PointMotion{kin[0].A, kin[0].A_dot, Vec2::Zero()}, kin_);
   term_data_.startRun(*model_, kin_);
   integrator_->restart();
+  noise_.reset();
   estimateHighestFrequency();
   e0_ = totalEnergy();
   max_constraint_error_ = constraintError();
@@ -163,7 +164,25 @@ bool Simulator::step() {
     integrator_->forcesChanged();
   }
   checkDivergence(stepped);
+  if (!diverged()) sampleForces();
   return !diverged();
+}
+
+double Simulator::axialForce(int i, const BodyKinematics& b, const Reactions& re) const {
+  const Rfe& r = model_->rfe(i);
+  return model_->options().axial_flexibility ? r.axial_stiffness * b.delta + r.axial_damping * b.delta_dot
+                                             : re.joint[i].dot(b.e());  // tension at A_i from the joint reaction
+}
+
+// The forces of the step's last evaluation when it was made at the step's end time (every scheme's
+// last stage is: rk4's k4, the implicit schemes' end evaluation, dopri5's FSAL stage), O(n), no extra
+// evaluation.
+void Simulator::sampleForces() {
+  if (data_->t != t_) return;
+  const Kinematics& kin = data_->kin;
+  double tmax = 0.0;
+  for (int i = 0; i < model_->bodies(); ++i) tmax = std::max(tmax, axialForce(i, kin[i], data_->reactions));
+  noise_.add(data_->reactions.top.norm(), tmax, settings_.dt);
 }
 
 bool Simulator::advanceTo(double t_end) {
@@ -226,6 +245,33 @@ void Simulator::checkDivergence(bool stepped) {
   reason_ = why.str();
 }
 
+std::string Simulator::stepAboveLimit() const {
+  if (!integrator_->explicitFixedStep() || !(settings_.dt > stableStepEstimate())) return "";
+  std::ostringstream why;
+  why << "solver.dt " << settings_.dt << " s is above " << integrator_->name() << "'s stability limit ~"
+      << stableStepEstimate() << " s (highest frequency " << omega_max_
+      << " rad/s, damping included): a safe solver.dt is " << 0.8 * stableStepEstimate()
+      << " s, or use solver.integrator " << name(IntegratorKind::kGeneralizedAlpha) << " / "
+      << name(IntegratorKind::kMidpoint) << " (implicit) or " << name(IntegratorKind::kDopri5) << " (adaptive)";
+  return why.str();
+}
+
+std::string Simulator::forceWarning(const ForceNoise& e) const {
+  if (!(e.worst() > kForceNoiseWarning)) return "";
+  std::ostringstream why;
+  why.precision(2);
+  why << "forces not resolved: step-to-step noise of " << 100.0 * e.top << " % in the top tension and "
+      << 100.0 * e.max_axial << " % in the largest axial force (bound " << 100.0 * kForceNoiseWarning
+      << " %): modes faster than solver.dt " << settings_.dt << " s ring in them undamped; ";
+  if (settings_.integrator == IntegratorKind::kGeneralizedAlpha)
+    why << "lower solver.rho_inf (now " << settings_.rho_inf << "; 0 damps what the step does not resolve in one step)"
+        << " or a smaller solver.dt";
+  else
+    why << "use solver.integrator " << name(IntegratorKind::kGeneralizedAlpha)
+        << " (damps what the step does not resolve) or a smaller solver.dt";
+  return why.str();
+}
+
 double Simulator::constraintError() const { return formulation_->constraintError(y_, top_->at(t_)); }
 
 double Simulator::potentialEnergy(const Kinematics& kin) const {
@@ -255,9 +301,7 @@ const LineOutputs& Simulator::outputs() {
     out_.angles[i] = b.phi;
     out_.elongations[i] = b.delta;
     out_.arc_length[i] = r.s_begin + 0.5 * r.length;
-    out_.axial_force[i] = model_->options().axial_flexibility
-                              ? r.axial_stiffness * b.delta + r.axial_damping * b.delta_dot
-                              : re.joint[i].dot(b.e());  // tension at A_i from the joint reaction
+    out_.axial_force[i] = axialForce(i, b, re);
     tmax = std::max(tmax, out_.axial_force[i]);
   }
   out_.points[nb] = kin[nb - 1].end();
