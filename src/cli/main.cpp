@@ -151,6 +151,7 @@ int main(int argc, char** argv) {
   // h = 0.02 s); a scheme that damps what it does not resolve (rosenbrock2 at 0.02 s: 12 %) has moved
   // energy that the line never had, and its forces with it. Never "ok": status "warning" with the reason
   // in the summary and on stderr, exit 0 (the user chose the step; the run finished).
+  // Forces with step-to-step noise above kForceNoiseWarning (force_noise.h) are not resolved either.
   std::string warning;
   if (diverged.empty() && std::abs(last.energy_drift) > kEnergyDriftWarning) {
     char buf[320];
@@ -159,6 +160,10 @@ int main(int argc, char** argv) {
                   "positions and forces may be wrong; use a smaller solver.dt or solver.integrator midpoint",
                   last.energy_drift, kEnergyDriftWarning);
     warning = buf;
+  }
+  if (diverged.empty()) {
+    const std::string forces = sim->forceWarning(sim->forceNoise().total());
+    if (!forces.empty()) warning += (warning.empty() ? "" : "; ") + forces;
   }
   bool summary_written = true;
   if (opt.summary) {
@@ -176,6 +181,8 @@ int main(int argc, char** argv) {
         .add("tension_max", last.tension_max)
         .add("max_constraint_error", sim->maxConstraintError())
         .add("energy_drift", last.energy_drift)
+        .add("force_noise_top", sim->forceNoise().total().top)
+        .add("force_noise_max_axial", sim->forceNoise().total().max_axial)
         .add("scene", scene.name)
         .add("n", scene.elements)
         .add("dt", dt)
