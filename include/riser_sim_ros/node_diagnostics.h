@@ -16,7 +16,7 @@
 
 namespace riser_sim_ros {
 
-enum class RunMode { kWaiting, kRunning, kDiverged, kStaticsFailed };
+enum class RunMode { kWaiting, kRunning, kDiverged, kStartFailed };
 
 // v printed with `format`; "n/a" for NaN/Inf (diagnostics never carry NaN).
 std::string num(double v, const char* format = "%.6g");

@@ -14,7 +14,7 @@ std::string num(double v, const char* format) {
 
 namespace {
 const char* modeName(RunMode m) {
-  static const char* names[] = {"waiting for vessel pose", "running", "diverged", "statics failed"};
+  static const char* names[] = {"waiting for vessel pose", "running", "diverged", "could not start"};
   return names[static_cast<int>(m)];
 }
 }  // namespace
@@ -105,6 +105,10 @@ std::string NodeDiagnostics::runningMessage(const ros::Time& now, const RunView&
   addValue("energy [J]", num(sim.totalEnergy(), "%.6e"));
   const double drift = sim.energyDrift();
   addValue("energy balance error (relative)", num(drift, "%.3e"));
+  const riser_sim::ForceNoise noise = sim.forceNoise().recent();
+  addValue("force noise, top tension (relative, last 10 s)", num(noise.top, "%.3e"));
+  addValue("force noise, largest axial force (relative, last 10 s)", num(noise.max_axial, "%.3e"));
+  const std::string forces = sim.forceWarning(noise);
   const riser_sim::PointMotion top = run.motion->at(sim.time());
   addValue("hang-off x [m]", num(top.p.x(), "%.4f"));
   addValue("hang-off z [m]", num(top.p.y(), "%.4f"));
@@ -120,6 +124,9 @@ std::string NodeDiagnostics::runningMessage(const ros::Time& now, const RunView&
     st.level = DiagnosticStatus::WARN;
     message = "energy balance off by " + num(drift, "%.3g") + " of m g L: solver.dt does not resolve "
               "the motion, positions and forces may be wrong (smaller solver.dt or midpoint); " + message;
+  } else if (!forces.empty()) {
+    st.level = DiagnosticStatus::WARN;
+    message = forces + "; " + message;
   }
   return message;
 }

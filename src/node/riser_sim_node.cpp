@@ -94,7 +94,7 @@ void RiserSimNode::cycle() {
   bool period_end = false;
   switch (run_.mode) {
     case RunMode::kWaiting:
-    case RunMode::kStaticsFailed:
+    case RunMode::kStartFailed:
       if (n > 0 && (run_.mode == RunMode::kWaiting || (now - last_start_attempt_).toSec() >= 1.0)) {
         std::string message;
         if (start(drained_[n - 1], now, message)) ROS_INFO("%s: %s", name_.c_str(), message.c_str());
@@ -148,6 +148,11 @@ bool RiserSimNode::start(const VesselSample& s, const ros::Time& now, std::strin
     motion = m.get();
     in.motion = std::move(m);
     run = riser_sim::buildRun(sc, std::move(in));
+    const std::string above = run.sim->stepAboveLimit();
+    if (!above.empty()) {
+      run.sim.reset();
+      run_.reason = "could not start: " + above;
+    }
   } catch (const std::invalid_argument& e) {  // a setup the loader let through
     run_.reason = std::string("could not start: ") + e.what();
   } catch (const std::runtime_error& e) {  // the statics failed, or the start is not finite
@@ -157,7 +162,7 @@ bool RiserSimNode::start(const VesselSample& s, const ros::Time& now, std::strin
     run_.reason = std::string("could not start: ") + e.what();
   }
   if (!run.sim) {
-    run_.mode = RunMode::kStaticsFailed;
+    run_.mode = RunMode::kStartFailed;
     message = run_.reason;
     return false;
   }
