@@ -4,7 +4,9 @@
 set -uo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 ws=${RISER_SIM_WS:-$root/.ws}
+phase() { echo "time: $1 done at ${SECONDS} s"; }  # where CI's minutes go
 "$root/scripts/build.sh" -j2 all tests || { echo "0 passed, 1 failed"; exit 1; }
+phase "catkin build"
 cd "$ws"
 # The sanitizer and fuzzer builds (~10 min of CPU) compile at the lowest priority while the tests below
 # run: the rostests mostly wait on real time. Their steps further down then find them built.
@@ -21,8 +23,10 @@ set +u
 source devel/setup.bash
 catkin_make -DPYTHON_EXECUTABLE=/usr/bin/python3 run_tests -j1 >"$ws/run_tests.log" 2>&1
 rc_run=$?
+phase "gtests and rostests"
 grep -E "^\[ +(RUN|OK|FAILED|PASSED) +\]|FAILURE|Error|error:" "$ws/run_tests.log" | grep -v "^\[ RUN" | tail -n 200
 [ -n "$prebuild_pid" ] && wait "$prebuild_pid"  # a failed build is reported by its step below
+phase "sanitizer and fuzzer builds"
 # The core's and the CLI's gtests again under ASan + UBSan (docs/hardening.md); their JUnit files go
 # next to catkin's, so the line below counts them. RISER_SIM_SANITIZE=0 skips this step.
 rc_san=0
@@ -31,6 +35,7 @@ if [ "${RISER_SIM_SANITIZE:-1}" != 0 ]; then
   rc_san=$?
   grep -E "^sanitize: |ERROR: |runtime error:" "$ws/test_sanitize.log" | head -n 40
   echo "sanitizers: $(tail -n 1 "$ws/test_sanitize.log") (see $ws/test_sanitize.log)"
+  phase "sanitizer tests"
 fi
 # A short libFuzzer run on the scene loader (docs/hardening.md): builds out/fuzz/fuzz_scene (clang-14, installed
 # by make test) and fuzzes from the seeds and regressions for RISER_SIM_FUZZ_SECONDS (default 30; 0 skips)
@@ -51,6 +56,7 @@ if [ "$fuzz_s" != 0 ]; then
     "<testcase name=\"scene_${fuzz_s}s\" classname=\"fuzz\">$failure</testcase></testsuite></testsuites>" \
     >build/test_results/fuzz/fuzz_scene.xml
   echo "fuzz: $(grep -E "^Done [0-9]+ runs" "$ws/fuzz.log" | tail -n 1) (see $ws/fuzz.log)"
+  phase "fuzz"
 fi
 /usr/bin/python3 "$root/scripts/count_results.py" build/test_results
 rc_count=$?
