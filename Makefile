@@ -17,8 +17,9 @@ build: deps
 check: deps
 	@scripts/check.sh $(CHECK_ARGS)
 
-# Every test: gtests, rostests, the core's gtests under sanitizers, a 30 s scene fuzz (docs/hardening.md).
-test: fuzz-deps
+# Every test: gtests, rostests, the core's gtests under sanitizers (docs/hardening.md). The fuzzer's seeds and
+# regressions replay as gtests; RISER_SIM_FUZZ_SECONDS=30 make test adds a fuzz run (after make fuzz-deps).
+test: deps
 	@scripts/test.sh
 
 # The core's and the CLI's gtests under ASan + UBSan (part of `make test` too; docs/hardening.md).
