@@ -234,8 +234,7 @@ void Simulator::checkDivergence(bool stepped) {
     const double limit_h = stableStepEstimate();
     if (settings_.dt > 0.9 * limit_h)
       why << "; it is at or above " << integrator_->name() << "'s stability limit h ~ " << limit_h
-          << " s (highest frequency " << omega_max_ << " rad/s): a safe solver.dt is " << 0.8 * limit_h
-          << " s, or use solver.integrator rosenbrock2 / midpoint (implicit) or dopri5 (adaptive)";
+          << " s (highest frequency " << omega_max_ << " rad/s): " << safeStepAdvice();
     else
       why << " (" << integrator_->name() << "'s stability limit estimated at the initial state, h ~ " << limit_h
           << " s, is not exceeded: the line's highest frequency can grow with its tension during the run (a "
@@ -245,14 +244,20 @@ void Simulator::checkDivergence(bool stepped) {
   reason_ = why.str();
 }
 
+std::string Simulator::safeStepAdvice() const {
+  std::ostringstream advice;
+  advice << "a safe solver.dt is " << 0.8 * stableStepEstimate() << " s, or use solver.integrator "
+         << name(IntegratorKind::kGeneralizedAlpha) << " / " << name(IntegratorKind::kMidpoint) << " (implicit) or "
+         << name(IntegratorKind::kDopri5) << " (adaptive)";
+  return advice.str();
+}
+
 std::string Simulator::stepAboveLimit() const {
   if (!integrator_->explicitFixedStep() || !(settings_.dt > stableStepEstimate())) return "";
   std::ostringstream why;
   why << "solver.dt " << settings_.dt << " s is above " << integrator_->name() << "'s stability limit ~"
-      << stableStepEstimate() << " s (highest frequency " << omega_max_
-      << " rad/s, damping included): a safe solver.dt is " << 0.8 * stableStepEstimate()
-      << " s, or use solver.integrator " << name(IntegratorKind::kGeneralizedAlpha) << " / "
-      << name(IntegratorKind::kMidpoint) << " (implicit) or " << name(IntegratorKind::kDopri5) << " (adaptive)";
+      << stableStepEstimate() << " s (highest frequency " << omega_max_ << " rad/s, damping included): "
+      << safeStepAdvice();
   return why.str();
 }
 
