@@ -9,7 +9,7 @@ PKGS=(build-essential cmake catkin ros-core-dev libroscpp-dev librostest-dev pyt
   python3-rostopic python3-rosservice python3-rosmaster python3-roslaunch
   libnodeletlib-dev libnodelet-dev libnodeletlib-tools pluginlib-dev libclass-loader-dev)
 if [ "${RISER_SIM_GUI_DEPS:-0}" = 1 ]; then PKGS+=(rviz xvfb xauth ffmpeg); fi
-# The scene fuzzer (libFuzzer: clang + its runtime, ~400 MB installed): make test and make fuzz.
+# The scene fuzzer (libFuzzer: clang + its runtime, ~400 MB installed): make fuzz, make fuzz-replay.
 if [ "${RISER_SIM_FUZZ_DEPS:-0}" = 1 ]; then PKGS+=(clang-14 libclang-rt-14-dev); fi
 missing=()
 for p in "${PKGS[@]}"; do
