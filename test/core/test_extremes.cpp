@@ -26,6 +26,8 @@ enum class Expect {
   kSound,            // finite outputs, energy balance and constraint error within the bounds
   kSoundOrClean,     // either of: sound, or a clean early stop naming solver.dt
   kCleanDivergence,  // a clean early stop naming solver.dt (and, above rk4's limit, a safe dt)
+  kCleanOrFlagged,   // either of: a clean early stop, or a finished run the CLI and node flag (energy balance
+                     // beyond kEnergyDriftWarning or forces beyond kForceNoiseWarning): never a silent "ok"
   kRefused,          // buildSimulator throws std::invalid_argument naming the key to change
 };
 
@@ -201,15 +203,16 @@ std::vector<Case> cases() {
   c.push_back({"rk4_0.9x_limit_inextensible", inextensible, {"rk4"}, 20.0, Expect::kSound, kEnergyBound, 0.9});
   c.push_back({"rk4_1.5x_limit_inextensible", inextensible, {"rk4"}, 2.0, Expect::kCleanDivergence, 0.0, 1.5});
   // rosenbrock2 on the J-lay scene at h = 0.1 s: a seabed contact that starts inside the step is a stiff
-  // spring the step's linearisation does not know; the run goes unstable within a few steps and must be
-  // stopped before anything overflows (the check on unresolved motion: an rfe turning > 0.5 rad per step).
+  // spring the step's linearisation does not know. Without the drag in the linearisation the run went
+  // unstable within a few steps and had to be stopped cleanly; with it the run finishes, 1.6 % of m g L
+  // off in energy and 18 % step-to-step noise in the tension: it must end flagged, never "ok".
   c.push_back({"jlay_rosenbrock2_h0.1",
                [] {
                  Scene s = loadSceneFile(std::string(RISER_SIM_SOURCE_DIR) + "/config/scenes/paper_jlay_170m.yaml");
                  s.solver.dt = 0.1;
                  return s;
                },
-               {"rosenbrock2"}, 27.0, Expect::kCleanDivergence, 0.0, 0.0, nullptr, {"recursive"}});
+               {"rosenbrock2"}, 27.0, Expect::kCleanOrFlagged, 0.0, 0.0, nullptr, {"recursive"}});
   // Midpoint's Newton cannot follow the undamped axial mode at h = 1 s (5400x rk4's limit, n = 100),
   // not even on h/8 (h = 0.05 s works through 2-4 substeps): it must stop at once, naming solver.dt,
   // with the last good state kept.
@@ -290,6 +293,12 @@ TEST(Extremes, Table) {
           continue;
         }
         EXPECT_NE(c.expect, Expect::kCleanDivergence) << "expected a clean divergence at dt = " << s.solver.dt;
+        if (c.expect == Expect::kCleanOrFlagged) {
+          const bool flagged = std::abs(sim->energyDrift()) > kEnergyDriftWarning ||
+                               !sim->forceWarning(sim->forceNoise().total()).empty();
+          EXPECT_TRUE(flagged) << "finished unflagged: energy drift " << sim->energyDrift();
+          continue;
+        }
         const LineOutputs& o = sim->outputs();
         EXPECT_TRUE(outputsFinite(o));
         const double per_d = c.constraint_per_d > 0.0 ? c.constraint_per_d : kConstraintBoundPerD;

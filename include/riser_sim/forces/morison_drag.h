@@ -19,6 +19,10 @@ class MorisonDrag : public ForceTerm {
   double potentialEnergy(const Model&, const TermData*, const Kinematics&) const override { return 0.0; }  // dissipative: power() only
   double addForcesAndPower(const Model& model, const TermData*, const Kinematics& kin, double t,
                            VecX& Q) const override;
+  // Damping C = -∂F/∂v of each quadrature point (the quadratic law's slope 2 k D |V'|). The force's dependence
+  // on position (e, n turning, the water's field) is left out: it stays explicit in the structured solves.
+  bool addStiffness(const Model& model, const TermData*, const Kinematics& kin, double t,
+                    StiffnessBlocks& S) const override;
 
  private:
   // Drag force [N] on part p of rfe i, its point of application (s0, kappa) and that point's velocity.

@@ -37,6 +37,29 @@ double MorisonDrag::power(const Model& model, const TermData*, const Kinematics&
   return sweep(model, kin, t, nullptr);
 }
 
+bool MorisonDrag::addStiffness(const Model& model, const TermData*, const Kinematics& kin, double t,
+                               StiffnessBlocks& S) const {
+  const Mat2 zero = Mat2::Zero();
+  for (int i = 0; i < model.bodies(); ++i)
+    for (int p = 0; p < 2; ++p) {
+      const BodyKinematics& b = kin[i];
+      const WetPart w = wetPart(model, b, i, p, water_.spec().surface);
+      if (w.length <= 0.0) continue;
+      Vec2 rel = b.velocity(w.s0, w.kappa);
+      if (water_.moving()) {
+        Vec2 vw, aw;
+        water_.at(b.point(w.s0, w.kappa), t, vw, aw);
+        rel -= vw;
+      }
+      const Vec2 e = b.e(), n = b.nrm();
+      const double vt = e.dot(rel), vn = n.dot(rel);
+      const double k = 0.5 * water_.spec().density * model.line().outer_diameter * w.length;  // -∂F/∂V' > 0
+      const Mat2 Cp = (2.0 * k * cd_t_ * std::abs(vt)) * e * e.transpose() + (2.0 * k * cd_n_ * std::abs(vn)) * n * n.transpose();
+      addPointStiffness(b, w.s0, w.kappa, Vec2::Zero(), zero, Cp, S.K_diag[i], S.C_diag[i]);
+    }
+  return true;
+}
+
 double MorisonDrag::sweep(const Model& model, const Kinematics& kin, double t, VecX* Q) const {
   double pw = 0.0;
   for (int i = 0; i < model.bodies(); ++i)
