@@ -68,8 +68,9 @@ class ForceTerm {
   // The term's run data, preallocated for the model (null: the term has no history).
   virtual std::unique_ptr<TermData> makeData(const Model&) const { return nullptr; }
   // At the start of a run (state kin) and after every step; only called with data from makeData().
+  // endStep() returns whether the history changed (the forces at an unchanged state are then different).
   virtual void startRun(const Model&, const Kinematics&, TermData&) const {}
-  virtual void endStep(const Model&, const Kinematics&, TermData&) const {}
+  virtual bool endStep(const Model&, const Kinematics&, TermData&) const { return false; }
 };
 
 // The run data of every term of one model, indexed like model.terms(): owned by a Simulator (or the
@@ -90,9 +91,12 @@ class TermDataSet {
     for (size_t k = 0; k < data_.size(); ++k)
       if (data_[k]) model.terms()[k]->startRun(model, kin, *data_[k]);
   }
-  void endStep(const Model& model, const Kinematics& kin) {
+  // Whether any term's history changed.
+  bool endStep(const Model& model, const Kinematics& kin) {
+    bool changed = false;
     for (size_t k = 0; k < data_.size(); ++k)
-      if (data_[k]) model.terms()[k]->endStep(model, kin, *data_[k]);
+      if (data_[k]) changed = model.terms()[k]->endStep(model, kin, *data_[k]) || changed;
+    return changed;
   }
 
  private:

@@ -160,8 +160,7 @@ bool Simulator::step() {
   t_ += settings_.dt;
   if (term_data_.any()) {
     kinematics(kin_);
-    term_data_.endStep(*model_, kin_);
-    integrator_->forcesChanged();
+    if (term_data_.endStep(*model_, kin_)) integrator_->forcesChanged();
   }
   checkDivergence(stepped);
   if (!diverged()) sampleForces();

@@ -36,7 +36,7 @@ class Seabed : public ForceTerm {
   const SeabedSpec& spec() const { return spec_; }
   std::unique_ptr<TermData> makeData(const Model& model) const override;
   void startRun(const Model& model, const Kinematics& kin, TermData& data) const override;
-  void endStep(const Model& model, const Kinematics& kin, TermData& data) const override;
+  bool endStep(const Model& model, const Kinematics& kin, TermData& data) const override;
   int contacts(const Model& model, const Kinematics& kin) const;
 
  private:

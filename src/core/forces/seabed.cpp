@@ -80,16 +80,25 @@ void Seabed::startRun(const Model& model, const Kinematics& kin, TermData& data)
   endStep(model, kin, data);
 }
 
-void Seabed::endStep(const Model& model, const Kinematics& kin, TermData& data) const {
+// Anchors are set at touch-down and cleared at lift-off; in between they stay (no change reported).
+bool Seabed::endStep(const Model& model, const Kinematics& kin, TermData& data) const {
   std::vector<double>& anchor = static_cast<SeabedData&>(data).anchor;
+  bool changed = false;
   for (int j = 0; j <= model.bodies(); ++j) {
     int body;
     double s0;
     Vec2 p, v;
     point(model, kin, j, body, s0, p, v);
-    if (p.y() >= spec_.level) anchor[j] = NAN;
-    else if (!std::isfinite(anchor[j])) anchor[j] = p.x();
+    const bool was_anchored = std::isfinite(anchor[j]);
+    if (p.y() >= spec_.level) {
+      anchor[j] = NAN;
+      changed = changed || was_anchored;
+    } else if (!was_anchored) {
+      anchor[j] = p.x();
+      changed = true;
+    }
   }
+  return changed;
 }
 
 int Seabed::contacts(const Model& model, const Kinematics& kin) const {
