@@ -92,9 +92,11 @@ class Rk4 : public Integrator {
   std::complex<double> stabilityFunction(std::complex<double> z) const override {
     return 1.0 + z * (1.0 + z * (0.5 + z * (1.0 / 6.0 + z / 24.0)));
   }
+  Stats stats() const override { return stats_; }
 
  private:
   VecX k1_, k2_, k3_, k4_, tmp_;
+  Stats stats_;
 };
 
 std::unique_ptr<Integrator> makeIntegrator(IntegratorKind kind, const IntegratorOptions& options = {});

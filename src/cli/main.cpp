@@ -146,7 +146,7 @@ int main(int argc, char** argv) {
 
   const double wall_s = std::chrono::duration<double>(wall).count();
   const double sim_s = sim->time();
-  const double rtf = wall_s > 0.0 ? sim_s / wall_s : NAN;  // null in JSON when too fast to time
+  const double rtf = wall_s > 0.0 ? sim_s / wall_s : NAN;
   // The energy balance E - E0 - W closes to round-off on a resolved run (1e-7 on the J-lay at midpoint
   // h = 0.02 s); a scheme that damps what it does not resolve (rosenbrock2 at 0.02 s: 12 %) has moved
   // energy that the line never had, and its forces with it. Never "ok": status "warning" with the reason
@@ -166,6 +166,7 @@ int main(int argc, char** argv) {
     if (!forces.empty()) warning += (warning.empty() ? "" : "; ") + forces;
   }
   bool summary_written = true;
+  const Integrator::Stats stats = sim->integrator().stats();  // what the steps cost
   if (opt.summary) {
     JsonLine j;
     j.add("status", !diverged.empty() ? "diverged" : !written ? "write_failed" : warning.empty() ? "ok" : "warning")
@@ -174,6 +175,8 @@ int main(int argc, char** argv) {
         .add("sim_s", sim_s)
         .add("steps", sim->steps())
         .add("rtf", rtf)
+        .add("rhs_evaluations", stats.rhs)
+        .add("newton_iterations", stats.newton)
         .add("t_last", last.t)
         .add("x_end", last.x_end)
         .add("y_end", last.y_end)

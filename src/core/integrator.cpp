@@ -13,6 +13,7 @@ void Rk4::reset(const StateLayout& layout) {
   k2_.setZero(n);
   k3_.setZero(n);
   k4_.setZero(n);
+  stats_ = Stats();
   tmp_.setZero(n);
 }
 
@@ -25,6 +26,8 @@ bool Rk4::step(OdeSystem& sys, double t, VecX& y, double h) {
   tmp_ = y + h * k3_;
   sys.rhs(t + h, tmp_, k4_);
   y += (h / 6.0) * (k1_ + 2.0 * k2_ + 2.0 * k3_ + k4_);
+  ++stats_.substeps;
+  stats_.rhs += 4;
   return true;  // no contract beyond the arithmetic: the Simulator checks the state
 }
 
