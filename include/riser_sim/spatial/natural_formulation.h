@@ -72,6 +72,8 @@ class NaturalFormulation {
   // Largest joint gap (top, joints, pinned end) [m], and largest | |e_i| - 1 | of state y.
   double constraintError(const VecX& y, const PointMotion3& top) const;
   double directorError(const VecX& y) const;
+  // max_i max(| |e_i| - 1 |, |e_i·e'_i| h): the distance from the unit-length manifold over a step h [s].
+  double manifoldError(const VecX& y, double h) const;
   // Holds y on the unit-length manifold: e_i <- e_i/|e_i|, e'_i <- e'_i - (e_i·e'_i) e_i.
   void project(VecX& y) const;
 

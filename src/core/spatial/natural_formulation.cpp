@@ -201,6 +201,15 @@ double NaturalFormulation::directorError(const VecX& y) const {
   return err;
 }
 
+double NaturalFormulation::manifoldError(const VecX& y, double h) const {
+  double err = 0.0;
+  for (int i = 0; i < model_.bodies(); ++i) {
+    const BodyKinematics3 b = body(y, i);
+    err = std::max({err, std::abs(b.e.norm() - 1.0), std::abs(b.e.dot(b.e_dot)) * h});
+  }
+  return err;
+}
+
 void NaturalFormulation::project(VecX& y) const {
   const int nq = model_.dofs();
   for (int i = 0; i < model_.bodies(); ++i) {

@@ -5,10 +5,18 @@
 namespace riser_sim {
 namespace spatial {
 
+namespace {
+IntegratorOptions withDenseJacobian(IntegratorOptions options) {
+  options.jacobian = JacobianKind::kDense;
+  return options;
+}
+}  // namespace
+
 SpatialSimulator::SpatialSimulator(std::shared_ptr<const SpatialModel> model, std::unique_ptr<TopMotion3> top,
                                    IntegratorKind kind, const IntegratorOptions& options, double stabilization)
     : model_(std::move(model)), top_(std::move(top)), formulation_(*model_, stabilization),
-      data_(formulation_.makeData()), integrator_(makeIntegrator(kind, options)), kin_(model_->bodies()) {
+      data_(formulation_.makeData()), integrator_(makeIntegrator(kind, withDenseJacobian(options))),
+      kin_(model_->bodies()) {
   const int n = 2 * formulation_.positionSize() + 1;  // [q; v; W]
   y_.setZero(n);
   dy_.setZero(n);
@@ -33,7 +41,8 @@ void SpatialSimulator::rhs(double t, const VecX& y, VecX& dy) {
 bool SpatialSimulator::step(double h) {
   const bool ok = integrator_->step(*this, t_, y_, h);
   t_ += h;
-  formulation_.project(y_);  // back onto |e| = 1, e·e' = 0 (the Baumgarte terms hold the drift within the step)
+  // Back onto |e| = 1, e·e' = 0 (the Baumgarte terms hold the drift within the step).
+  if (projection_tol_ <= 0.0 || formulation_.manifoldError(y_, h) > projection_tol_) formulation_.project(y_);
   return ok && y_.allFinite();
 }
 
