@@ -42,11 +42,15 @@ class NaturalData {
   // inverse mass, the unit-length constraint eliminated; WE = W B_Eᵀ), and the 3x3 compliances of the
   // accelerations of A_i, E_i under those forces with their free accelerations aA, aE.
   struct Body {
-    Mat7 W;
-    Mat73 WE;
+    Mat7 W;    // dense path only
+    Mat73 WE;  // dense path only
     Vec7 a;
     Mat3 AA, AE, EE;
     Vec3 aA, aE;
+    // Closed form: n = e/|e|, rho = |e|; (A·n, Δ) inverse mass entries a_*, transverse (A⊥, e⊥) ones t_*;
+    // S, Sk_rho = S_k rho couple the prescribed n·e'' = bdd into the (A·n, Δ) rows.
+    Vec3 n;
+    double rho, a_aa, a_ad, a_dd, t_AA, t_Ae, t_ee, S, Sk_rho, bdd;
   };
   VecX Q, h;
   AlignedVector<Body> body;
@@ -57,7 +61,10 @@ class NaturalData {
 class NaturalFormulation {
  public:
   // stabilization: Baumgarte ω [rad/s] (the planar SolverSettings::stabilization, default 50).
-  NaturalFormulation(const SpatialModel& model, double stabilization);
+  // closed_form: per-rfe inverse in closed form (the mass matrix splits exactly into the direction of e,
+  // where the unit-length constraint prescribes n·e'', and the plane across it); false: a dense 7x7
+  // Cholesky and a Schur step (the general path for terms with inertia later; a cross-check now).
+  NaturalFormulation(const SpatialModel& model, double stabilization, bool closed_form = true);
   const SpatialModel& model() const { return model_; }
   int positionSize() const { return model_.dofs(); }
   std::unique_ptr<NaturalData> makeData() const { return std::make_unique<NaturalData>(model_); }
@@ -78,9 +85,13 @@ class NaturalFormulation {
   void project(VecX& y) const;
 
  private:
-  void bodyBlocks(int i, NaturalData& d) const;
+  double unitGamma(const BodyKinematics3& b) const;  // e·e'' prescribed by the Baumgarte-held |e| = 1
+  void denseBody(int i, NaturalData& d) const;
+  void closedFormBody(int i, NaturalData& d) const;
+  static void closedFormAcceleration(const NaturalData::Body& c, const Vec7& f, double* udd);
   const SpatialModel& model_;
   const double omega_;
+  const bool closed_form_;
 };
 
 }  // namespace spatial

@@ -22,8 +22,8 @@ NaturalData::NaturalData(const SpatialModel& model) : kin(model.bodies()) {
   lambda.assign(nc, Vec3::Zero());
 }
 
-NaturalFormulation::NaturalFormulation(const SpatialModel& model, double stabilization)
-    : model_(model), omega_(stabilization) {}
+NaturalFormulation::NaturalFormulation(const SpatialModel& model, double stabilization, bool closed_form)
+    : model_(model), omega_(stabilization), closed_form_(closed_form) {}
 
 void NaturalFormulation::packState(const Kinematics3& kin, VecX& y) const {
   const int nq = model_.dofs();
@@ -59,7 +59,11 @@ void NaturalFormulation::kinematics(const VecX& y, Kinematics3& kin) const {
 
 // Mass block, its inverse with Δ locked when inextensible, then the unit-length constraint g·u'' = γ
 // (g = [0; 0; e]) eliminated: W = M⁻¹ - u uᵀ/s, u = M⁻¹ g, s = g·u; free u'' = W f + u γ/s.
-void NaturalFormulation::bodyBlocks(int i, NaturalData& d) const {
+double NaturalFormulation::unitGamma(const BodyKinematics3& b) const {
+  return -b.e_dot.squaredNorm() - 2.0 * omega_ * b.e.dot(b.e_dot) - 0.5 * omega_ * omega_ * (b.e.squaredNorm() - 1.0);
+}
+
+void NaturalFormulation::denseBody(int i, NaturalData& d) const {
   const Rfe& r = model_.rfe(i);
   const BodyKinematics3& b = d.kin[i];
   const bool axial = model_.options().axial_flexibility;
@@ -89,8 +93,7 @@ void NaturalFormulation::bodyBlocks(int i, NaturalData& d) const {
   const Vec7 u = W.middleCols<3>(kE) * b.e;
   const double s = b.e.dot(u.tail<3>());
   W.noalias() -= (u / s) * u.transpose();
-  const double gamma = -b.e_dot.squaredNorm() - 2.0 * omega_ * b.e.dot(b.e_dot) -
-                       0.5 * omega_ * omega_ * (b.e.squaredNorm() - 1.0);
+  const double gamma = unitGamma(b);
   const Vec7 f = d.Q.segment<7>(kDofPerBody3 * i) - d.h.segment<7>(kDofPerBody3 * i);
   c.a.noalias() = W * f;
   c.a += (gamma / s) * u;
@@ -101,6 +104,54 @@ void NaturalFormulation::bodyBlocks(int i, NaturalData& d) const {
   c.EE = c.WE.middleRows<3>(kA) + b.e * c.WE.row(kDelta3) + b.len * c.WE.middleRows<3>(kE);
   c.aA = c.a.segment<3>(kA);
   c.aE = c.a.segment<3>(kA) + c.a[kDelta3] * b.e + b.len * c.a.segment<3>(kE) + 2.0 * b.delta_dot * b.e_dot;
+}
+
+// With n = e/ρ the mass matrix splits exactly: along n the rows (A·n, Δ, n·e) with n·e'' = γ/ρ prescribed
+// by the unit-length constraint, leaving [[m, m_k ρ], [m_k ρ, m_k ρ²]] on (A·n, Δ); across n, per
+// direction, [[m, S], [S, I_A]] on (A⊥, e⊥). Δ locked (inextensible): m alone along n.
+void NaturalFormulation::closedFormBody(int i, NaturalData& d) const {
+  const Rfe& r = model_.rfe(i);
+  const BodyKinematics3& b = d.kin[i];
+  NaturalData::Body& c = d.body[i];
+  const double m = r.mass, mk = r.mass_k, S = r.firstMoment(b.delta), I = r.inertiaAboutA(b.delta);
+  c.rho = b.e.norm();
+  c.n = b.e / c.rho;
+  if (model_.options().axial_flexibility) {
+    const double det = mk * c.rho * c.rho * (m - mk);
+    c.a_aa = mk * c.rho * c.rho / det;
+    c.a_ad = -mk * c.rho / det;
+    c.a_dd = m / det;
+    c.Sk_rho = r.firstMomentK(b.delta) * c.rho;
+  } else {
+    c.a_aa = 1.0 / m;
+    c.a_ad = c.a_dd = c.Sk_rho = 0.0;
+  }
+  const double det = m * I - S * S;
+  c.t_AA = I / det;
+  c.t_Ae = -S / det;
+  c.t_ee = m / det;
+  c.S = S;
+  c.bdd = unitGamma(b) / c.rho;
+  closedFormAcceleration(c, d.Q.segment<7>(kDofPerBody3 * i) - d.h.segment<7>(kDofPerBody3 * i), c.a.data());
+  // Compliances p n nᵀ + q (I - n nᵀ): a unit force at E_i adds [F; ρ n·F; len F] to f, and E'' = A'' + ρ Δ'' n + len e''.
+  auto split = [&](double p, double q) { return Mat3(q * Mat3::Identity() + (p - q) * c.n * c.n.transpose()); };
+  const double len = b.len, rho = c.rho;
+  c.AA = split(c.a_aa, c.t_AA);
+  c.AE = split(c.a_aa + rho * c.a_ad, c.t_AA + len * c.t_Ae);
+  c.EE = split(c.a_aa + 2.0 * rho * c.a_ad + rho * rho * c.a_dd, c.t_AA + 2.0 * len * c.t_Ae + len * len * c.t_ee);
+  c.aA = c.a.segment<3>(kA);
+  c.aE = c.a.segment<3>(kA) + c.a[kDelta3] * b.e + len * c.a.segment<3>(kE) + 2.0 * b.delta_dot * b.e_dot;
+}
+
+void NaturalFormulation::closedFormAcceleration(const NaturalData::Body& c, const Vec7& f, double* udd) {
+  const Vec3 fA = f.segment<3>(kA), fe = f.segment<3>(kE);
+  const double nA = c.n.dot(fA), ne = c.n.dot(fe);
+  const double fa = nA - c.S * c.bdd, fd = f[kDelta3] - c.Sk_rho * c.bdd;
+  const Vec3 pA = fA - nA * c.n, pe = fe - ne * c.n;
+  const Vec3 A = (c.a_aa * fa + c.a_ad * fd) * c.n + c.t_AA * pA + c.t_Ae * pe;
+  const Vec3 e = c.bdd * c.n + c.t_Ae * pA + c.t_ee * pe;
+  for (int k = 0; k < 3; ++k) udd[kA + k] = A[k], udd[kE + k] = e[k];
+  udd[kDelta3] = c.a_ad * fa + c.a_dd * fd;
 }
 
 void NaturalFormulation::derivative(double t, const VecX& y, const PointMotion3& top, VecX& dy,
@@ -121,7 +172,10 @@ void NaturalFormulation::derivative(double t, const VecX& y, const PointMotion3&
     double* h = d.h.data() + kDofPerBody3 * i;
     for (int k = 0; k < 3; ++k) h[kA + k] = w * r.mass_k * b.e_dot[k], h[kE + k] = w * r.firstMomentK(b.delta) * b.e_dot[k];
     h[kDelta3] = w * r.mass_k * b.e.dot(b.e_dot);
-    bodyBlocks(i, d);
+    if (closed_form_)
+      closedFormBody(i, d);
+    else
+      denseBody(i, d);
   }
 
   // Rows k = 0..n (+ n+1 pinned): c_k = E_{k-1} - A_k, E_{-1} = top point, A_{n+1} = bottom point; the
@@ -166,7 +220,17 @@ void NaturalFormulation::derivative(double t, const VecX& y, const PointMotion3&
   dy.head(nq) = y.segment(nq, nq);
   for (int i = 0; i < nb; ++i) {
     const NaturalData::Body& c = d.body[i];
-    dy.segment<7>(nq + kDofPerBody3 * i).noalias() = c.a - c.W.middleCols<3>(kA) * d.lambda[i] + c.WE * d.lambda[i + 1];
+    if (closed_form_) {  // f + B_Aᵀ(-λ_i) + B_Eᵀ λ_{i+1}
+      const BodyKinematics3& b = d.kin[i];
+      const Vec3& L = d.lambda[i + 1];
+      Vec7 f = d.Q.segment<7>(kDofPerBody3 * i) - d.h.segment<7>(kDofPerBody3 * i);
+      f.segment<3>(kA) += L - d.lambda[i];
+      f[kDelta3] += b.e.dot(L);
+      f.segment<3>(kE) += b.len * L;
+      closedFormAcceleration(c, f, dy.data() + nq + kDofPerBody3 * i);
+    } else {
+      dy.segment<7>(nq + kDofPerBody3 * i).noalias() = c.a - c.W.middleCols<3>(kA) * d.lambda[i] + c.WE * d.lambda[i + 1];
+    }
   }
   for (int k = 0; k <= nb; ++k) d.reactions.joint[k] = d.lambda[k];
   d.reactions.top = d.lambda[0];
