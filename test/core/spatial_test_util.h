@@ -75,6 +75,11 @@ inline Kinematics planarChain(const Model& m, const Vec2& top, const std::vector
   return kin;
 }
 
+// Top sway p(t) = a (cos(2πt/T) - 1): starts at the origin at rest (consistent with a chain hung from it).
+inline std::unique_ptr<TopMotion> topSway(const Vec2& amplitude, double period) {
+  return std::make_unique<SinusoidMotion>(-amplitude, amplitude, period, 0.0);
+}
+
 // The planar absolute formulation as a bare ODE y = [q; v] (no work entry).
 class PlanarOde : public OdeSystem {
  public:
@@ -82,6 +87,7 @@ class PlanarOde : public OdeSystem {
       : model_(std::move(m)), top_(std::move(top)), f_(*model_, 50.0), data_(f_.makeData()) {}
   void rhs(double t, const VecX& y, VecX& dy) override { f_.derivative(t, y, top_->at(t), dy, *data_); }
   const AbsoluteFormulation& formulation() const { return f_; }
+  const FormulationData& data() const { return *data_; }  // the last evaluation
   const Model& model() const { return *model_; }
   VecX state(const Kinematics& kin) const {
     VecX y = VecX::Zero(2 * model_->dofs());

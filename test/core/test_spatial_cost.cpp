@@ -27,7 +27,7 @@ void measure(int n) {
   s.segments = n;
   auto m2 = spatial_test::planarModel(s);
   const Kinematics kin0 = spatial_test::planarChain(*m2, Vec2::Zero(), std::vector<double>(m2->bodies(), -M_PI / 2 + 0.35));
-  auto top = [] { return std::make_unique<SinusoidMotion>(Vec2::Zero(), Vec2(0.5, 0.0), 2.0, 0.0); };
+  auto top = [] { return spatial_test::topSway(Vec2(0.5, 0.0), 2.0); };
   spatial_test::PlanarOde ode2(m2, top());
   Rk4 rk2;
   VecX y2 = ode2.state(kin0);

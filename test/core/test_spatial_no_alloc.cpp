@@ -45,7 +45,7 @@ long countAllocations(IntegratorKind kind, bool pinned) {
   IntegratorOptions options;
   options.jacobian = JacobianKind::kDense;  // implicit schemes: the spatial core has no structured solves yet
   options.tolerance = 1e-8;
-  SpatialSimulator sim(m, std::make_unique<PlanarMotion3>(std::make_unique<SinusoidMotion>(Vec2::Zero(), Vec2(0.5, 0.3), 2.0, 0.0)),
+  SpatialSimulator sim(m, std::make_unique<PlanarMotion3>(spatial_test::topSway(Vec2(0.5, 0.3), 2.0)),
                        kind, options);
   sim.reset(kin0, 0.0);
   AlignedVector<Vec3> p(m->bodies() + 1);

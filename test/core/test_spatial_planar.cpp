@@ -18,6 +18,7 @@ constexpr double kSample = 0.05;   // [s]
 
 struct Agreement {
   double max_diff = 0.0;  // [m] over every A_i and the end, every sample
+  double max_force_diff = 0.0;  // top and bottom reactions relative to the line's weight
   double max_out_of_plane = 0.0;  // [m] |y| of the spatial run
 };
 
@@ -28,7 +29,7 @@ Agreement compare(bool pinned, double h) {
   for (int i = 0; i < m2->bodies(); ++i) phi[i] = -M_PI / 2 + (pinned ? (i <= 5 ? 0.5 : -0.5) : 0.35);
   const Kinematics kin0 = spatial_test::planarChain(*m2, Vec2::Zero(), phi);
   if (pinned) m2->setBottom(BottomBoundary::kPinned, kin0.back().end());
-  auto top2 = [] { return std::make_unique<SinusoidMotion>(Vec2::Zero(), Vec2(0.5, 0.0), 2.0, 0.0); };
+  auto top2 = [] { return spatial_test::topSway(Vec2(0.5, 0.0), 2.0); };
 
   spatial_test::PlanarOde ode2(m2, top2());
   auto rk2 = makeIntegrator(IntegratorKind::kRk4);
@@ -52,6 +53,13 @@ Agreement compare(bool pinned, double h) {
     }
     const std::vector<Vec2> p2 = ode2.positions(y2);
     sim.positions(p3);
+    VecX dy2(y2.size());
+    ode2.rhs(t, y2, dy2);
+    const Reactions& r2 = ode2.data().reactions;
+    const Reactions3& r3 = sim.evaluate().reactions;
+    const double weight = (s.props.mass_per_length * s.length + s.end_mass) * s.g;
+    a.max_force_diff = std::max({a.max_force_diff, (planarPoint(r2.top) - r3.top).norm() / weight,
+                                 (planarPoint(r2.bottom) - r3.bottom).norm() / weight});
     for (size_t i = 0; i < p2.size(); ++i) {
       a.max_diff = std::max(a.max_diff, (planarPoint(p2[i]) - p3[i]).norm());
       a.max_out_of_plane = std::max(a.max_out_of_plane, std::abs(p3[i].y()));
@@ -60,23 +68,31 @@ Agreement compare(bool pinned, double h) {
   return a;
 }
 
-// Measured (h = 1e-4 s): free 5.0e-12 m, pinned 4.4e-12 m; h = 4e-4 -> 2e-4 s: 1.25e-9 -> 7.8e-11 m (16.0x,
-// O(h⁴)). Bound 1e-9 m: 200x margin, while a modelling error shows at the mm scale (checked: dropping
-// the velocity terms h = 2Δ'[...] gives 1.6e-3 m).
+// Measured (h = 1e-4 s): free 5.2e-13 m, pinned 2.7e-12 m; h = 4e-4 -> 2e-4 s: 1.29e-10 -> 8.1e-12 m (16.0x,
+// O(h⁴)). Bound 1e-9 m: > 300x margin, while a modelling error shows far above it (checked: dropping the
+// velocity terms h = 2Δ'[...] gives 9.0e-5 m and a top reaction 2.8e-3 of the weight off).
 constexpr double kStep = 1e-4;       // [s] rk4; axial modes ω ≤ 900 rad/s: ωh ≤ 0.09
 constexpr double kAgreeTol = 1e-9;   // [m]
+// Reactions (top; bottom when pinned) relative to the weight: they follow the accelerations, where the
+// stiff axial modes amplify the position difference by ω² ~ 1e6 s⁻²: measured 1.8e-12 (free),
+// 3.5e-11 (pinned); bound 1e-6.
+constexpr double kForceTol = 1e-6;
 
 TEST(SpatialPlanar, FreeEndAgreesWithPlanarAbsolute) {
   const Agreement a = compare(false, kStep);
-  std::printf("[spatial planar free] max |x3 - x2| = %.3e m, out of plane %.1e m\n", a.max_diff, a.max_out_of_plane);
+  std::printf("[spatial planar free] max |x3 - x2| = %.3e m, out of plane %.1e m, top reaction %.1e of the weight\n",
+              a.max_diff, a.max_out_of_plane, a.max_force_diff);
   EXPECT_LT(a.max_diff, kAgreeTol);
+  EXPECT_LT(a.max_force_diff, kForceTol);
   EXPECT_EQ(a.max_out_of_plane, 0.0);  // exactly: nothing has a y component
 }
 
 TEST(SpatialPlanar, PinnedBottomAgreesWithPlanarAbsolute) {
   const Agreement a = compare(true, kStep);
-  std::printf("[spatial planar pinned] max |x3 - x2| = %.3e m, out of plane %.1e m\n", a.max_diff, a.max_out_of_plane);
+  std::printf("[spatial planar pinned] max |x3 - x2| = %.3e m, out of plane %.1e m, reactions %.1e of the weight\n",
+              a.max_diff, a.max_out_of_plane, a.max_force_diff);
   EXPECT_LT(a.max_diff, kAgreeTol);
+  EXPECT_LT(a.max_force_diff, kForceTol);
   EXPECT_EQ(a.max_out_of_plane, 0.0);
 }
 

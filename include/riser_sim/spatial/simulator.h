@@ -28,7 +28,7 @@ class SpatialSimulator : private OdeSystem {
   // Project only when max_i max(| |e_i| - 1 |, |e_i·e'_i| h) exceeds tol (default 0: after every step).
   // A projection is a change of the state from outside the integrator: generalized_alpha then restarts
   // its ẏ history from f(y), which makes it first order (measured, test_spatial_integrators); a
-  // tolerance of 1e-4 keeps its second order there (1e-6 still projects most steps at h = 1e-3 s).
+  // tolerance of 1e-4 keeps its second order there.
   void setProjectionTolerance(double tol) { projection_tol_ = tol; }
 
   double time() const { return t_; }
