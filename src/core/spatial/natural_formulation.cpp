@@ -208,13 +208,16 @@ void NaturalFormulation::derivative(double t, const VecX& y, const PointMotion3&
     cmax = std::max(cmax, c.squaredNorm());
     d.diag[k] = dk;
   }
-  for (int k = 1; k < nc; ++k) {  // block Thomas
-    const Mat3 L = d.low[k] * d.diag[k - 1].inverse();
+  // Block Thomas; diag[k] is replaced by the inverse of its eliminated value (each inverted once).
+  d.diag[0] = d.diag[0].inverse().eval();
+  for (int k = 1; k < nc; ++k) {
+    const Mat3 L = d.low[k] * d.diag[k - 1];
     d.diag[k] -= L * d.up[k - 1];
+    d.diag[k] = d.diag[k].inverse().eval();
     d.rhs[k] -= L * d.rhs[k - 1];
   }
-  d.lambda[nc - 1] = d.diag[nc - 1].inverse() * d.rhs[nc - 1];
-  for (int k = nc - 2; k >= 0; --k) d.lambda[k] = d.diag[k].inverse() * (d.rhs[k] - d.up[k] * d.lambda[k + 1]);
+  d.lambda[nc - 1] = d.diag[nc - 1] * d.rhs[nc - 1];
+  for (int k = nc - 2; k >= 0; --k) d.lambda[k] = d.diag[k] * (d.rhs[k] - d.up[k] * d.lambda[k + 1]);
   if (!pinned) d.lambda[nb] = Vec3::Zero();
 
   dy.head(nq) = y.segment(nq, nq);
