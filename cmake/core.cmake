@@ -38,6 +38,13 @@ add_library(riser_sim_core
   src/core/run_builder.cpp
   src/core/scene_sections.cpp
   src/core/scene_yaml.cpp
+  src/core/spatial/model.cpp
+  src/core/spatial/kinematics.cpp
+  src/core/spatial/natural_formulation.cpp
+  src/core/spatial/simulator.cpp
+  src/core/spatial/forces/gravity.cpp
+  src/core/spatial/forces/axial_spring.cpp
+  src/core/spatial/forces/bending_spring.cpp
 )
 target_include_directories(riser_sim_core PUBLIC include ${EIGEN3_INCLUDE_DIR})
 target_link_libraries(riser_sim_core PUBLIC yaml-cpp)

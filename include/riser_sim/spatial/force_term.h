@@ -1,0 +1,30 @@
+// A physical effect on the spatial line (costmap-style layer, as the planar ForceTerm): generalised
+// forces in natural coordinates, potential energy and non-conservative power, so that the energy
+// balance is checkable. Terms are immutable parts of the SpatialModel.
+#pragma once
+#include <string>
+
+#include "riser_sim/spatial/model.h"
+
+namespace riser_sim {
+namespace spatial {
+
+class SpatialForceTerm {
+ public:
+  virtual ~SpatialForceTerm() = default;
+  virtual std::string name() const = 0;
+  // Adds Q per rfe [A: N, Δ: N, e: N m] (size 7(n+1)) for the state kin at time t [s]. The e part
+  // matters only up to multiples of e (the unit-length constraint takes those).
+  virtual void addForces(const SpatialModel& model, const Kinematics3& kin, double t, VecX& Q) const = 0;
+  // Potential energy of the conservative part [J].
+  virtual double potentialEnergy(const SpatialModel& model, const Kinematics3& kin) const = 0;
+  // Power [W] of the non-conservative part fed into the line.
+  virtual double power(const SpatialModel& model, const Kinematics3& kin, double t) const = 0;
+  virtual double addForcesAndPower(const SpatialModel& model, const Kinematics3& kin, double t, VecX& Q) const {
+    addForces(model, kin, t, Q);
+    return power(model, kin, t);
+  }
+};
+
+}  // namespace spatial
+}  // namespace riser_sim

@@ -1,0 +1,51 @@
+// Spatial line model: the RFEM discretisation of the planar Model (rfe lengths, parts, line properties,
+// options, end mass: held, not copied), a gravity vector, the ends and the spatial force terms the scene
+// lists (only those are built and run).
+#pragma once
+#include <memory>
+#include <vector>
+
+#include "riser_sim/model.h"
+#include "riser_sim/spatial/kinematics.h"
+
+namespace riser_sim {
+namespace spatial {
+
+class SpatialForceTerm;
+
+class SpatialModel {
+ public:
+  // gravity: acceleration vector [m/s^2], default (0, 0, -9.81)-like; the held planar Model gets |gravity|.
+  SpatialModel(double length, int segments, const LineProperties& props, const ModelOptions& options,
+               double end_mass, const Vec3& gravity);
+  ~SpatialModel();
+  SpatialModel(const SpatialModel&) = delete;
+  SpatialModel& operator=(const SpatialModel&) = delete;
+
+  const Model& line() const { return line_; }  // the discretisation (its own terms are not used)
+  int bodies() const { return line_.bodies(); }
+  int dofs() const { return kDofPerBody3 * bodies(); }
+  const Rfe& rfe(int i) const { return line_.rfe(i); }
+  const ModelOptions& options() const { return line_.options(); }
+  const Vec3& gravity() const { return gravity_; }
+  double bendingStiffness() const { return line_.bendingStiffness(); }  // c = EI/d [N m/rad]
+  double bendingDamping() const { return line_.bendingDamping(); }      // c_d [N m s/rad]
+
+  // Bottom end: free, or the end of rfe n pinned at a fixed point [m].
+  BottomBoundary bottom() const { return bottom_; }
+  const Vec3& bottomPoint() const { return bottom_point_; }
+  void setBottom(BottomBoundary b, const Vec3& p) { bottom_ = b; bottom_point_ = p; }
+
+  void addTerm(std::unique_ptr<SpatialForceTerm> term);
+  const std::vector<std::unique_ptr<SpatialForceTerm>>& terms() const { return terms_; }
+
+ private:
+  Model line_;
+  Vec3 gravity_;
+  BottomBoundary bottom_ = BottomBoundary::kFree;
+  Vec3 bottom_point_ = Vec3::Zero();
+  std::vector<std::unique_ptr<SpatialForceTerm>> terms_;
+};
+
+}  // namespace spatial
+}  // namespace riser_sim

@@ -1,0 +1,98 @@
+// Equations of motion of the spatial line in natural coordinates (kinematics.h), the 3D counterpart of
+// the planar AbsoluteFormulation. Per rfe the kinetic energy is exact on |e| = 1:
+//   T_i = Σ_p ½ m_p |A' + κ_p Δ' e + s_p e'|² + ½ J_p |e'|²,   s_p = s0_p + κ_p Δ,
+// a point-mass system plus a director inertia, so M_i u'' + h_i = Q_i + constraint forces with the 7x7
+// M_i (m I, m_k e, S I; m_k, S_k eᵀ; I_A I) and h_i = 2Δ' [m_k e'; m_k e·e'; S_k e'].
+// Constraints: per rfe ½(e·e - 1) = 0, eliminated inside the rfe (one scalar Schur step); joints
+// E_{k-1} - A_k = 0, the top A_0 = p(t), a pinned end E_n = p_b, with joint reactions λ_k ∈ R³ from a
+// block-tridiagonal (3x3 blocks) system solved by block Thomas: O(n) per evaluation. Every constraint
+// is Baumgarte-stabilised, c'' + 2ω c' + ω² c = 0. Evaluations allocate nothing (NaturalData).
+#pragma once
+#include <memory>
+#include <vector>
+
+#include "riser_sim/spatial/model.h"
+#include "riser_sim/spatial/top_motion.h"
+
+namespace riser_sim {
+namespace spatial {
+
+using Vec7 = Eigen::Matrix<double, 7, 1>;
+using Mat7 = Eigen::Matrix<double, 7, 7>;
+using Mat73 = Eigen::Matrix<double, 7, 3>;
+
+struct Reactions3 {
+  Vec3 top = Vec3::Zero();     // force the line exerts on the hang-off point A_0 [N]
+  Vec3 bottom = Vec3::Zero();  // force the line exerts on the bottom anchor (pinned) [N]
+  AlignedVector<Vec3> joint;   // λ_k: force on rfe k-1 at its end (minus the force on rfe k at A_k), k = 0..n+1
+};
+
+// One evaluation's results and workspaces, sized once by NaturalFormulation::makeData().
+class NaturalData {
+ public:
+  explicit NaturalData(const SpatialModel& model);
+  double t = 0.0;
+  PointMotion3 top;
+  Kinematics3 kin;
+  Reactions3 reactions;
+  double term_power = 0.0;        // summed non-conservative power of the terms [W]
+  double constraint_error = 0.0;  // largest joint gap [m]
+
+  // Per rfe: u'' = a + W (B_Aᵀ F_A + B_Eᵀ F_E) for forces F_A at A_i, F_E at the end E_i (W: constrained
+  // inverse mass, the unit-length constraint eliminated; WE = W B_Eᵀ), and the 3x3 compliances of the
+  // accelerations of A_i, E_i under those forces with their free accelerations aA, aE.
+  struct Body {
+    Mat7 W;    // dense path only
+    Mat73 WE;  // dense path only
+    Vec7 a;
+    Mat3 AA, AE, EE;
+    Vec3 aA, aE;
+    // Closed form: n = e/|e|, rho = |e|; (A·n, Δ) inverse mass entries a_*, transverse (A⊥, e⊥) ones t_*;
+    // S, Sk_rho = S_k rho couple the prescribed n·e'' = bdd into the (A·n, Δ) rows.
+    Vec3 n;
+    double rho, a_aa, a_ad, a_dd, t_AA, t_Ae, t_ee, S, Sk_rho, bdd;
+  };
+  VecX Q, h;
+  AlignedVector<Body> body;
+  AlignedVector<Mat3> diag, low, up;
+  AlignedVector<Vec3> rhs, lambda;
+};
+
+class NaturalFormulation {
+ public:
+  // stabilization: Baumgarte ω [rad/s] (the planar SolverSettings::stabilization, default 50).
+  // closed_form: per-rfe inverse in closed form (the mass matrix splits exactly into the direction of e,
+  // where the unit-length constraint prescribes n·e'', and the plane across it); false: a dense 7x7
+  // Cholesky and a Schur step (the general path for terms with inertia later; a cross-check now).
+  NaturalFormulation(const SpatialModel& model, double stabilization, bool closed_form = true);
+  const SpatialModel& model() const { return model_; }
+  int positionSize() const { return model_.dofs(); }
+  std::unique_ptr<NaturalData> makeData() const { return std::make_unique<NaturalData>(model_); }
+  // y = [q; v] (its first 2 * positionSize() entries) from / to rfe kinematics.
+  void packState(const Kinematics3& kin, VecX& y) const;
+  void kinematics(const VecX& y, Kinematics3& kin) const;
+  BodyKinematics3 body(const VecX& y, int i) const;
+  // dy/dt on [q; v] at time t [s] with A_0 moving as top; data holds the evaluation.
+  void derivative(double t, const VecX& y, const PointMotion3& top, VecX& dy, NaturalData& data) const;
+  // Kinetic energy [J] of state y.
+  double kineticEnergy(const VecX& y) const;
+  // Largest joint gap (top, joints, pinned end) [m], and largest | |e_i| - 1 | of state y.
+  double constraintError(const VecX& y, const PointMotion3& top) const;
+  double directorError(const VecX& y) const;
+  // max_i max(| |e_i| - 1 |, |e_i·e'_i| h): the distance from the unit-length manifold over a step h [s].
+  double manifoldError(const VecX& y, double h) const;
+  // Holds y on the unit-length manifold: e_i <- e_i/|e_i|, e'_i <- e'_i - (e_i·e'_i) e_i.
+  void project(VecX& y) const;
+
+ private:
+  double unitGamma(const BodyKinematics3& b) const;  // e·e'' prescribed by the Baumgarte-held |e| = 1
+  void denseBody(int i, NaturalData& d) const;
+  void closedFormBody(int i, NaturalData& d) const;
+  static void closedFormAcceleration(const NaturalData::Body& c, const Vec7& f, double* udd);
+  const SpatialModel& model_;
+  const double omega_;
+  const bool closed_form_;
+};
+
+}  // namespace spatial
+}  // namespace riser_sim

@@ -1,0 +1,69 @@
+// Runs the spatial line with the existing integrators (integrator.h's OdeSystem, state y = [q; v; W],
+// W [J] the work of the top motion and the non-conservative terms integrated alongside). After every
+// integrator step the state is projected back onto |e_i| = 1, e_i·e'_i = 0 (NaturalFormulation::
+// project); within a step the Baumgarte terms hold the drift. The joint gaps are not projected (the
+// planar absolute formulation does not either).
+// The implicit schemes (rosenbrock2, midpoint, generalized_alpha) always run with their dense
+// finite-difference Jacobian here (O(p²) per solve, O(p³) per refresh): the spatial formulation has no
+// structured O(n) solves yet, whatever options.jacobian says.
+#pragma once
+#include <memory>
+
+#include "riser_sim/choices.h"
+#include "riser_sim/integrator.h"
+#include "riser_sim/spatial/natural_formulation.h"
+
+namespace riser_sim {
+namespace spatial {
+
+class SpatialSimulator : private OdeSystem {
+ public:
+  SpatialSimulator(std::shared_ptr<const SpatialModel> model, std::unique_ptr<TopMotion3> top, IntegratorKind kind,
+                   const IntegratorOptions& options = {}, double stabilization = 50.0);
+  // Starts from the given rfe kinematics at time t0 [s] (projected; W = 0).
+  void reset(const Kinematics3& kin, double t0);
+  // One integrator step of h [s], then the projection. False when the integrator failed or the state
+  // is not finite.
+  bool step(double h);
+  // Project only when max_i max(| |e_i| - 1 |, |e_i·e'_i| h) exceeds tol (default 0: after every step).
+  // A projection is a change of the state from outside the integrator: generalized_alpha then restarts
+  // its ẏ history from f(y), which makes it first order (measured, test_spatial_integrators); a
+  // tolerance of 1e-4 keeps its second order there.
+  void setProjectionTolerance(double tol) { projection_tol_ = tol; }
+
+  double time() const { return t_; }
+  const VecX& state() const { return y_; }
+  const SpatialModel& model() const { return *model_; }
+  const NaturalFormulation& formulation() const { return formulation_; }
+  Integrator& integrator() { return *integrator_; }
+  OdeSystem& system() { return *this; }
+  StateLayout layout() const { return StateLayout{int(y_.size()), formulation_.positionSize()}; }
+
+  void kinematics(Kinematics3& kin) const { formulation_.kinematics(y_, kin); }
+  // A_0..A_n and the end E_n [m] (n + 2 points; resized by the caller once).
+  void positions(AlignedVector<Vec3>& p) const;
+  double kineticEnergy() const { return formulation_.kineticEnergy(y_); }
+  double potentialEnergy();
+  double energy() { return kineticEnergy() + potentialEnergy(); }  // T + V [J]
+  double work() const { return y_[y_.size() - 1]; }                 // W [J]
+  double constraintError() const { return formulation_.constraintError(y_, top_->at(t_)); }  // [m]
+  double directorError() const { return formulation_.directorError(y_); }
+  // One evaluation at the current state: its data (reactions.top, reactions.bottom, joint forces).
+  const NaturalData& evaluate();
+
+ private:
+  void rhs(double t, const VecX& y, VecX& dy) override;
+
+  std::shared_ptr<const SpatialModel> model_;
+  std::unique_ptr<TopMotion3> top_;
+  NaturalFormulation formulation_;
+  std::unique_ptr<NaturalData> data_;
+  std::unique_ptr<Integrator> integrator_;
+  VecX y_, dy_;
+  Kinematics3 kin_;
+  double t_ = 0.0;
+  double projection_tol_ = 0.0;
+};
+
+}  // namespace spatial
+}  // namespace riser_sim

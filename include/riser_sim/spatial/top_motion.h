@@ -1,0 +1,51 @@
+// Prescribed motion of the top point A_0 in 3D: position, velocity and acceleration (the acceleration
+// enters the constraint equations).
+#pragma once
+#include <memory>
+#include <string>
+
+#include "riser_sim/spatial/kinematics.h"
+#include "riser_sim/top_motion.h"
+
+namespace riser_sim {
+namespace spatial {
+
+struct PointMotion3 {
+  Vec3 p = Vec3::Zero();  // [m]
+  Vec3 v = Vec3::Zero();  // [m/s]
+  Vec3 a = Vec3::Zero();  // [m/s^2]
+};
+
+class TopMotion3 {
+ public:
+  virtual ~TopMotion3() = default;
+  virtual PointMotion3 at(double t) const = 0;
+};
+
+class FixedMotion3 : public TopMotion3 {
+ public:
+  explicit FixedMotion3(const Vec3& p) : p_(p) {}
+  PointMotion3 at(double) const override { return PointMotion3{p_, Vec3::Zero(), Vec3::Zero()}; }
+
+ private:
+  Vec3 p_;
+};
+
+// A 2D top motion mapped into 3D: (x, y)_2D -> R (x, 0, y) + offset (see fromPlanar).
+class PlanarMotion3 : public TopMotion3 {
+ public:
+  PlanarMotion3(std::unique_ptr<TopMotion> planar, const Mat3& R = Mat3::Identity(), const Vec3& offset = Vec3::Zero())
+      : planar_(std::move(planar)), R_(R), offset_(offset) {}
+  PointMotion3 at(double t) const override {
+    const PointMotion m = planar_->at(t);
+    return PointMotion3{planarPoint(m.p, R_, offset_), planarPoint(m.v, R_), planarPoint(m.a, R_)};
+  }
+
+ private:
+  std::unique_ptr<TopMotion> planar_;
+  Mat3 R_;
+  Vec3 offset_;
+};
+
+}  // namespace spatial
+}  // namespace riser_sim

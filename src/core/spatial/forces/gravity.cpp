@@ -1,0 +1,30 @@
+#include "riser_sim/spatial/forces/gravity.h"
+
+namespace riser_sim {
+namespace spatial {
+
+// Σ over parts of [m_p g; κ_p e·m_p g; s_p m_p g] = [m g; m_k e·g; S(Δ) g].
+void Gravity::addForces(const SpatialModel& model, const Kinematics3& kin, double, VecX& Q) const {
+  const Vec3& g = model.gravity();
+  for (int i = 0; i < model.bodies(); ++i) {
+    const Rfe& r = model.rfe(i);
+    const BodyKinematics3& b = kin[i];
+    double* q = Q.data() + kDofPerBody3 * i;
+    const double S = r.firstMoment(b.delta);
+    for (int k = 0; k < 3; ++k) q[kA + k] += r.mass * g[k], q[kE + k] += S * g[k];
+    q[kDelta3] += r.mass_k * b.e.dot(g);
+  }
+}
+
+double Gravity::potentialEnergy(const SpatialModel& model, const Kinematics3& kin) const {
+  double v = 0.0;
+  for (int i = 0; i < model.bodies(); ++i) {
+    const Rfe& r = model.rfe(i);
+    for (int p = 0; p < r.num_parts; ++p)
+      v -= r.part[p].mass * model.gravity().dot(kin[i].point(r.part[p].s0, r.part[p].kappa));
+  }
+  return v;
+}
+
+}  // namespace spatial
+}  // namespace riser_sim

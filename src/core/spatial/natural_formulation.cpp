@@ -1,0 +1,291 @@
+#include "riser_sim/spatial/natural_formulation.h"
+
+#include <Eigen/Cholesky>
+#include <Eigen/LU>
+#include <cmath>
+
+#include "riser_sim/spatial/force_term.h"
+
+namespace riser_sim {
+namespace spatial {
+
+NaturalData::NaturalData(const SpatialModel& model) : kin(model.bodies()) {
+  const int nb = model.bodies(), nc = nb + 1;
+  reactions.joint.assign(nc, Vec3::Zero());
+  Q.setZero(model.dofs());
+  h.setZero(model.dofs());
+  body.resize(nb);
+  diag.assign(nc, Mat3::Zero());
+  low.assign(nc, Mat3::Zero());
+  up.assign(nc, Mat3::Zero());
+  rhs.assign(nc, Vec3::Zero());
+  lambda.assign(nc, Vec3::Zero());
+}
+
+NaturalFormulation::NaturalFormulation(const SpatialModel& model, double stabilization, bool closed_form)
+    : model_(model), omega_(stabilization), closed_form_(closed_form) {}
+
+void NaturalFormulation::packState(const Kinematics3& kin, VecX& y) const {
+  const int nq = model_.dofs();
+  for (int i = 0; i < model_.bodies(); ++i) {
+    const BodyKinematics3& b = kin[i];
+    double* q = y.data() + kDofPerBody3 * i;
+    double* v = y.data() + nq + kDofPerBody3 * i;
+    for (int k = 0; k < 3; ++k) q[kA + k] = b.A[k], q[kE + k] = b.e[k], v[kA + k] = b.A_dot[k], v[kE + k] = b.e_dot[k];
+    q[kDelta3] = b.delta;
+    v[kDelta3] = b.delta_dot;
+  }
+}
+
+BodyKinematics3 NaturalFormulation::body(const VecX& y, int i) const {
+  const int nq = model_.dofs();
+  const bool axial = model_.options().axial_flexibility;
+  const double* q = y.data() + kDofPerBody3 * i;
+  const double* v = y.data() + nq + kDofPerBody3 * i;
+  BodyKinematics3 b;
+  b.A = Vec3(q[kA], q[kA + 1], q[kA + 2]);
+  b.A_dot = Vec3(v[kA], v[kA + 1], v[kA + 2]);
+  b.delta = axial ? q[kDelta3] : 0.0;  // inextensible: Δ locked at 0
+  b.delta_dot = axial ? v[kDelta3] : 0.0;
+  b.e = Vec3(q[kE], q[kE + 1], q[kE + 2]);
+  b.e_dot = Vec3(v[kE], v[kE + 1], v[kE + 2]);
+  b.len = model_.rfe(i).length + b.delta;
+  return b;
+}
+
+void NaturalFormulation::kinematics(const VecX& y, Kinematics3& kin) const {
+  for (int i = 0; i < model_.bodies(); ++i) kin[i] = body(y, i);
+}
+
+// Mass block, its inverse with Δ locked when inextensible, then the unit-length constraint g·u'' = γ
+// (g = [0; 0; e]) eliminated: W = M⁻¹ - u uᵀ/s, u = M⁻¹ g, s = g·u; free u'' = W f + u γ/s.
+double NaturalFormulation::unitGamma(const BodyKinematics3& b) const {
+  return -b.e_dot.squaredNorm() - 2.0 * omega_ * b.e.dot(b.e_dot) - 0.5 * omega_ * omega_ * (b.e.squaredNorm() - 1.0);
+}
+
+void NaturalFormulation::denseBody(int i, NaturalData& d) const {
+  const Rfe& r = model_.rfe(i);
+  const BodyKinematics3& b = d.kin[i];
+  const bool axial = model_.options().axial_flexibility;
+  const double m = r.mass, mk = r.mass_k, S = r.firstMoment(b.delta), Sk = r.firstMomentK(b.delta);
+  const double I = r.inertiaAboutA(b.delta);
+  Mat7 M = Mat7::Zero();
+  M.block<3, 3>(kA, kA).diagonal().setConstant(m);
+  M.block<3, 3>(kA, kE).diagonal().setConstant(S);
+  M.block<3, 3>(kE, kA).diagonal().setConstant(S);
+  M.block<3, 3>(kE, kE).diagonal().setConstant(I);
+  if (axial) {
+    M.block<3, 1>(kA, kDelta3) = mk * b.e;
+    M.block<1, 3>(kDelta3, kA) = mk * b.e.transpose();
+    M.block<3, 1>(kE, kDelta3) = Sk * b.e;
+    M.block<1, 3>(kDelta3, kE) = Sk * b.e.transpose();
+    M(kDelta3, kDelta3) = mk * b.e.squaredNorm();
+  } else {
+    M(kDelta3, kDelta3) = 1.0;
+  }
+  NaturalData::Body& c = d.body[i];
+  Mat7& W = c.W;
+  W = M.llt().solve(Mat7::Identity());
+  if (!axial) {
+    W.row(kDelta3).setZero();
+    W.col(kDelta3).setZero();
+  }
+  const Vec7 u = W.middleCols<3>(kE) * b.e;
+  const double s = b.e.dot(u.tail<3>());
+  W.noalias() -= (u / s) * u.transpose();
+  const double gamma = unitGamma(b);
+  const Vec7 f = d.Q.segment<7>(kDofPerBody3 * i) - d.h.segment<7>(kDofPerBody3 * i);
+  c.a.noalias() = W * f;
+  c.a += (gamma / s) * u;
+  // B_E = [I, e, len I]: E'' = B_E u'' + 2Δ' e'.
+  c.WE = W.middleCols<3>(kA) + W.col(kDelta3) * b.e.transpose() + b.len * W.middleCols<3>(kE);
+  c.AA = W.block<3, 3>(kA, kA);
+  c.AE = c.WE.middleRows<3>(kA);
+  c.EE = c.WE.middleRows<3>(kA) + b.e * c.WE.row(kDelta3) + b.len * c.WE.middleRows<3>(kE);
+  c.aA = c.a.segment<3>(kA);
+  c.aE = c.a.segment<3>(kA) + c.a[kDelta3] * b.e + b.len * c.a.segment<3>(kE) + 2.0 * b.delta_dot * b.e_dot;
+}
+
+// With n = e/ρ the mass matrix splits exactly: along n the rows (A·n, Δ, n·e) with n·e'' = γ/ρ prescribed
+// by the unit-length constraint, leaving [[m, m_k ρ], [m_k ρ, m_k ρ²]] on (A·n, Δ); across n, per
+// direction, [[m, S], [S, I_A]] on (A⊥, e⊥). Δ locked (inextensible): m alone along n.
+void NaturalFormulation::closedFormBody(int i, NaturalData& d) const {
+  const Rfe& r = model_.rfe(i);
+  const BodyKinematics3& b = d.kin[i];
+  NaturalData::Body& c = d.body[i];
+  const double m = r.mass, mk = r.mass_k, S = r.firstMoment(b.delta), I = r.inertiaAboutA(b.delta);
+  c.rho = b.e.norm();
+  c.n = b.e / c.rho;
+  if (model_.options().axial_flexibility) {
+    const double det = mk * c.rho * c.rho * (m - mk);
+    c.a_aa = mk * c.rho * c.rho / det;
+    c.a_ad = -mk * c.rho / det;
+    c.a_dd = m / det;
+    c.Sk_rho = r.firstMomentK(b.delta) * c.rho;
+  } else {
+    c.a_aa = 1.0 / m;
+    c.a_ad = c.a_dd = c.Sk_rho = 0.0;
+  }
+  const double det = m * I - S * S;
+  c.t_AA = I / det;
+  c.t_Ae = -S / det;
+  c.t_ee = m / det;
+  c.S = S;
+  c.bdd = unitGamma(b) / c.rho;
+  closedFormAcceleration(c, d.Q.segment<7>(kDofPerBody3 * i) - d.h.segment<7>(kDofPerBody3 * i), c.a.data());
+  // Compliances p n nᵀ + q (I - n nᵀ): a unit force at E_i adds [F; ρ n·F; len F] to f, and E'' = A'' + ρ Δ'' n + len e''.
+  auto split = [&](double p, double q) { return Mat3(q * Mat3::Identity() + (p - q) * c.n * c.n.transpose()); };
+  const double len = b.len, rho = c.rho;
+  c.AA = split(c.a_aa, c.t_AA);
+  c.AE = split(c.a_aa + rho * c.a_ad, c.t_AA + len * c.t_Ae);
+  c.EE = split(c.a_aa + 2.0 * rho * c.a_ad + rho * rho * c.a_dd, c.t_AA + 2.0 * len * c.t_Ae + len * len * c.t_ee);
+  c.aA = c.a.segment<3>(kA);
+  c.aE = c.a.segment<3>(kA) + c.a[kDelta3] * b.e + len * c.a.segment<3>(kE) + 2.0 * b.delta_dot * b.e_dot;
+}
+
+void NaturalFormulation::closedFormAcceleration(const NaturalData::Body& c, const Vec7& f, double* udd) {
+  const Vec3 fA = f.segment<3>(kA), fe = f.segment<3>(kE);
+  const double nA = c.n.dot(fA), ne = c.n.dot(fe);
+  const double fa = nA - c.S * c.bdd, fd = f[kDelta3] - c.Sk_rho * c.bdd;
+  const Vec3 pA = fA - nA * c.n, pe = fe - ne * c.n;
+  const Vec3 A = (c.a_aa * fa + c.a_ad * fd) * c.n + c.t_AA * pA + c.t_Ae * pe;
+  const Vec3 e = c.bdd * c.n + c.t_Ae * pA + c.t_ee * pe;
+  for (int k = 0; k < 3; ++k) udd[kA + k] = A[k], udd[kE + k] = e[k];
+  udd[kDelta3] = c.a_ad * fa + c.a_dd * fd;
+}
+
+void NaturalFormulation::derivative(double t, const VecX& y, const PointMotion3& top, VecX& dy,
+                                    NaturalData& d) const {
+  const int nb = model_.bodies(), nq = model_.dofs();
+  const bool pinned = model_.bottom() == BottomBoundary::kPinned;
+  const int nc = nb + (pinned ? 1 : 0);
+  d.t = t;
+  d.top = top;
+  kinematics(y, d.kin);
+  d.Q.setZero();
+  d.term_power = 0.0;
+  for (const auto& term : model_.terms()) d.term_power += term->addForcesAndPower(model_, d.kin, t, d.Q);
+  for (int i = 0; i < nb; ++i) {
+    const BodyKinematics3& b = d.kin[i];
+    const Rfe& r = model_.rfe(i);
+    const double w = 2.0 * b.delta_dot;
+    double* h = d.h.data() + kDofPerBody3 * i;
+    for (int k = 0; k < 3; ++k) h[kA + k] = w * r.mass_k * b.e_dot[k], h[kE + k] = w * r.firstMomentK(b.delta) * b.e_dot[k];
+    h[kDelta3] = w * r.mass_k * b.e.dot(b.e_dot);
+    if (closed_form_)
+      closedFormBody(i, d);
+    else
+      denseBody(i, d);
+  }
+
+  // Rows k = 0..n (+ n+1 pinned): c_k = E_{k-1} - A_k, E_{-1} = top point, A_{n+1} = bottom point; the
+  // force on rfe k at A_k is -λ_k, on rfe k-1 at its end +λ_k (as the planar AbsoluteFormulation).
+  const double w = omega_;
+  double cmax = 0.0;
+  for (int k = 0; k < nc; ++k) {
+    Vec3 c, cd, r;
+    Mat3 dk = Mat3::Zero();
+    if (k == 0) {
+      c = top.p - d.kin[0].A;
+      cd = top.v - d.kin[0].A_dot;
+      r = -top.a;
+    } else {
+      const BodyKinematics3& bp = d.kin[k - 1];
+      const Vec3 Ak = k < nb ? d.kin[k].A : model_.bottomPoint();
+      const Vec3 Akd = k < nb ? d.kin[k].A_dot : Vec3::Zero();
+      c = bp.end() - Ak;
+      cd = bp.endVelocity() - Akd;
+      r = -d.body[k - 1].aE;
+      dk += d.body[k - 1].EE;
+      d.low[k] = -d.body[k - 1].AE.transpose();
+    }
+    if (k < nb) {
+      r += d.body[k].aA;
+      dk += d.body[k].AA;
+      d.up[k] = (k < nb - 1 || pinned) ? Mat3(-d.body[k].AE) : Mat3::Zero();
+    }
+    d.rhs[k] = r - 2.0 * w * cd - w * w * c;
+    cmax = std::max(cmax, c.squaredNorm());
+    d.diag[k] = dk;
+  }
+  // Block Thomas; diag[k] is replaced by the inverse of its eliminated value (each inverted once).
+  d.diag[0] = d.diag[0].inverse().eval();
+  for (int k = 1; k < nc; ++k) {
+    const Mat3 L = d.low[k] * d.diag[k - 1];
+    d.diag[k] -= L * d.up[k - 1];
+    d.diag[k] = d.diag[k].inverse().eval();
+    d.rhs[k] -= L * d.rhs[k - 1];
+  }
+  d.lambda[nc - 1] = d.diag[nc - 1] * d.rhs[nc - 1];
+  for (int k = nc - 2; k >= 0; --k) d.lambda[k] = d.diag[k] * (d.rhs[k] - d.up[k] * d.lambda[k + 1]);
+  if (!pinned) d.lambda[nb] = Vec3::Zero();
+
+  dy.head(nq) = y.segment(nq, nq);
+  for (int i = 0; i < nb; ++i) {
+    const NaturalData::Body& c = d.body[i];
+    if (closed_form_) {  // f + B_Aᵀ(-λ_i) + B_Eᵀ λ_{i+1}
+      const BodyKinematics3& b = d.kin[i];
+      const Vec3& L = d.lambda[i + 1];
+      Vec7 f = d.Q.segment<7>(kDofPerBody3 * i) - d.h.segment<7>(kDofPerBody3 * i);
+      f.segment<3>(kA) += L - d.lambda[i];
+      f[kDelta3] += b.e.dot(L);
+      f.segment<3>(kE) += b.len * L;
+      closedFormAcceleration(c, f, dy.data() + nq + kDofPerBody3 * i);
+    } else {
+      dy.segment<7>(nq + kDofPerBody3 * i).noalias() = c.a - c.W.middleCols<3>(kA) * d.lambda[i] + c.WE * d.lambda[i + 1];
+    }
+  }
+  for (int k = 0; k <= nb; ++k) d.reactions.joint[k] = d.lambda[k];
+  d.reactions.top = d.lambda[0];
+  d.reactions.bottom = pinned ? Vec3(-d.lambda[nb]) : Vec3::Zero();
+  d.constraint_error = std::sqrt(cmax);
+}
+
+double NaturalFormulation::kineticEnergy(const VecX& y) const {
+  double T = 0.0;
+  for (int i = 0; i < model_.bodies(); ++i) {
+    const Rfe& r = model_.rfe(i);
+    const BodyKinematics3 b = body(y, i);
+    for (int p = 0; p < r.num_parts; ++p) {
+      const RigidPart& part = r.part[p];
+      T += 0.5 * part.mass * b.velocity(part.s0, part.kappa).squaredNorm() + 0.5 * part.inertia * b.e_dot.squaredNorm();
+    }
+  }
+  return T;
+}
+
+double NaturalFormulation::constraintError(const VecX& y, const PointMotion3& top) const {
+  const int nb = model_.bodies();
+  double err = (top.p - body(y, 0).A).norm();
+  for (int k = 1; k < nb; ++k) err = std::max(err, (body(y, k - 1).end() - body(y, k).A).norm());
+  if (model_.bottom() == BottomBoundary::kPinned) err = std::max(err, (body(y, nb - 1).end() - model_.bottomPoint()).norm());
+  return err;
+}
+
+double NaturalFormulation::directorError(const VecX& y) const {
+  double err = 0.0;
+  for (int i = 0; i < model_.bodies(); ++i) err = std::max(err, std::abs(body(y, i).e.norm() - 1.0));
+  return err;
+}
+
+double NaturalFormulation::manifoldError(const VecX& y, double h) const {
+  double err = 0.0;
+  for (int i = 0; i < model_.bodies(); ++i) {
+    const BodyKinematics3 b = body(y, i);
+    err = std::max({err, std::abs(b.e.norm() - 1.0), std::abs(b.e.dot(b.e_dot)) * h});
+  }
+  return err;
+}
+
+void NaturalFormulation::project(VecX& y) const {
+  const int nq = model_.dofs();
+  for (int i = 0; i < model_.bodies(); ++i) {
+    auto e = y.segment<3>(kDofPerBody3 * i + kE);
+    auto ed = y.segment<3>(nq + kDofPerBody3 * i + kE);
+    e /= e.norm();
+    ed -= e.dot(ed) * e;
+  }
+}
+
+}  // namespace spatial
+}  // namespace riser_sim

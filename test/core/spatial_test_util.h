@@ -1,0 +1,120 @@
+// Scenes and runners shared by the spatial (3D) core's tests: the same line built as a planar Model (2D
+// absolute formulation) and as a SpatialModel, initial states, a bare planar ODE runner.
+#pragma once
+#include <memory>
+#include <vector>
+
+#include "riser_sim/absolute_formulation.h"
+#include "riser_sim/force_term.h"
+#include "riser_sim/forces/axial_spring.h"
+#include "riser_sim/forces/bending_spring.h"
+#include "riser_sim/forces/gravity.h"
+#include "riser_sim/integrator.h"
+#include "riser_sim/spatial/force_term.h"
+#include "riser_sim/spatial/forces/axial_spring.h"
+#include "riser_sim/spatial/forces/bending_spring.h"
+#include "riser_sim/spatial/forces/gravity.h"
+#include "riser_sim/spatial/simulator.h"
+
+namespace riser_sim {
+namespace spatial_test {
+
+using spatial::Mat3;
+using spatial::Vec3;
+
+struct LineSpec {
+  double length = 10.0;  // [m]
+  int segments = 10;
+  LineProperties props;
+  ModelOptions options;
+  double end_mass = 0.0;  // [kg]
+  double g = 9.81;        // [m/s^2]
+};
+
+// Flexible line: axial and bending springs with damping; ~630-900 rad/s axial modes at n = 10.
+inline LineSpec flexibleLine() {
+  LineSpec s;
+  s.props.mass_per_length = 10.0;
+  s.props.EA = 1e6;
+  s.props.EI = 1e3;
+  s.props.axial_damping = 1e3;
+  s.props.bending_damping = 10.0;
+  s.end_mass = 50.0;
+  return s;
+}
+
+inline std::shared_ptr<Model> planarModel(const LineSpec& s) {
+  auto m = std::make_shared<Model>(s.length, s.segments, s.props, s.options, s.end_mass, s.g);
+  m->addTerm(std::make_unique<Gravity>());
+  if (s.options.axial_flexibility) m->addTerm(std::make_unique<AxialSpring>());
+  if (s.options.bending) m->addTerm(std::make_unique<BendingSpring>());
+  return m;
+}
+
+inline std::shared_ptr<spatial::SpatialModel> spatialModel(const LineSpec& s, const Vec3& gravity) {
+  auto m = std::make_shared<spatial::SpatialModel>(s.length, s.segments, s.props, s.options, s.end_mass, gravity);
+  m->addTerm(std::make_unique<spatial::Gravity>());
+  if (s.options.axial_flexibility) m->addTerm(std::make_unique<spatial::AxialSpring>());
+  if (s.options.bending) m->addTerm(std::make_unique<spatial::BendingSpring>());
+  return m;
+}
+
+// Planar chain at rest with Δ = 0, A_0 = top, rfe i at angle phi[i] from the x axis.
+inline Kinematics planarChain(const Model& m, const Vec2& top, const std::vector<double>& phi) {
+  Kinematics kin(m.bodies());
+  Vec2 A = top;
+  for (int i = 0; i < m.bodies(); ++i) {
+    BodyKinematics& b = kin[i];
+    b.A = A;
+    b.phi = phi[i];
+    b.c = std::cos(phi[i]);
+    b.s = std::sin(phi[i]);
+    b.len = m.rfe(i).length;
+    A = b.end();
+  }
+  return kin;
+}
+
+// Top sway p(t) = a (cos(2πt/T) - 1): starts at the origin at rest (consistent with a chain hung from it).
+inline std::unique_ptr<TopMotion> topSway(const Vec2& amplitude, double period) {
+  return std::make_unique<SinusoidMotion>(-amplitude, amplitude, period, 0.0);
+}
+
+// The planar absolute formulation as a bare ODE y = [q; v] (no work entry).
+class PlanarOde : public OdeSystem {
+ public:
+  PlanarOde(std::shared_ptr<const Model> m, std::unique_ptr<TopMotion> top)
+      : model_(std::move(m)), top_(std::move(top)), f_(*model_, 50.0), data_(f_.makeData()) {}
+  void rhs(double t, const VecX& y, VecX& dy) override { f_.derivative(t, y, top_->at(t), dy, *data_); }
+  const AbsoluteFormulation& formulation() const { return f_; }
+  const FormulationData& data() const { return *data_; }  // the last evaluation
+  const Model& model() const { return *model_; }
+  VecX state(const Kinematics& kin) const {
+    VecX y = VecX::Zero(2 * model_->dofs());
+    f_.packState(kin, y);
+    return y;
+  }
+  // A_0..A_n and the end point of state y.
+  std::vector<Vec2> positions(const VecX& y) {
+    Kinematics kin(model_->bodies());
+    f_.kinematics(y, PointMotion(), kin);
+    std::vector<Vec2> p;
+    for (const auto& b : kin) p.push_back(b.A);
+    p.push_back(kin.back().end());
+    return p;
+  }
+
+ private:
+  std::shared_ptr<const Model> model_;
+  std::unique_ptr<TopMotion> top_;
+  AbsoluteFormulation f_;
+  std::unique_ptr<FormulationData> data_;
+};
+
+// R = Rz(yaw) Ry(tilt): a tilt about y, then a yaw about the vertical.
+inline Mat3 yawTilt(double yaw, double tilt) {
+  return (Eigen::AngleAxisd(yaw, Vec3::UnitZ()) * Eigen::AngleAxisd(tilt, Vec3::UnitY())).toRotationMatrix();
+}
+
+}  // namespace spatial_test
+}  // namespace riser_sim
