@@ -33,7 +33,7 @@ enum class Sweep {
   kStabilityLimit,  // explicit fixed step: 0.9x and 0.3x its estimated limit, 0.9x on absolute (n <= 100);
                     // inextensible lines also h = 0.05, 0.02, 0.01 s
   kTolerance,       // adaptive: tolerance 1e-4, 1e-6, 1e-8 (output step 10 ms)
-  kImplicitSteps,   // implicit: h = 0.1 .. 0.002 s with the structured solves; n <= 40 also the dense
+  kImplicitSteps,   // implicit: h = 0.1, 0.05, 0.03 .. 0.002 s with the structured solves; n <= 40 also the dense
                     // Jacobian (h = 0.02, 0.005 s) and the absolute formulation (h = 0.01, 0.002 s)
 };
 
@@ -139,7 +139,7 @@ Ref reference(const Case& c, std::FILE* csv) {
 std::vector<Config> sweep(const Case& c, bool quick, const std::string& ns) {
   const bool axial = c.scene(10).options.axial_flexibility;
   std::vector<Config> cfg;
-  const std::vector<double> hs = {0.1, 0.05, 0.02, 0.01, 0.005, 0.002};
+  const std::vector<double> hs = {0.1, 0.05, 0.03, 0.02, 0.01, 0.005, 0.002};
   for (int n : c.ns) {
     if (quick && n > 20) continue;
     if (!ns.empty() && ns.find("," + std::to_string(n) + ",") == std::string::npos) continue;
