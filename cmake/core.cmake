@@ -45,6 +45,7 @@ add_library(riser_sim_core
   src/core/spatial/forces/gravity.cpp
   src/core/spatial/forces/axial_spring.cpp
   src/core/spatial/forces/bending_spring.cpp
+  src/core/spatial/forces/flex_joint.cpp
 )
 target_include_directories(riser_sim_core PUBLIC include ${EIGEN3_INCLUDE_DIR})
 target_link_libraries(riser_sim_core PUBLIC yaml-cpp)

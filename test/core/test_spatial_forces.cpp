@@ -7,6 +7,7 @@
 
 #include <random>
 
+#include "riser_sim/spatial/forces/flex_joint.h"
 #include "spatial_test_util.h"
 
 namespace riser_sim {
@@ -124,6 +125,32 @@ TEST(SpatialForces, ConservativeForcesAreMinusTheTangentGradient) {
 TEST(SpatialForces, PowerIdentityWithDamping) {
   auto m = spatial_test::spatialModel(spec(), Vec3(1.2, -0.7, -9.5));
   for (const auto& term : m->terms()) checkPower(*term, *m);
+}
+
+// Flex joints at both ends (random axes): the spring against its energy, the damper's power, and the moment
+// on the holder is minus the joint's torque on the rfe (its e part, τ × e, is what the line feels).
+TEST(SpatialForces, FlexJointsAgainstTheirEnergy) {
+  auto m = spatial_test::spatialModel(spec(), Vec3(1.2, -0.7, -9.5));
+  const FlexJoint top(FlexJoint::End::kTop, Vec3(0.3, 0.2, -1.0), 5e3, 20.0);
+  const FlexJoint bottom(FlexJoint::End::kBottom, Vec3(-0.1, 0.5, 1.0), 2e3, 7.0);
+  for (const FlexJoint* j : {&top, &bottom}) {
+    checkGradient(*j, *m);
+    checkPower(*j, *m);
+  }
+  // A joint turned by 0.2 rad about x from its axis -z: moment k θ about x on the holder, and the
+  // rfe's generalised force turns it back.
+  Kinematics3 kin(m->bodies());
+  for (int i = 0; i < m->bodies(); ++i) kin[i].e = Vec3(0, 0, -1), kin[i].len = m->rfe(i).length;
+  kin[0].e = Vec3(0.0, std::sin(0.2), -std::cos(0.2));
+  const FlexJoint j(FlexJoint::End::kTop, Vec3(0, 0, -1), 5e3, 0.0);
+  EXPECT_NEAR(j.angle(*m, kin), 0.2, 1e-15);
+  const Vec3 M = j.moment(*m, kin);
+  EXPECT_NEAR(M.x(), 5e3 * 0.2, 1e-9);  // e rotated by +0.2 about x: the holder is turned the same way
+  EXPECT_NEAR(M.y(), 0.0, 1e-12);
+  EXPECT_NEAR(M.z(), 0.0, 1e-12);
+  EXPECT_THROW(FlexJoint(FlexJoint::End::kTop, Vec3::Zero(), 1.0, 0.0), std::invalid_argument);
+  EXPECT_THROW(FlexJoint(FlexJoint::End::kTop, Vec3(0, 0, -1), 0.0, 0.0), std::invalid_argument);
+  EXPECT_THROW(FlexJoint(FlexJoint::End::kTop, Vec3(0, 0, -1), 1.0, -1.0), std::invalid_argument);
 }
 
 TEST(SpatialForces, BendingAtZeroAndNearFoldedAngle) {

@@ -1,0 +1,55 @@
+// A flex joint holding a line out of the vertical, at rest: the joint's moment on the holder balances the
+// moment of the line's weight about the hang-off, M = Σ_p (x_p - A_0) × m_p g (statics of the whole line:
+// the top force acts at A_0). Exact at any equilibrium, whatever n; the equilibrium is reached by damping
+// (bending, axial and joint dampers) from a straight line along the joint's axis.
+#include <gtest/gtest.h>
+
+#include "riser_sim/spatial/forces/flex_joint.h"
+#include "spatial_test_util.h"
+
+namespace riser_sim {
+namespace {
+
+using namespace spatial;
+
+// Σ over every part of every rfe of (x_p - A_0) × m_p g [N m].
+Vec3 weightMoment(const SpatialModel& m, const Kinematics3& kin) {
+  Vec3 M = Vec3::Zero();
+  for (int i = 0; i < m.bodies(); ++i)
+    for (int p = 0; p < m.rfe(i).num_parts; ++p) {
+      const RigidPart& part = m.rfe(i).part[p];
+      M += (kin[i].point(part.s0, part.kappa) - kin[0].A).cross(part.mass * m.gravity());
+    }
+  return M;
+}
+
+TEST(SpatialFlexJoint, MomentBalancesTheWeightAtRest) {
+  spatial_test::LineSpec s = spatial_test::flexibleLine();  // 10 m, 10 kg/m, 50 kg end mass
+  s.segments = 6;
+  s.props.EI = 1e5;  // stiff enough that the line hangs off the joint as a bent rod, not as a pendulum
+  s.props.bending_damping = 300.0;
+  s.props.axial_damping = 3e3;
+  auto m = spatial_test::spatialModel(s, Vec3(0, 0, -9.81));
+  // The joint's axis 40° off the vertical toward (1, 1)/√2; k = 2 m g L: the line sags well below it.
+  const Vec3 axis = Vec3(std::sin(0.7) / std::sqrt(2.0), std::sin(0.7) / std::sqrt(2.0), -std::cos(0.7));
+  const double k = 2.0 * (10.0 * 10.0 + 50.0) * 9.81 * 10.0;
+  m->addTerm(std::make_unique<FlexJoint>(FlexJoint::End::kTop, axis, k, 2e4));
+  const auto* joint = static_cast<const FlexJoint*>(m->terms().back().get());
+  SpatialSimulator sim(m, std::make_unique<FixedMotion3>(Vec3::Zero()), IntegratorKind::kRk4);
+  sim.reset(rigidChain(m->line(), Vec3::Zero(), std::vector<Vec3>(m->bodies(), axis), Vec3::Zero(), Vec3::Zero()), 0.0);
+  const double h = 5e-4;  // rk4 well inside its limit (highest mode ~2e3 rad/s at n = 6)
+  for (int k = 0; k < int(40.0 / h); ++k) ASSERT_TRUE(sim.step(h));
+  Kinematics3 kin(m->bodies());
+  sim.kinematics(kin);
+  const Vec3 M = joint->moment(*m, kin), W = weightMoment(*m, kin);
+  // At rest up to what is left of the motion after 40 s (kinetic energy ~1e-14 of m g L): measured
+  // |M - W| = 6.3e-6 |W|, the inertia of that motion; bound 3e-5 |W|. A wrong sign or lever is O(|W|).
+  std::printf("[flex joint] angle %.4f rad, |M| = %.6e N m, |M - W| / |W| = %.2e, T = %.2e J\n",
+              joint->angle(*m, kin), M.norm(), (M - W).norm() / W.norm(), sim.kineticEnergy());
+  EXPECT_GT(joint->angle(*m, kin), 0.05);  // the weight really bends the joint
+  EXPECT_LT((M - W).norm(), 3e-5 * W.norm());
+  EXPECT_LT(sim.kineticEnergy(), 1e-9 * (10.0 * 10.0 + 50.0) * 9.81 * 10.0);
+}
+
+}  // namespace
+}  // namespace riser_sim
