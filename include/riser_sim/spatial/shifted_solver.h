@@ -9,9 +9,10 @@
 // row is (1 + ωc)² g x_v = g b_v - ω² c g b_q, as the planar chain's pinned end). Rows: the top, the joints,
 // a pinned end (3 each) and per rfe the unit-length ½(e·e - 1) = 0.
 // Unknowns are ordered rfe by rfe, [λ_i (3), x_v,i (7), ν_i (1)] (+ the pinned end's λ_n), so the matrix is
-// block-tridiagonal with 11x11 blocks: block LU (Thomas) with partial pivoting inside each block. Omitted
-// terms (the bending spring's Hessian away from a straight joint, the damping torques' dependence on e)
-// only slow Newton. Workspaces are sized in the constructor; factor() and solve() allocate nothing.
+// block-tridiagonal with 11x11 blocks: block LU (Thomas) with partial pivoting inside each block. For the
+// shipped terms K and C are the exact linearisation (test_spatial_shifted: the solve matches a dense
+// finite-difference one to its accuracy); a term that leaves its part out only slows Newton. Workspaces
+// are sized in the constructor; factor() and solve() allocate nothing.
 #pragma once
 #include <Eigen/LU>
 
@@ -43,6 +44,7 @@ class ShiftedSolver3 {
   struct Body {
     Mat7 M, K, C;           // with itself
     Mat7 Ksub, Csub;        // rows of rfe i, columns of rfe i-1
+    Mat7 Ksup;              // rows of rfe i-1, columns of rfe i: K(i-1, i) = Ksubᵀ + Ksup
     Mat37 gE, pE, rE;       // Baumgarte law of E_i: g δa + p δv + r δq (g = B_E = ∂E/∂q)
     Vec7 gu, pu, ru;        // Baumgarte law of the unit length
     Mat11 L, Y;             // block row's coupling to the block before; Y = D̃⁻¹ U to the block after

@@ -14,7 +14,7 @@ ShiftedSolver3::ShiftedSolver3(const SpatialModel& model, double stabilization)
       axial_(model.options().axial_flexibility) {
   body_.resize(nb_ + (pinned_ ? 1 : 0));
   for (Body& B : body_) {
-    for (Mat7* m : {&B.M, &B.K, &B.C, &B.Ksub, &B.Csub}) m->setZero();
+    for (Mat7* m : {&B.M, &B.K, &B.C, &B.Ksub, &B.Ksup, &B.Csub}) m->setZero();
     for (Mat37* m : {&B.gE, &B.pE, &B.rE}) m->setZero();
     for (Vec7* v : {&B.gu, &B.pu, &B.ru}) v->setZero();
     B.L.setZero();
@@ -51,6 +51,7 @@ void ShiftedSolver3::setLinearization(const NaturalData& d, const Eigen::Ref<con
     B.K = S_.K_diag[i];
     B.C = S_.C_diag[i];
     B.Ksub = S_.K_sub[i];
+    B.Ksup = S_.K_sup[i];
     B.Csub = S_.C_sub[i];
     Mat7& K = B.K;
     Mat7& C = B.C;
@@ -86,7 +87,7 @@ void ShiftedSolver3::setLinearization(const NaturalData& d, const Eigen::Ref<con
       K.block<1, 3>(kDelta3, kE) -= L.transpose();
       K.block<3, 1>(kE, kDelta3) -= L;
     } else {  // Δ locked: x_v,Δ = b_v,Δ
-      for (Mat7* X : {&K, &C, &B.Ksub, &B.Csub}) X->row(kDelta3).setZero(), X->col(kDelta3).setZero();
+      for (Mat7* X : {&K, &C, &B.Ksub, &B.Ksup, &B.Csub}) X->row(kDelta3).setZero(), X->col(kDelta3).setZero();
       M(kDelta3, kDelta3) = 1.0;
     }
     // E = A + len e: E'' = A'' + Δ'' e + len e'' + 2Δ' e', law E'' + 2ω E' + ω² E (+ prescribed).
@@ -137,7 +138,10 @@ void ShiftedSolver3::factor(double c) {
     if (i + 1 < int(body_.size())) {
       U.setZero();
       U.block<7, 3>(3, 0) = -B.gE.transpose();
-      if (i + 1 < nb_) U.block<7, 7>(3, 3) = (c * body_[i + 1].Csub + (c * c) * body_[i + 1].Ksub).transpose();
+      if (i + 1 < nb_) {
+        const Body& Nx = body_[i + 1];
+        U.block<7, 7>(3, 3) = (c * Nx.Csub + (c * c) * Nx.Ksub).transpose() + (c * c) * Nx.Ksup;
+      }
       B.Y = B.lu.solve(U);
     }
   }
@@ -170,7 +174,7 @@ void ShiftedSolver3::assembleRhs(int blk, const VecX& b, Vec11& r) const {
   r.head<3>() += bv(blk).segment<3>(kA) - (c * w2) * bq(blk).segment<3>(kA);
   Vec7 kq = B.K * bq(blk);
   if (blk > 0) kq.noalias() += B.Ksub * bq(blk - 1);
-  if (blk + 1 < nb_) kq.noalias() += body_[blk + 1].Ksub.transpose() * bq(blk + 1);
+  if (blk + 1 < nb_) kq.noalias() += (body_[blk + 1].Ksub.transpose() + body_[blk + 1].Ksup) * bq(blk + 1);
   r.segment<7>(3).noalias() = B.M * bv(blk) - c * kq;
   r[10] = B.gu.dot(bv(blk)) - c * B.ru.dot(bq(blk));
 }

@@ -68,8 +68,9 @@ Mat3 cross(const Vec3& a) {
 //   ∂Q_a/∂a = k (-ψ g_a g_aᵀ + φ ∂g_a/∂a),  ∂Q_a/∂b = k (-ψ g_a g_bᵀ + φ ∂g_a/∂b),  ψ = φ'(θ)/s = (s - θ cos θ)/s³,
 //   ∂g_a/∂a = -(u g_aᵀ + g_a uᵀ)/|a| - c (I - u uᵀ)/|a|²,  ∂g_a/∂b = (I - u uᵀ - w wᵀ + c u wᵀ)/(|a||b|).
 // Zero within 1e-12 rad of θ = π, as the force.
-// Damping: Q_b = τ × b, τ = -c_d (b × b' - a × a'): C_bb = c_d (|b|² I - b bᵀ), C_ba = c_d [b]×[a]×
-// (exact in the rates; the dependence of ω = e × e' on e, not symmetric, is left out).
+// Damping: Q_b = τ × b, Q_a = -τ × a, τ = -c_d (b × b' - a × a'): C_bb = c_d (|b|² I - b bᵀ),
+// C_ba = c_d [b]×[a]×, and through e (not symmetric): K_bb = c_d [b]×[b']× - [τ]×, K_aa = c_d [a]×[a']× + [τ]×,
+// K_ba = -c_d [b]×[a']×, K_ab = -c_d [a]×[b']×.
 void BendingSpring::addStiffness(const SpatialModel& model, const Kinematics3& kin, double, SpatialStiffness& S) const {
   const double k = model.bendingStiffness(), c = model.bendingDamping();
   const Mat3 I3 = Mat3::Identity();
@@ -96,6 +97,12 @@ void BendingSpring::addStiffness(const SpatialModel& model, const Kinematics3& k
       S.C_diag[i - 1].block<3, 3>(kE, kE) -= c * Xa * Xa;
       S.C_diag[i].block<3, 3>(kE, kE) -= c * Xb * Xb;
       S.C_sub[i].block<3, 3>(kE, kE) += c * Xb * Xa;
+      const Mat3 Xad = cross(kin[i - 1].e_dot), Xbd = cross(kin[i].e_dot);
+      const Mat3 Xt = cross(-c * (kin[i].omega() - kin[i - 1].omega()));
+      S.K_diag[i - 1].block<3, 3>(kE, kE) += c * Xa * Xad + Xt;
+      S.K_diag[i].block<3, 3>(kE, kE) += c * Xb * Xbd - Xt;
+      S.K_sub[i].block<3, 3>(kE, kE) -= c * Xb * Xad;
+      S.K_sup[i].block<3, 3>(kE, kE) += c * (Xad * Xb - Xa * Xbd);  // K_ab - K_baᵀ
     }
   }
 }
