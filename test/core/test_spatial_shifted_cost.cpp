@@ -78,5 +78,11 @@ TEST(SpatialShiftedCost, DISABLED_MidpointStepCost) {
   measure(300, true);
 }
 
+// Without the dense runs (for a profiler).
+TEST(SpatialShiftedCost, DISABLED_MidpointStepCostStructured) {
+  measure(100, false);
+  measure(300, false);
+}
+
 }  // namespace
 }  // namespace riser_sim

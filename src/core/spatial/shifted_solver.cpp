@@ -132,7 +132,7 @@ void ShiftedSolver3::factor(double c) {
       B.L.setZero();
       B.L.block<3, 7>(0, 3) = -(P.gE + c * P.pE + (c * c) * P.rE);
       B.L.block<7, 7>(3, 3) = c * B.Csub + (c * c) * B.Ksub;
-      D.noalias() -= B.L * P.Y;
+      D -= B.L.middleCols<7>(3).lazyProduct(P.Y.middleRows<7>(3));  // L: columns of x_v,i-1 only
     }
     B.lu.compute(D);
     if (i + 1 < int(body_.size())) {
@@ -152,7 +152,7 @@ void ShiftedSolver3::factor(double c) {
     D.block<3, 3>(0, 0).setZero();
     B.L.setZero();
     B.L.block<3, 7>(0, 3) = -(P.gE + c * P.pE + (c * c) * P.rE);
-    D.noalias() -= B.L * P.Y;
+    D -= B.L.middleCols<7>(3).lazyProduct(P.Y.middleRows<7>(3));
     B.lu.compute(D);
   }
   c_ = c;
