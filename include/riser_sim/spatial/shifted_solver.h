@@ -52,12 +52,14 @@ class ShiftedSolver3 {
     Vec11 z;
   };
   void assembleRhs(int blk, const VecX& b, Vec11& r) const;
+  int blocks() const { return nb_ + (pinned_ ? 1 : 0); }
 
   const SpatialModel& model_;
   const double omega_;
   const int nb_, nq_;
-  const bool pinned_, axial_;
-  AlignedVector<Body> body_;  // nb_ (+ 1 for the pinned end's block)
+  const bool axial_;
+  bool pinned_ = false;
+  AlignedVector<Body> body_;  // nb_ + 1 (the last: the pinned end's block)
   SpatialStiffness S_;
   double c_ = 0.0;
   bool linearized_ = false, factored_ = false;

@@ -10,9 +10,8 @@ ShiftedSolver3::ShiftedSolver3(const SpatialModel& model, double stabilization)
       omega_(stabilization),
       nb_(model.bodies()),
       nq_(model.dofs()),
-      pinned_(model.bottom() == BottomBoundary::kPinned),
       axial_(model.options().axial_flexibility) {
-  body_.resize(nb_ + (pinned_ ? 1 : 0));
+  body_.resize(nb_ + 1);  // + the pinned end's block (used when the bottom is pinned)
   for (Body& B : body_) {
     for (Mat7* m : {&B.M, &B.K, &B.C, &B.Ksub, &B.Ksup, &B.Csub}) m->setZero();
     for (Mat37* m : {&B.gE, &B.pE, &B.rE}) m->setZero();
@@ -29,6 +28,7 @@ ShiftedSolver3::ShiftedSolver3(const SpatialModel& model, double stabilization)
 // right side minus the left: the terms' own, ∂(M a + h)/∂(q, q') (axial: M and h move with e and Δ), the
 // director multiplier μ on e (force μ e) and the joint force λ_{i+1} at E_i on Δ-e ([λ; e·λ; len λ]).
 void ShiftedSolver3::setLinearization(const NaturalData& d, const Eigen::Ref<const VecX>& acc) {
+  pinned_ = model_.bottom() == BottomBoundary::kPinned;  // read per linearisation, as derivative() does
   S_.setZero();
   for (const auto& term : model_.terms()) term->addStiffness(model_, d.kin, d.t, S_);
   const Mat3 I3 = Mat3::Identity();
@@ -135,7 +135,7 @@ void ShiftedSolver3::factor(double c) {
       D -= B.L.middleCols<7>(3).lazyProduct(P.Y.middleRows<7>(3));  // L: columns of x_v,i-1 only
     }
     B.lu.compute(D);
-    if (i + 1 < int(body_.size())) {
+    if (i + 1 < blocks()) {
       U.setZero();
       U.block<7, 3>(3, 0) = -B.gE.transpose();
       if (i + 1 < nb_) {
@@ -180,7 +180,7 @@ void ShiftedSolver3::assembleRhs(int blk, const VecX& b, Vec11& r) const {
 }
 
 void ShiftedSolver3::solve(const VecX& b, VecX& x) {
-  const int nblk = int(body_.size());
+  const int nblk = blocks();
   Vec11 r;
   for (int i = 0; i < nblk; ++i) {
     assembleRhs(i, b, r);
