@@ -171,6 +171,7 @@ const LineCase kSwings[] = {{"free", false, true}, {"pinned", true, true}};
 
 // Newton stops at |Δz| <= 1e-11 (1 + |z|) (implicit_integrators.cpp): both Jacobians converge to the same
 // stage solution to ~1e-11 m per step, ~1e-8 m over 500 steps at worst; 1e-7 m leaves a factor 10.
+// Measured 1.9e-14..2.1e-13 m; Newton iterations per step 3.0..3.1 structured, 4.7..5.9 dense.
 constexpr double kSameStage = 1e-7;
 
 TEST(SpatialShifted, StructuredAndDenseNewtonGiveTheSameSteps) {
