@@ -41,6 +41,7 @@ add_library(riser_sim_core
   src/core/spatial/model.cpp
   src/core/spatial/kinematics.cpp
   src/core/spatial/natural_formulation.cpp
+  src/core/spatial/shifted_solver.cpp
   src/core/spatial/simulator.cpp
   src/core/spatial/forces/gravity.cpp
   src/core/spatial/forces/axial_spring.cpp

@@ -25,6 +25,7 @@ class ImplicitIntegrator : public Integrator {
   void reset(const StateLayout& layout) override;
   void restart() override { jac_valid_ = false; f0_valid_ = false; failure_.clear(); }
   void forcesChanged() override { f0_valid_ = false; }
+  void stateProjected(const VecX& y) override { y_end_ = y; f0_valid_ = false; }
   const std::string& failure() const override { return failure_; }
   Stats stats() const override { return stats_; }
 

@@ -49,6 +49,10 @@ class Integrator {
   // (FSAL, f(t, y)) must not be reused; an approximate Jacobian may (the implicit schemes keep their dense
   // one until its refresh interval instead of an O(p³) refresh every step).
   virtual void forcesChanged() { restart(); }
+  // The caller moved y by a projection onto the constraint manifold (a small move, not a new start): the
+  // scheme keeps its history (generalized_alpha's ẏ) and takes y as where its last step ended; values
+  // evaluated at the unprojected state (f(t, y), FSAL) are not reused. Default: nothing to keep.
+  virtual void stateProjected(const VecX& /*y*/) {}
   // Why the last step() returned false (Newton failed, step size underflow). Cleared by
   // reset()/restart(). A reference: no allocation on the hot path.
   virtual const std::string& failure() const {

@@ -43,7 +43,7 @@ long countAllocations(IntegratorKind kind, bool pinned) {
   const Kinematics3 kin0 = rigidChain(m->line(), Vec3::Zero(), dirs, Vec3::Zero(), Vec3::Zero());
   if (pinned) m->setBottom(BottomBoundary::kPinned, kin0.back().end());
   IntegratorOptions options;
-  options.jacobian = JacobianKind::kDense;  // implicit schemes: the spatial core has no structured solves yet
+  options.jacobian = JacobianKind::kDense;  // the structured solves: test_spatial_shifted_no_alloc.cpp
   options.tolerance = 1e-8;
   SpatialSimulator sim(m, std::make_unique<PlanarMotion3>(spatial_test::topSway(Vec2(0.5, 0.3), 2.0)),
                        kind, options);

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "riser_sim/spatial/model.h"
+#include "riser_sim/spatial/stiffness.h"
 
 namespace riser_sim {
 namespace spatial {
@@ -24,6 +25,10 @@ class SpatialForceTerm {
     addForces(model, kin, t, Q);
     return power(model, kin, t);
   }
+  // Adds K = -∂Q/∂q and C = -∂Q/∂q' (stiffness.h) for the implicit schemes' structured solves. Default:
+  // nothing; an omitted or approximate linearisation slows Newton, it does not change the converged step.
+  virtual void addStiffness(const SpatialModel& /*model*/, const Kinematics3& /*kin*/, double /*t*/,
+                            SpatialStiffness& /*S*/) const {}
 };
 
 }  // namespace spatial

@@ -53,10 +53,14 @@ class NaturalData {
     double rho, a_aa, a_ad, a_dd, t_AA, t_Ae, t_ee, S, Sk_rho, bdd;
   };
   VecX Q, h;
+  VecX acc;  // v' of this evaluation (7 per rfe)
+  VecX dy;   // workspace [q'; v'] for linearize()
   AlignedVector<Body> body;
   AlignedVector<Mat3> diag, low, up;
   AlignedVector<Vec3> rhs, lambda;
 };
+
+class ShiftedSolver3;  // shifted_solver.h
 
 class NaturalFormulation {
  public:
@@ -83,6 +87,17 @@ class NaturalFormulation {
   double manifoldError(const VecX& y, double h) const;
   // Holds y on the unit-length manifold: e_i <- e_i/|e_i|, e'_i <- e'_i - (e_i·e'_i) e_i.
   void project(VecX& y) const;
+
+  // --- Structured implicit solves (shifted_solver.h): x = (I - c J)^-1 b on [q; v], O(n). ---
+  bool hasShiftedSolve() const { return true; }
+  std::unique_ptr<ShiftedSolver3> makeShifted() const;
+  // Linearises at (t, y): data's evaluation is used when it was made at exactly (t, y), else linearize()
+  // evaluates there first (data then holds that evaluation).
+  void linearize(double t, const VecX& y, const PointMotion3& top, NaturalData& data, ShiftedSolver3& s) const;
+  void factorShifted(double c, ShiftedSolver3& s) const;  // throws std::logic_error before linearize()
+  void solveShifted(const VecX& b, VecX& x, ShiftedSolver3& s) const;  // throws before factorShifted()
+  // Whether data holds the evaluation at exactly (t, y).
+  bool evaluatedAt(double t, const VecX& y, const NaturalData& data) const;
 
  private:
   double unitGamma(const BodyKinematics3& b) const;  // e·e'' prescribed by the Baumgarte-held |e| = 1

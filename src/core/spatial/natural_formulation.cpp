@@ -4,7 +4,10 @@
 #include <Eigen/LU>
 #include <cmath>
 
+#include <stdexcept>
+
 #include "riser_sim/spatial/force_term.h"
+#include "riser_sim/spatial/shifted_solver.h"
 
 namespace riser_sim {
 namespace spatial {
@@ -14,6 +17,8 @@ NaturalData::NaturalData(const SpatialModel& model) : kin(model.bodies()) {
   reactions.joint.assign(nc, Vec3::Zero());
   Q.setZero(model.dofs());
   h.setZero(model.dofs());
+  acc.setZero(model.dofs());
+  dy.setZero(2 * model.dofs());
   body.resize(nb);
   diag.assign(nc, Mat3::Zero());
   low.assign(nc, Mat3::Zero());
@@ -239,6 +244,7 @@ void NaturalFormulation::derivative(double t, const VecX& y, const PointMotion3&
   d.reactions.top = d.lambda[0];
   d.reactions.bottom = pinned ? Vec3(-d.lambda[nb]) : Vec3::Zero();
   d.constraint_error = std::sqrt(cmax);
+  d.acc = dy.segment(nq, nq);
 }
 
 double NaturalFormulation::kineticEnergy(const VecX& y) const {
@@ -285,6 +291,38 @@ void NaturalFormulation::project(VecX& y) const {
     e /= e.norm();
     ed -= e.dot(ed) * e;
   }
+}
+
+std::unique_ptr<ShiftedSolver3> NaturalFormulation::makeShifted() const {
+  return std::make_unique<ShiftedSolver3>(model_, omega_);
+}
+
+bool NaturalFormulation::evaluatedAt(double t, const VecX& y, const NaturalData& d) const {
+  if (d.t != t) return false;
+  for (int i = 0; i < model_.bodies(); ++i) {
+    const BodyKinematics3 b = body(y, i);
+    const BodyKinematics3& k = d.kin[i];
+    if (!(b.A == k.A && b.A_dot == k.A_dot && b.delta == k.delta && b.delta_dot == k.delta_dot && b.e == k.e &&
+          b.e_dot == k.e_dot))
+      return false;
+  }
+  return true;
+}
+
+void NaturalFormulation::linearize(double t, const VecX& y, const PointMotion3& top, NaturalData& d,
+                                   ShiftedSolver3& s) const {
+  if (!evaluatedAt(t, y, d)) derivative(t, y, top, d.dy, d);
+  s.setLinearization(d, d.acc);
+}
+
+void NaturalFormulation::factorShifted(double c, ShiftedSolver3& s) const {
+  if (!s.linearized()) throw std::logic_error("spatial natural formulation: factorShifted() before linearize()");
+  s.factor(c);
+}
+
+void NaturalFormulation::solveShifted(const VecX& b, VecX& x, ShiftedSolver3& s) const {
+  if (!s.factored()) throw std::logic_error("spatial natural formulation: solveShifted() before factorShifted()");
+  s.solve(b, x);
 }
 
 }  // namespace spatial

@@ -5,17 +5,10 @@
 namespace riser_sim {
 namespace spatial {
 
-namespace {
-IntegratorOptions withDenseJacobian(IntegratorOptions options) {
-  options.jacobian = JacobianKind::kDense;
-  return options;
-}
-}  // namespace
-
 SpatialSimulator::SpatialSimulator(std::shared_ptr<const SpatialModel> model, std::unique_ptr<TopMotion3> top,
                                    IntegratorKind kind, const IntegratorOptions& options, double stabilization)
     : model_(std::move(model)), top_(std::move(top)), formulation_(*model_, stabilization),
-      data_(formulation_.makeData()), integrator_(makeIntegrator(kind, withDenseJacobian(options))),
+      data_(formulation_.makeData()), shifted_(formulation_.makeShifted()), integrator_(makeIntegrator(kind, options)),
       kin_(model_->bodies()) {
   const int n = 2 * formulation_.positionSize() + 1;  // [q; v; W]
   y_.setZero(n);
@@ -38,11 +31,18 @@ void SpatialSimulator::rhs(double t, const VecX& y, VecX& dy) {
   dy[dy.size() - 1] = -data_->reactions.top.dot(top.v) + data_->term_power;
 }
 
+void SpatialSimulator::linearize(double t, const VecX& y) {
+  formulation_.linearize(t, y, top_->at(t), *data_, *shifted_);
+}
+
 bool SpatialSimulator::step(double h) {
   const bool ok = integrator_->step(*this, t_, y_, h);
   t_ += h;
   // Back onto |e| = 1, e·e' = 0 (the Baumgarte terms hold the drift within the step).
-  if (projection_tol_ <= 0.0 || formulation_.manifoldError(y_, h) > projection_tol_) formulation_.project(y_);
+  if (projection_tol_ <= 0.0 || formulation_.manifoldError(y_, h) > projection_tol_) {
+    formulation_.project(y_);
+    integrator_->stateProjected(y_);
+  }
   return ok && y_.allFinite();
 }
 

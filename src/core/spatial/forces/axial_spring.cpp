@@ -23,5 +23,13 @@ double AxialSpring::power(const SpatialModel& model, const Kinematics3& kin, dou
   return p;
 }
 
+void AxialSpring::addStiffness(const SpatialModel& model, const Kinematics3&, double, SpatialStiffness& S) const {
+  if (!model.options().axial_flexibility) return;
+  for (int i = 0; i < model.bodies(); ++i) {
+    S.K_diag[i](kDelta3, kDelta3) += model.rfe(i).axial_stiffness;
+    S.C_diag[i](kDelta3, kDelta3) += model.rfe(i).axial_damping;
+  }
+}
+
 }  // namespace spatial
 }  // namespace riser_sim

@@ -26,5 +26,16 @@ double Gravity::potentialEnergy(const SpatialModel& model, const Kinematics3& ki
   return v;
 }
 
+// Geometric part: Q_Δ = m_k e·g and Q_e = S(Δ) g, dS/dΔ = m_k (Δ only moves with axial flexibility).
+void Gravity::addStiffness(const SpatialModel& model, const Kinematics3&, double, SpatialStiffness& S) const {
+  if (!model.options().axial_flexibility) return;
+  const Vec3& g = model.gravity();
+  for (int i = 0; i < model.bodies(); ++i) {
+    const double mk = model.rfe(i).mass_k;
+    S.K_diag[i].block<1, 3>(kDelta3, kE) -= mk * g.transpose();
+    S.K_diag[i].block<3, 1>(kE, kDelta3) -= mk * g;
+  }
+}
+
 }  // namespace spatial
 }  // namespace riser_sim

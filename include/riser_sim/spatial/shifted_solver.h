@@ -1,0 +1,69 @@
+// O(n) solves x = (I - c J)^-1 b on y = [q; v] for the implicit integrators, J ≈ ∂(q', v')/∂(q, v) of the
+// spatial natural formulation (constrained, Baumgarte-stabilised). With x_q = b_q + c x_v the velocity
+// increment solves the KKT system
+//   (M + c C + c² K) x_v + Gᵀ ν = M b_v - c K b_q,     (g + c p + c² r) x_v = g b_v - c r b_q (every row),
+// where M is the 7x7 mass per rfe, K, C the terms' linearisation (SpatialForceTerm::addStiffness) plus the
+// mass matrix's and the velocity terms' dependence on q, v and the geometric stiffness of the constraint
+// forces (the director multiplier on e, the joint force on Δ-e). A constraint row is its Baumgarte law
+// linearised on the increment, g δa + p δv + r δq = 0 (g = ∂c/∂q; for A-type rows p = 2ωg, r = ω²g and the
+// row is (1 + ωc)² g x_v = g b_v - ω² c g b_q, as the planar chain's pinned end). Rows: the top, the joints,
+// a pinned end (3 each) and per rfe the unit-length ½(e·e - 1) = 0.
+// Unknowns are ordered rfe by rfe, [λ_i (3), x_v,i (7), ν_i (1)] (+ the pinned end's λ_n), so the matrix is
+// block-tridiagonal with 11x11 blocks: block LU (Thomas) with partial pivoting inside each block. For the
+// shipped terms K and C are the exact linearisation (test_spatial_shifted: the solve matches a dense
+// finite-difference one to its accuracy); a term that leaves its part out only slows Newton. Workspaces
+// are sized in the constructor; factor() and solve() allocate nothing.
+#pragma once
+#include <Eigen/LU>
+
+#include "riser_sim/spatial/natural_formulation.h"
+#include "riser_sim/spatial/stiffness.h"
+
+namespace riser_sim {
+namespace spatial {
+
+class ShiftedSolver3 {
+ public:
+  ShiftedSolver3(const SpatialModel& model, double stabilization);
+  // Linearisation at the evaluation d (its kinematics, forces, joint reactions) with its accelerations
+  // acc = v' (7 per rfe).
+  void setLinearization(const NaturalData& d, const Eigen::Ref<const VecX>& acc);
+  // Block LU of the KKT matrix for c = κh [s].
+  void factor(double c);
+  // x = (I - c J)^-1 b on the first 2p entries (c of the last factor()).
+  void solve(const VecX& b, VecX& x);
+  bool linearized() const { return linearized_; }
+  bool factored() const { return factored_; }
+  double c() const { return c_; }
+
+  using Mat11 = Eigen::Matrix<double, 11, 11>;
+  using Vec11 = Eigen::Matrix<double, 11, 1>;
+  using Mat37 = Eigen::Matrix<double, 3, 7>;
+
+ private:
+  struct Body {
+    Mat7 M, K, C;           // with itself
+    Mat7 Ksub, Csub;        // rows of rfe i, columns of rfe i-1
+    Mat7 Ksup;              // rows of rfe i-1, columns of rfe i: K(i-1, i) = Ksubᵀ + Ksup
+    Mat37 gE, pE, rE;       // Baumgarte law of E_i: g δa + p δv + r δq (g = B_E = ∂E/∂q)
+    Vec7 gu, pu, ru;        // Baumgarte law of the unit length
+    Mat11 L, Y;             // block row's coupling to the block before; Y = D̃⁻¹ U to the block after
+    Eigen::PartialPivLU<Mat11> lu;
+    Vec11 z;
+  };
+  void assembleRhs(int blk, const VecX& b, Vec11& r) const;
+  int blocks() const { return nb_ + (pinned_ ? 1 : 0); }
+
+  const SpatialModel& model_;
+  const double omega_;
+  const int nb_, nq_;
+  const bool axial_;
+  bool pinned_ = false;
+  AlignedVector<Body> body_;  // nb_ + 1 (the last: the pinned end's block)
+  SpatialStiffness S_;
+  double c_ = 0.0;
+  bool linearized_ = false, factored_ = false;
+};
+
+}  // namespace spatial
+}  // namespace riser_sim

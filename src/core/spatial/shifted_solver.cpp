@@ -1,0 +1,199 @@
+#include "riser_sim/spatial/shifted_solver.h"
+
+#include "riser_sim/spatial/force_term.h"
+
+namespace riser_sim {
+namespace spatial {
+
+ShiftedSolver3::ShiftedSolver3(const SpatialModel& model, double stabilization)
+    : model_(model),
+      omega_(stabilization),
+      nb_(model.bodies()),
+      nq_(model.dofs()),
+      axial_(model.options().axial_flexibility) {
+  body_.resize(nb_ + 1);  // + the pinned end's block (used when the bottom is pinned)
+  for (Body& B : body_) {
+    for (Mat7* m : {&B.M, &B.K, &B.C, &B.Ksub, &B.Ksup, &B.Csub}) m->setZero();
+    for (Mat37* m : {&B.gE, &B.pE, &B.rE}) m->setZero();
+    for (Vec7* v : {&B.gu, &B.pu, &B.ru}) v->setZero();
+    B.L.setZero();
+    B.Y.setZero();
+    B.z.setZero();
+    B.lu = Eigen::PartialPivLU<Mat11>(Mat11::Identity());
+  }
+  S_.resize(nb_);
+}
+
+// Per rfe (u = [A, Δ, e], a = u''): M a + h(u, u') = Q + constraint forces. K, C gather -∂/∂(q, q') of the
+// right side minus the left: the terms' own, ∂(M a + h)/∂(q, q') (axial: M and h move with e and Δ), the
+// director multiplier μ on e (force μ e) and the joint force λ_{i+1} at E_i on Δ-e ([λ; e·λ; len λ]).
+void ShiftedSolver3::setLinearization(const NaturalData& d, const Eigen::Ref<const VecX>& acc) {
+  pinned_ = model_.bottom() == BottomBoundary::kPinned;  // read per linearisation, as derivative() does
+  S_.setZero();
+  for (const auto& term : model_.terms()) term->addStiffness(model_, d.kin, d.t, S_);
+  const Mat3 I3 = Mat3::Identity();
+  const double w = omega_;
+  for (int i = 0; i < nb_; ++i) {
+    const BodyKinematics3& b = d.kin[i];
+    const Rfe& r = model_.rfe(i);
+    Body& B = body_[i];
+    const Vec3 Add = acc.segment<3>(kDofPerBody3 * i + kA), edd = acc.segment<3>(kDofPerBody3 * i + kE);
+    const double Ddd = axial_ ? acc[kDofPerBody3 * i + kDelta3] : 0.0;
+    const double m = r.mass, mk = r.mass_k, S = r.firstMoment(b.delta), Sk = r.firstMomentK(b.delta);
+    const double I = r.inertiaAboutA(b.delta);
+    const Vec3& L = d.lambda[i + 1];  // zero at a free end
+    Mat7& M = B.M;
+    M.setZero();
+    M.block<3, 3>(kA, kA) = m * I3;
+    M.block<3, 3>(kA, kE) = S * I3;
+    M.block<3, 3>(kE, kA) = S * I3;
+    M.block<3, 3>(kE, kE) = I * I3;
+    B.K = S_.K_diag[i];
+    B.C = S_.C_diag[i];
+    B.Ksub = S_.K_sub[i];
+    B.Ksup = S_.K_sup[i];
+    B.Csub = S_.C_sub[i];
+    Mat7& K = B.K;
+    Mat7& C = B.C;
+    // μ from the e rows: S A'' + S_k e Δ'' + I_A e'' + h_e = Q_e + len λ_{i+1} + μ e.
+    const Vec3 he = d.h.segment<3>(kDofPerBody3 * i + kE), Qe = d.Q.segment<3>(kDofPerBody3 * i + kE);
+    const Vec3 res = S * Add + Sk * Ddd * b.e + I * edd + he - Qe - b.len * L;
+    const double mu = b.e.dot(res) / b.e.squaredNorm();
+    K.block<3, 3>(kE, kE) -= mu * I3;
+    if (axial_) {
+      M.block<3, 1>(kA, kDelta3) = mk * b.e;
+      M.block<1, 3>(kDelta3, kA) = mk * b.e.transpose();
+      M.block<3, 1>(kE, kDelta3) = Sk * b.e;
+      M.block<1, 3>(kDelta3, kE) = Sk * b.e.transpose();
+      M(kDelta3, kDelta3) = mk * b.e.squaredNorm();
+      // ∂(M a)/∂q (dS/dΔ = dS_k/dΔ = m_k, dI_A/dΔ = 2 S_k).
+      K.block<3, 3>(kA, kE) += mk * Ddd * I3;
+      K.block<3, 1>(kA, kDelta3) += mk * edd;
+      K.block<1, 3>(kDelta3, kE) += (mk * Add + 2.0 * mk * Ddd * b.e + Sk * edd).transpose();
+      K(kDelta3, kDelta3) += mk * b.e.dot(edd);
+      K.block<3, 3>(kE, kE) += Sk * Ddd * I3;
+      K.block<3, 1>(kE, kDelta3) += mk * Add + mk * Ddd * b.e + 2.0 * Sk * edd;
+      // h = 2Δ' [m_k e'; m_k e·e'; S_k e'].
+      const double dd = b.delta_dot;
+      C.block<3, 1>(kA, kDelta3) += 2.0 * mk * b.e_dot;
+      C(kDelta3, kDelta3) += 2.0 * mk * b.e.dot(b.e_dot);
+      C.block<3, 1>(kE, kDelta3) += 2.0 * Sk * b.e_dot;
+      C.block<3, 3>(kA, kE) += 2.0 * dd * mk * I3;
+      C.block<1, 3>(kDelta3, kE) += 2.0 * dd * mk * b.e.transpose();
+      C.block<3, 3>(kE, kE) += 2.0 * dd * Sk * I3;
+      K.block<1, 3>(kDelta3, kE) += 2.0 * dd * mk * b.e_dot.transpose();
+      K.block<3, 1>(kE, kDelta3) += 2.0 * dd * mk * b.e_dot;
+      // Joint force λ_{i+1} at E_i: [λ; e·λ; len λ].
+      K.block<1, 3>(kDelta3, kE) -= L.transpose();
+      K.block<3, 1>(kE, kDelta3) -= L;
+    } else {  // Δ locked: x_v,Δ = b_v,Δ
+      for (Mat7* X : {&K, &C, &B.Ksub, &B.Ksup, &B.Csub}) X->row(kDelta3).setZero(), X->col(kDelta3).setZero();
+      M(kDelta3, kDelta3) = 1.0;
+    }
+    // E = A + len e: E'' = A'' + Δ'' e + len e'' + 2Δ' e', law E'' + 2ω E' + ω² E (+ prescribed).
+    B.gE.setZero();
+    B.gE.block<3, 3>(0, kA) = I3;
+    B.gE.block<3, 3>(0, kE) = b.len * I3;
+    if (axial_) B.gE.col(kDelta3) = b.e;
+    B.pE = 2.0 * w * B.gE;
+    B.rE = (w * w) * B.gE;
+    B.pE.block<3, 3>(0, kE) += 2.0 * b.delta_dot * I3;
+    B.rE.block<3, 3>(0, kE) += (Ddd + 2.0 * w * b.delta_dot) * I3;
+    if (axial_) {
+      B.pE.col(kDelta3) += 2.0 * b.e_dot;
+      B.rE.col(kDelta3) += edd + 2.0 * w * b.e_dot;
+    }
+    // ½(e·e - 1): e·e'' + e'·e' + 2ω e·e' + ω² ½(e·e - 1) = 0.
+    B.gu.setZero();
+    B.pu.setZero();
+    B.ru.setZero();
+    B.gu.segment<3>(kE) = b.e;
+    B.pu.segment<3>(kE) = 2.0 * b.e_dot + 2.0 * w * b.e;
+    B.ru.segment<3>(kE) = edd + 2.0 * w * b.e_dot + (w * w) * b.e;
+  }
+  linearized_ = true;
+  factored_ = false;
+}
+
+void ShiftedSolver3::factor(double c) {
+  const double s = (1.0 + omega_ * c) * (1.0 + omega_ * c);
+  const Mat3 I3 = Mat3::Identity();
+  Mat11 D, U;
+  for (int i = 0; i < nb_; ++i) {
+    Body& B = body_[i];
+    D.setZero();
+    D.block<3, 3>(0, 3 + kA) = s * I3;  // A_i's row (top or joint), g = [I 0 0]
+    D.block<3, 3>(3 + kA, 0) = I3;
+    D.block<7, 7>(3, 3) = B.M + c * B.C + (c * c) * B.K;
+    D.block<7, 1>(3, 10) = B.gu;
+    D.block<1, 7>(10, 3) = (B.gu + c * B.pu + (c * c) * B.ru).transpose();
+    if (i > 0) {
+      const Body& P = body_[i - 1];
+      B.L.setZero();
+      B.L.block<3, 7>(0, 3) = -(P.gE + c * P.pE + (c * c) * P.rE);
+      B.L.block<7, 7>(3, 3) = c * B.Csub + (c * c) * B.Ksub;
+      D -= B.L.middleCols<7>(3).lazyProduct(P.Y.middleRows<7>(3));  // L: columns of x_v,i-1 only
+    }
+    B.lu.compute(D);
+    if (i + 1 < blocks()) {
+      U.setZero();
+      U.block<7, 3>(3, 0) = -B.gE.transpose();
+      if (i + 1 < nb_) {
+        const Body& Nx = body_[i + 1];
+        U.block<7, 7>(3, 3) = (c * Nx.Csub + (c * c) * Nx.Ksub).transpose() + (c * c) * Nx.Ksup;
+      }
+      B.Y = B.lu.solve(U);
+    }
+  }
+  if (pinned_) {  // E_n = p_b: rows 0..2; the rest of the block is padding (identity)
+    Body& B = body_[nb_];
+    const Body& P = body_[nb_ - 1];
+    D.setIdentity();
+    D.block<3, 3>(0, 0).setZero();
+    B.L.setZero();
+    B.L.block<3, 7>(0, 3) = -(P.gE + c * P.pE + (c * c) * P.rE);
+    D -= B.L.middleCols<7>(3).lazyProduct(P.Y.middleRows<7>(3));
+    B.lu.compute(D);
+  }
+  c_ = c;
+  factored_ = true;
+}
+
+// Right side of block blk: rows g b_v - c r b_q, then M b_v - c K b_q, then the unit-length row.
+void ShiftedSolver3::assembleRhs(int blk, const VecX& b, Vec11& r) const {
+  const double c = c_, w2 = omega_ * omega_;
+  auto bq = [&](int i) { return b.segment<7>(kDofPerBody3 * i); };
+  auto bv = [&](int i) { return b.segment<7>(nq_ + kDofPerBody3 * i); };
+  r.setZero();
+  if (blk > 0) {
+    const Body& P = body_[blk - 1];
+    r.head<3>() = -(P.gE * bv(blk - 1) - c * (P.rE * bq(blk - 1)));
+  }
+  if (blk == nb_) return;  // the pinned end's block
+  const Body& B = body_[blk];
+  r.head<3>() += bv(blk).segment<3>(kA) - (c * w2) * bq(blk).segment<3>(kA);
+  Vec7 kq = B.K * bq(blk);
+  if (blk > 0) kq.noalias() += B.Ksub * bq(blk - 1);
+  if (blk + 1 < nb_) kq.noalias() += (body_[blk + 1].Ksub.transpose() + body_[blk + 1].Ksup) * bq(blk + 1);
+  r.segment<7>(3).noalias() = B.M * bv(blk) - c * kq;
+  r[10] = B.gu.dot(bv(blk)) - c * B.ru.dot(bq(blk));
+}
+
+void ShiftedSolver3::solve(const VecX& b, VecX& x) {
+  const int nblk = blocks();
+  Vec11 r;
+  for (int i = 0; i < nblk; ++i) {
+    assembleRhs(i, b, r);
+    if (i > 0) r.noalias() -= body_[i].L * body_[i - 1].z;
+    body_[i].z = body_[i].lu.solve(r);
+  }
+  for (int i = nblk - 2; i >= 0; --i) body_[i].z.noalias() -= body_[i].Y * body_[i + 1].z;
+  for (int i = 0; i < nb_; ++i) {
+    const auto xv = body_[i].z.segment<7>(3);
+    x.segment<7>(nq_ + kDofPerBody3 * i) = xv;
+    x.segment<7>(kDofPerBody3 * i) = b.segment<7>(kDofPerBody3 * i) + c_ * xv;
+  }
+}
+
+}  // namespace spatial
+}  // namespace riser_sim
