@@ -46,13 +46,13 @@ std::optional<SceneIssue> unsupported(const Scene& s) {
   if (f.density > 0.0 && (f.velocity != 0.0 || f.acceleration != 0.0))
     return SceneIssue{"internal_fluid", "a flow (velocity or acceleration != 0) is " + yet +
                                             " (contents at rest are: their mass moves with the pipe)"};
+  if (s.solver.jacobian == JacobianKind::kStructured)
+    return SceneIssue{"solver.jacobian", "'structured' is " + yet + ": the 3D implicit schemes use the dense "
+                                                                    "Jacobian (set dense or auto)"};
   if (s.solver.formulation != FormulationKind::kAbsolute)
     return SceneIssue{"solver.formulation", "'" + std::string(name(s.solver.formulation)) +
                                                 "' is planar; space: spatial runs natural (director) coordinates, "
                                                 "the 3D counterpart of 'absolute' (remove the key or set absolute)"};
-  if (s.solver.jacobian == JacobianKind::kStructured)
-    return SceneIssue{"solver.jacobian", "'structured' is " + yet + ": the 3D implicit schemes use the dense "
-                                                                    "Jacobian (set dense or auto)"};
   if (implicitScheme(s.solver.integrator) && s.elements > kMaxDenseElements3)
     return SceneIssue{"line.elements", "must be <= " + std::to_string(kMaxDenseElements3) + " with " +
                                            name(s.solver.integrator) + " and space: spatial, got " +
@@ -127,6 +127,7 @@ Mat3 yaw(const Vec2& u) {
 double restAcceleration(const Scene& scene, const Kinematics3& kin, const Vec3& end_force, const Vec3& top,
                         int& where) {
   std::shared_ptr<SpatialModel> model = buildSpatialModel(scene);
+  if (scene.bottom == BottomBoundary::kPinned) model->setBottom(BottomBoundary::kPinned, kin.back().end());
   if (end_force.squaredNorm() > 0.0 && scene.bottom != BottomBoundary::kPinned)
     model->addTerm(std::make_unique<EndLoad3>(end_force));
   const NaturalFormulation f(*model, scene.solver.stabilization);
@@ -234,6 +235,9 @@ SpatialRun::SpatialRun(const Scene& scene)
   model_ = buildSpatialModel(scene);
   std::unique_ptr<TopMotion3> motion = buildTopMotion3(scene.top);
   initial_ = solveInitialState3(scene, motion->at(0.0).p);
+  // A pinned end is held where the statics put it: within initial.tolerance x line.length of
+  // bottom.position (their end condition), so the run starts without a Baumgarte kick from that gap.
+  if (scene.bottom == BottomBoundary::kPinned) model_->setBottom(BottomBoundary::kPinned, initial_.kin.back().end());
   // The statics' end force stays on as a constant end load (hold), so the start is an exact equilibrium.
   if (scene.initial.type == InitialKind::kDisplaced && scene.initial.end_force == EndForceKind::kHold)
     model_->addTerm(std::make_unique<EndLoad3>(initial_.end_force));
