@@ -250,6 +250,17 @@ TEST(CliSpatial, BadInputNamesTheKey) {
   EXPECT_EQ(ja["tension_top"], jb["tension_top"]);
 }
 
+// The planar builder never runs a 3D scene (it would drop y): it refuses naming the key.
+TEST(CliSpatial, PlanarBuilderRefusesSpatialScenes) {
+  const Scene s = riser_sim::loadSceneFile(kChain, {"space=spatial", "top.position=[0,1,0]"});
+  try {
+    riser_sim::buildRun(s);
+    ADD_FAILURE() << "buildRun accepted a spatial scene";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("space: ", 0), 0u) << e.what();
+  }
+}
+
 // The shipped 3D example: status ok, the 3D CSV columns, a motion out of every vertical plane, and the
 // energy balance |E - E0 - W| within 1e-3 of m g L (docs/spatial.md).
 TEST(CliSpatial, ExampleSceneRuns) {
