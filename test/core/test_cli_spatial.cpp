@@ -250,6 +250,41 @@ TEST(CliSpatial, BadInputNamesTheKey) {
   EXPECT_EQ(ja["tension_top"], jb["tension_top"]);
 }
 
+// The top motions in 3D, from the CSV: a velocity profile with 3D knots (position integrated exactly: a
+// ramp to (1, 0.5, -0.2) m/s over 1 s covers half of it, then 0.5 s at that velocity), and a horizontal
+// circle from a phase per axis (x = R cos wt, y = R cos(wt - pi/2): |p_h| = R at every row).
+TEST(CliSpatial, TopMotionsIn3D) {
+  const std::string csv = tempPath("motion3.csv");
+  const std::string base = "--scene " + kSwing + " --quiet --output-dt 0.1 --csv " + csv;
+  {
+    const CliRun r = runCli(base + " --duration 1.5 --set top.motion.type=velocity_profile "
+                                   "--set 'top.motion.knots=[[0,[0,0,0]],[1,[1,0.5,-0.2]]]'");
+    ASSERT_EQ(r.code, 0) << r.err;
+    std::string header;
+    const auto rows = csvRows(readFile(csv), header);
+    ASSERT_EQ(rows.size(), 16u);
+    EXPECT_NEAR(rows.back()[1], 0.5 * 1.0 + 0.5 * 1.0, 1e-9);
+    EXPECT_NEAR(rows.back()[2], 0.5 * 0.5 + 0.5 * 0.5, 1e-9);
+    EXPECT_NEAR(rows.back()[3], 0.5 * -0.2 + 0.5 * -0.2, 1e-9);
+  }
+  {
+    const CliRun r = runCli(base + " --duration 2 --set 'top.motion.amplitude=[2,2,0]' "
+                                   "--set 'top.motion.phase=[0,-1.5707963267948966,0]'");
+    ASSERT_EQ(r.code, 0) << r.err;
+    std::string header;
+    const auto rows = csvRows(readFile(csv), header);
+    ASSERT_EQ(rows.size(), 21u);
+    // x_top, y_top are A_0 of the state: the circle starts with v_y = R w while the line is at rest, and
+    // the Baumgarte terms (w_c = 50 rad/s, critically damped) pull A_0 onto it: 3.3e-4 m off at t = 0.1 s,
+    // 1.3e-7 m at 0.3 s (measured); from 0.5 s on it is on the circle.
+    for (const auto& row : rows)
+      if (row[0] >= 0.5) EXPECT_NEAR(std::hypot(row[1], row[2]), 2.0, 1e-8) << "t = " << row[0];
+    EXPECT_NEAR(rows[20][1], -2.0, 1e-8);  // t = 2 s, half the 4 s period: x = R cos(pi)
+    EXPECT_NEAR(rows[10][2], 2.0, 1e-8);   // t = 1 s, a quarter: y = R sin(pi/2)
+  }
+  std::filesystem::remove(csv);
+}
+
 // The planar builder never runs a 3D scene (it would drop y): it refuses naming the key.
 TEST(CliSpatial, PlanarBuilderRefusesSpatialScenes) {
   const Scene s = riser_sim::loadSceneFile(kChain, {"space=spatial", "top.position=[0,1,0]"});
