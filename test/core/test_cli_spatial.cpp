@@ -305,7 +305,9 @@ TEST(CliSpatial, ExampleSceneRuns) {
   EXPECT_NE(r.err.find("largest acceleration at rest"), std::string::npos) << r.err;
   auto j = summary(r);
   EXPECT_EQ(j["status"], "ok") << r.out;
+#if !defined(__SANITIZE_ADDRESS__)  // "well under a second": 0.1 s measured in Release (2.5 s under ASan)
   EXPECT_LT(num(j, "wall_s"), 1.0);
+#endif
   std::string header;
   const auto rows = csvRows(readFile(csv), header);
   EXPECT_EQ(header,
