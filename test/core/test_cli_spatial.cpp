@@ -277,8 +277,11 @@ TEST(CliSpatial, TopMotionsIn3D) {
     // x_top, y_top are A_0 of the state: the circle starts with v_y = R w while the line is at rest, and
     // the Baumgarte terms (w_c = 50 rad/s, critically damped) pull A_0 onto it: 3.3e-4 m off at t = 0.1 s,
     // 1.3e-7 m at 0.3 s (measured); from 0.5 s on it is on the circle.
-    for (const auto& row : rows)
-      if (row[0] >= 0.5) EXPECT_NEAR(std::hypot(row[1], row[2]), 2.0, 1e-8) << "t = " << row[0];
+    for (const auto& row : rows) {
+      if (row[0] >= 0.5) {
+        EXPECT_NEAR(std::hypot(row[1], row[2]), 2.0, 1e-8) << "t = " << row[0];
+      }
+    }
     EXPECT_NEAR(rows[20][1], -2.0, 1e-8);  // t = 2 s, half the 4 s period: x = R cos(pi)
     EXPECT_NEAR(rows[10][2], 2.0, 1e-8);   // t = 1 s, a quarter: y = R sin(pi/2)
   }
