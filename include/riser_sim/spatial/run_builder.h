@@ -71,6 +71,11 @@ struct InitialState3 {
   double acceleration_bound = 0.0;
 };
 
+// Largest |acceleration| [m/s^2] of A_0..A_n and of the end of the 3D model of the scene in the state kin
+// at rest (velocities ignored), with end_force on the end (free bottom) or the end pinned where kin puts it;
+// `where` gets the rfe. ~0 for an equilibrium: solveInitialState3's check.
+double restAcceleration(const Scene& scene, const Kinematics3& kin, const Vec3& end_force, const Vec3& top, int& where);
+
 // The scene's initial state with A_0 at top. Throws std::runtime_error("initial: ...") when the statics
 // fail, the problem is not planar, or the rotated state is not an equilibrium of the 3D model.
 InitialState3 solveInitialState3(const Scene& scene, const Vec3& top);

@@ -122,8 +122,8 @@ Mat3 yaw(const Vec2& u) {
   return R;
 }
 
-// Largest |acceleration| of A_0..A_n and of the end at rest [m/s^2], for the 3D model with the
-// statics' end force on (displaced) and the state kin, and the rfe where it is.
+}  // namespace
+
 double restAcceleration(const Scene& scene, const Kinematics3& kin, const Vec3& end_force, const Vec3& top,
                         int& where) {
   std::shared_ptr<SpatialModel> model = buildSpatialModel(scene);
@@ -147,8 +147,6 @@ double restAcceleration(const Scene& scene, const Kinematics3& kin, const Vec3& 
   }
   return amax;
 }
-
-}  // namespace
 
 InitialState3 solveInitialState3(const Scene& scene, const Vec3& top) {
   InitialState3 init;
