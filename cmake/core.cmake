@@ -38,6 +38,8 @@ add_library(riser_sim_core
   src/core/run_builder.cpp
   src/core/scene_sections.cpp
   src/core/scene_yaml.cpp
+  src/core/spatial/run_builder.cpp
+  src/core/spatial/forces/end_load.cpp
   src/core/spatial/model.cpp
   src/core/spatial/kinematics.cpp
   src/core/spatial/natural_formulation.cpp

@@ -17,6 +17,7 @@ enum class MotionKind { kFixed, kSinusoid, kVelocityProfile, kExternal };  // to
 enum class InitialKind { kHanging, kDisplaced, kBetweenPoints, kStraight };  // initial.type
 enum class EndForceKind { kRelease, kHold };                           // initial.end_force
 enum class FlowModelKind { kPipeFlow, kPaper };                        // internal_fluid.model
+enum class SpaceKind { kPlanar, kSpatial };                            // space
 
 template <class E>
 struct Choices;  // static constexpr std::array<std::pair<E, const char*>, N> names
@@ -67,6 +68,12 @@ template <>
 struct Choices<FlowModelKind> {
   static constexpr std::array<std::pair<FlowModelKind, const char*>, 2> names{
       {{FlowModelKind::kPipeFlow, "pipe_flow"}, {FlowModelKind::kPaper, "paper"}}};
+};
+
+template <>
+struct Choices<SpaceKind> {
+  static constexpr std::array<std::pair<SpaceKind, const char*>, 2> names{
+      {{SpaceKind::kPlanar, "planar"}, {SpaceKind::kSpatial, "spatial"}}};
 };
 
 // The name of a choice ("rk4").

@@ -16,6 +16,9 @@
 
 namespace riser_sim {
 
+// Vectors: the planar fields are [x, z_up] (the 2D path reads only them); the *3 fields are the same
+// values in 3D, [x, y, z] with z up (REP 103; space: spatial reads only them). A scene's 2-vector
+// [a, b] is (a, b) planar and (a, 0, b) in 3D; a 3-vector [x, y, z] is (x, z) planar (y = 0 there).
 struct TopMotionSpec {
   MotionKind type = MotionKind::kFixed;  // top.motion.type
   Vec2 position = Vec2::Zero();   // top.position: A_0 at t = 0 (centre of a sinusoid) [m]
@@ -23,11 +26,23 @@ struct TopMotionSpec {
   double period = 1.0;            // sinusoid [s]
   double phase = 0.0;             // sinusoid [rad]
   std::vector<VelocityProfileMotion::Knot> knots;  // velocity_profile: (t [s], v [m/s])
+  struct Knot3 {
+    double t;
+    Eigen::Vector3d v;
+  };
+  Eigen::Vector3d position3 = Eigen::Vector3d::Zero();   // [m]
+  Eigen::Vector3d amplitude3 = Eigen::Vector3d::Zero();  // [m]
+  Eigen::Vector3d phase3 = Eigen::Vector3d::Zero();      // per axis [rad] (top.motion.phase: a number or a 3-vector)
+  std::vector<Knot3> knots3;
 };
 
 struct InitialSpec {
   InitialKind type = InitialKind::kHanging;  // initial.type
   double end_dx = 0.0;           // displaced: x_end - x_top [m]
+  // displaced, 3D: horizontal offset (x, y) of the end from the top [m]: initial.end_offset, or
+  // (end_dx, 0) when only end_dx is given.
+  Vec2 end_offset = Vec2::Zero();
+  double heading = 0.0;          // straight, 3D: azimuth of the line's vertical plane from +x towards +y [rad]
   double angle = -M_PI / 2;      // straight: φ [rad] (-π/2 = hanging straight down)
   double tolerance = 1e-9;       // statics: residual relative to the line's weight
   // displaced: "release" drops the statics' horizontal end force at t = 0 (the end is let go);
@@ -44,6 +59,7 @@ struct HydroSpec {
 
 struct Scene {
   std::string name;
+  SpaceKind space = SpaceKind::kPlanar;  // space: planar (2D core) or spatial (3D core, spatial/run_builder.h)
   double length = 0.0;   // line.length [m]
   int elements = 0;      // line.elements: n segments (n + 1 rfes)
   LineProperties line;
@@ -53,6 +69,7 @@ struct Scene {
   TopMotionSpec top;
   BottomBoundary bottom = BottomBoundary::kFree;
   Vec2 bottom_point = Vec2::Zero();
+  Eigen::Vector3d bottom_point3 = Eigen::Vector3d::Zero();  // the same point in 3D [m]
   InitialSpec initial;
   SolverSettings solver;
   double duration = 20.0;  // run.duration [s] (CLI default)

@@ -28,6 +28,8 @@ std::string usage() {
          "  --duration S        simulated time [s] (default: run.duration)\n"
          "  --csv FILE          time series every --output-dt seconds: t,x_top,y_top,x_end,y_end,\n"
          "                      tension_top,tension_max,energy,work,energy_drift,constraint_error\n"
+         "                      space: spatial scenes (3D, z up): t,x_top,y_top,z_top,x_end,y_end,\n"
+         "                      z_end,top_fx,top_fy,top_fz,bottom_fx,bottom_fy,bottom_fz,tension_top,...\n"
          "  --output-dt S       CSV row interval [s] (default 0.1)\n"
          "  --probe-rfe K       adds CSV columns x_rfeK,y_rfeK (middle of rfe K, at the arc length\n"
          "                      of its axial spring) and tension_rfeK (axial force in rfe K) [N];\n"

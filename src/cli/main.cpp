@@ -16,20 +16,9 @@
 #include "riser_sim/scene.h"
 #include "riser_sim/scene_yaml.h"
 #include "run_output.h"
+#include "spatial_run.h"
 
 namespace {
-
-// CPU time of this thread [s] (the stepping's cost on a loaded machine, beside its wall time).
-double threadCpuSeconds() {
-  timespec ts{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-  return ts.tv_sec + 1e-9 * ts.tv_nsec;
-}
-
-int fail(int code, const std::string& message) {
-  std::fprintf(stderr, "riser_sim_cli: error: %s\n", message.c_str());
-  return code;
-}
 
 }  // namespace
 
@@ -73,9 +62,11 @@ int main(int argc, char** argv) {
     why << "--duration: " << scene.duration / scene.solver.dt << " steps of solver.dt, more than " << kMaxSceneSteps;
     return fail(kExitBadInput, why.str());
   }
-  info("scene '%s': n = %d, dt = %g s, %s/%s, duration %g s", scene.name.c_str(), scene.elements, scene.solver.dt,
-       name(scene.solver.integrator), name(scene.solver.formulation), scene.duration);
+  info("scene '%s': n = %d, dt = %g s, %s/%s, duration %g s%s", scene.name.c_str(), scene.elements, scene.solver.dt,
+       name(scene.solver.integrator), scene.space == SpaceKind::kSpatial ? "natural" : name(scene.solver.formulation),
+       scene.duration, scene.space == SpaceKind::kSpatial ? ", space: spatial (3D)" : "");
   if (scene.top.type == MotionKind::kExternal) info("top.motion.type external: the top is held at top.position offline");
+  if (scene.space == SpaceKind::kSpatial) return runSpatial(scene, opt);  // the 3D path: spatial_run.cpp
   if (opt.modes > 0) {  // statics + modes; a time run only when --duration is given too
     const int rc = runModes(scene, opt.modes, opt.modes_csv, opt.quiet);
     if (rc != kExitOk || opt.duration <= 0.0) return rc;

@@ -1,9 +1,22 @@
 #include "run_output.h"
 
+#include <time.h>
+
 #include <cmath>
 
 namespace riser_sim {
 namespace cli {
+
+double threadCpuSeconds() {
+  timespec ts{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return ts.tv_sec + 1e-9 * ts.tv_nsec;
+}
+
+int fail(int code, const std::string& message) {
+  std::fprintf(stderr, "riser_sim_cli: error: %s\n", message.c_str());
+  return code;
+}
 
 Sample takeSample(Simulator& sim, const std::vector<int>& probe_rfes) {
   const LineOutputs& out = sim.outputs();

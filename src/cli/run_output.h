@@ -9,6 +9,11 @@
 namespace riser_sim {
 namespace cli {
 
+// CPU time of this thread [s] (the stepping's cost on a loaded machine, beside its wall time).
+double threadCpuSeconds();
+// Prints "riser_sim_cli: error: MESSAGE" on stderr and returns code.
+int fail(int code, const std::string& message);
+
 // One CSV row; the columns are csvHeader().
 struct Sample {
   double t = 0.0;                   // [s]

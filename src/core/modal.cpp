@@ -238,6 +238,8 @@ ModalResult computeModes(const Model& model, const Kinematics& equilibrium, cons
 }
 
 ModalResult sceneModes(const Scene& scene, const ModalOptions& options, StaticsResult* statics) {
+  if (scene.space != SpaceKind::kPlanar)
+    throw std::invalid_argument("space: the modal analysis is planar; 'spatial' scenes have no modes yet");
   std::shared_ptr<Model> model = buildModel(scene);
   const InitialState init = solveInitialState(scene, *model, buildTopMotion(scene.top)->at(0.0).p, true);
   if (statics) *statics = init.statics;

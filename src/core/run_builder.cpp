@@ -43,6 +43,10 @@ InitialState solveInitialState(const Scene& scene, const Model& model, const Vec
 }
 
 Run buildRun(const Scene& scene, RunInputs inputs) {
+  // A 3D scene run planar would drop its y components: spatial::SpatialRun builds it.
+  if (scene.space != SpaceKind::kPlanar)
+    throw std::invalid_argument("space: 'spatial' scenes run through the 3D core (riser_sim/spatial/run_builder.h), "
+                                "not the planar builder");
   Run run;
   run.model = buildModel(scene);
   if (!inputs.motion) inputs.motion = buildTopMotion(scene.top);

@@ -96,6 +96,21 @@ Vec2 toVec2(const YAML::Node& node, const std::string& key) {
   return Vec2(toNumber(node[0], key + "[0]"), toNumber(node[1], key + "[1]"));
 }
 
+// A point or vector of the scene: [a, b] keeps its planar meaning [x, z_up] and is (a, 0, b) in 3D;
+// [x, y, z] is 3D (z up). In a planar scene a y != 0 is out of the plane: refused, naming the key.
+Eigen::Vector3d toVec3(const YAML::Node& node, const std::string& key, bool planar) {
+  if (!node.IsSequence() || (node.size() != 2 && node.size() != 3))
+    throw SceneError(key, "expected [x, z] (planar: x horizontal, z up) or [x, y, z] (z up), got " + describe(node));
+  if (node.size() == 2) return Eigen::Vector3d(toNumber(node[0], key + "[0]"), 0.0, toNumber(node[1], key + "[1]"));
+  const Eigen::Vector3d v(toNumber(node[0], key + "[0]"), toNumber(node[1], key + "[1]"), toNumber(node[2], key + "[2]"));
+  if (planar && v.y() != 0.0)
+    throw SceneError(key + "[1]", "y = " + formatNumber(v.y()) + " points out of the vertical x-z plane of a planar "
+                                  "scene (space: planar, the default); set space: spatial for a 3D scene");
+  return v;
+}
+// The planar [x, z_up] of a 3D vector (exact: the doubles of a 2-vector are copied).
+Vec2 planarOf(const Eigen::Vector3d& v) { return Vec2(v.x(), v.z()); }
+
 // ---- value checks ----
 
 void requirePositive(const std::string& key, double v) {
@@ -147,6 +162,10 @@ class Section {
   }
   Vec2 vec2(const std::string& k) const { return toVec2(at(k), key(k)); }
   Vec2 vec2(const std::string& k, const Vec2& def) const { return has(k) ? vec2(k) : def; }
+  Eigen::Vector3d vec3(const std::string& k, bool planar) const { return toVec3(at(k), key(k), planar); }
+  Eigen::Vector3d vec3(const std::string& k, bool planar, const Eigen::Vector3d& def) const {
+    return has(k) ? vec3(k, planar) : def;
+  }
   // A string from a fixed list.
   // One of the enum's names (choices.h), parsed once here.
   template <class E>

@@ -14,6 +14,7 @@
 
 #include "riser_sim/integrator.h"
 #include "riser_sim/solver_setup.h"
+#include "riser_sim/spatial/run_builder.h"
 #include "scene_section.h"
 
 namespace riser_sim {
@@ -108,53 +109,96 @@ void parseLine(const Section& root, Scene& s) {
   requireNonNegative(line.key("end_mass"), s.end_mass);
 }
 
-void parseKnots(const Section& motion, TopMotionSpec& top) {
+void parseKnots(const Section& motion, TopMotionSpec& top, bool planar) {
   const std::string key = motion.key("knots");
   const YAML::Node knots = motion.at("knots");
   if (!knots.IsSequence() || knots.size() == 0)
-    throw SceneError(key, "expected a non-empty list of [t, [vx, vy]], got " + describe(knots));
+    throw SceneError(key, "expected a non-empty list of [t, [vx, vz]] or [t, [vx, vy, vz]], got " + describe(knots));
   top.knots.clear();
+  top.knots3.clear();
   for (size_t i = 0; i < knots.size(); ++i) {
     const std::string k = key + "[" + std::to_string(i) + "]";
     const YAML::Node knot = knots[i];
-    if (!knot.IsSequence() || knot.size() != 2) throw SceneError(k, "expected [t, [vx, vy]], got " + describe(knot));
+    if (!knot.IsSequence() || knot.size() != 2)
+      throw SceneError(k, "expected [t, [vx, vz]] or [t, [vx, vy, vz]], got " + describe(knot));
     const double t = toNumber(knot[0], k + "[0]");
     if (i > 0 && !(t > top.knots.back().t))
       throw SceneError(k, "knot times must increase, got " + formatNumber(t) + " after " +
                               formatNumber(top.knots.back().t));
-    top.knots.push_back({t, toVec2(knot[1], k + "[1]")});
+    const Eigen::Vector3d v = toVec3(knot[1], k + "[1]", planar);
+    top.knots.push_back({t, planarOf(v)});
+    top.knots3.push_back({t, v});
   }
 }
 
 void parseTop(const Section& root, Scene& s) {
+  const bool planar = s.space == SpaceKind::kPlanar;
   const Section top = root.section("top", {"position", "motion"});
   s.top = TopMotionSpec();
-  s.top.position = top.vec2("position", Vec2::Zero());
+  s.top.position3 = top.vec3("position", planar, Eigen::Vector3d::Zero());
+  s.top.position = planarOf(s.top.position3);
   const Section motion = top.section("motion", {"type", "amplitude", "period", "phase", "knots"});
   s.top.type = motion.choice("type", MotionKind::kFixed);
   // Keys of the other motion types are type-checked but ignored (so --set top.motion.type=... just works).
   const bool sinusoid = s.top.type == MotionKind::kSinusoid;
-  s.top.amplitude = sinusoid ? motion.vec2("amplitude") : motion.vec2("amplitude", Vec2::Zero());
+  s.top.amplitude3 = sinusoid ? motion.vec3("amplitude", planar) : motion.vec3("amplitude", planar, Eigen::Vector3d::Zero());
+  s.top.amplitude = planarOf(s.top.amplitude3);
   s.top.period = sinusoid ? motion.number("period") : motion.number("period", 1.0);
   requirePositive(motion.key("period"), s.top.period);
-  s.top.phase = motion.number("phase", 0.0);
-  if (s.top.type == MotionKind::kVelocityProfile || motion.has("knots")) parseKnots(motion, s.top);
+  if (motion.has("phase") && motion.at("phase").IsSequence()) {  // per axis: 3D only
+    const std::string key = motion.key("phase");
+    const YAML::Node ph = motion.at("phase");
+    if (planar)
+      throw SceneError(key, "a phase per axis [px, py, pz] needs space: spatial (a planar sinusoid has one phase)");
+    if (ph.size() != 3) throw SceneError(key, "expected a number or [px, py, pz], got " + describe(ph));
+    for (int k = 0; k < 3; ++k) s.top.phase3[k] = toNumber(ph[k], key + "[" + std::to_string(k) + "]");
+    s.top.phase = s.top.phase3.x();
+  } else {
+    s.top.phase = motion.number("phase", 0.0);
+    s.top.phase3.setConstant(s.top.phase);
+  }
+  if (s.top.type == MotionKind::kVelocityProfile || motion.has("knots")) parseKnots(motion, s.top, planar);
 }
 
 void parseBottom(const Section& root, Scene& s) {
   const Section bottom = root.section("bottom", {"type", "position"});
   const std::string type = bottom.choice("type", "free", {"free", "pinned"});
   s.bottom = type == "pinned" ? BottomBoundary::kPinned : BottomBoundary::kFree;
-  s.bottom_point = s.bottom == BottomBoundary::kPinned ? bottom.vec2("position")
-                                                        : bottom.vec2("position", Vec2::Zero());
+  const bool planar = s.space == SpaceKind::kPlanar;
+  s.bottom_point3 = s.bottom == BottomBoundary::kPinned ? bottom.vec3("position", planar)
+                                                         : bottom.vec3("position", planar, Eigen::Vector3d::Zero());
+  s.bottom_point = planarOf(s.bottom_point3);
 }
 
 void parseInitial(const Section& root, Scene& s) {
-  const Section initial = root.section("initial", {"type", "end_dx", "angle", "tolerance", "end_force"});
+  const bool planar = s.space == SpaceKind::kPlanar;
+  const Section initial =
+      root.section("initial", {"type", "end_dx", "end_offset", "angle", "heading", "tolerance", "end_force"});
   s.initial = InitialSpec();
   s.initial.type = initial.choice("type", InitialKind::kHanging);
-  s.initial.end_dx = s.initial.type == InitialKind::kDisplaced ? initial.number("end_dx") : initial.number("end_dx", 0.0);
+  const bool displaced = s.initial.type == InitialKind::kDisplaced;
+  if (initial.has("end_offset")) {  // [dx, dy]: horizontal offset of the end from the top
+    const std::string key = initial.key("end_offset");
+    if (initial.has("end_dx"))
+      throw SceneError(key, "give either initial.end_dx (along x) or initial.end_offset ([dx, dy]), not both");
+    const YAML::Node off = initial.at("end_offset");
+    if (!off.IsSequence() || off.size() != 2)
+      throw SceneError(key, "expected [dx, dy] (horizontal: x, y), got " + describe(off));
+    s.initial.end_offset = Vec2(toNumber(off[0], key + "[0]"), toNumber(off[1], key + "[1]"));
+    if (planar && s.initial.end_offset.y() != 0.0)
+      throw SceneError(key + "[1]", "dy = " + formatNumber(s.initial.end_offset.y()) + " points out of the vertical "
+                                    "x-z plane of a planar scene (space: planar, the default); set space: spatial "
+                                    "for a 3D scene");
+    s.initial.end_dx = s.initial.end_offset.x();
+  } else {
+    s.initial.end_dx = displaced ? initial.number("end_dx") : initial.number("end_dx", 0.0);
+    s.initial.end_offset = Vec2(s.initial.end_dx, 0.0);
+  }
   s.initial.angle = initial.number("angle", -90.0) * kDegToRad;
+  s.initial.heading = initial.number("heading", 0.0) * kDegToRad;
+  if (planar && s.initial.heading != 0.0)
+    throw SceneError(initial.key("heading"), "turns the straight line out of the vertical x-z plane of a planar scene "
+                                             "(space: planar, the default); set space: spatial for a 3D scene");
   s.initial.tolerance = initial.number("tolerance", 1e-9);
   requirePositive(initial.key("tolerance"), s.initial.tolerance);
   s.initial.end_force = initial.choice("end_force", EndForceKind::kRelease);
@@ -303,11 +347,20 @@ void checkCombination(const Scene& s) {
   if (pinned && s.initial.type != InitialKind::kBetweenPoints)
     throw SceneError("bottom.type", "'pinned' needs initial.type: between_points (the initial state must end at "
                                     "bottom.position), got initial.type '" + std::string(name(s.initial.type)) + "'");
+  if (s.initial.type == InitialKind::kDisplaced && s.initial.end_offset.y() != 0.0 &&
+      !(s.initial.end_offset.norm() < s.length))
+    throw SceneError("initial.end_offset", "must be shorter than line.length (" + formatNumber(s.length) + " m), got " +
+                                               formatNumber(s.initial.end_offset.norm()) + " m");
   if (s.initial.type == InitialKind::kDisplaced && !(std::abs(s.initial.end_dx) < s.length))
     throw SceneError("initial.end_dx", "must be smaller than line.length (" + formatNumber(s.length) +
                                            " m) in magnitude, got " + formatNumber(s.initial.end_dx));
+  if (s.space == SpaceKind::kSpatial) {  // what the 3D core cannot run yet, naming the section
+    if (const auto error = spatial::unsupported(s)) throw SceneError(error->key, error->message);
+  }
   if (pinned && !s.options.axial_flexibility) {
-    const double span = (s.bottom_point - buildTopMotion(s.top)->at(0.0).p).norm();
+    const double span = s.space == SpaceKind::kSpatial
+                            ? (s.bottom_point3 - spatial::buildTopMotion3(s.top)->at(0.0).p).norm()
+                            : (s.bottom_point - buildTopMotion(s.top)->at(0.0).p).norm();
     if (span > s.length)
       throw SceneError("bottom.position", "is " + formatNumber(span) + " m from the top at t = 0 but the line is " +
                                               formatNumber(s.length) + " m long and inextensible");
@@ -331,9 +384,11 @@ const SectionEntry kSections[] = {
 Scene parseScene(const YAML::Node& node) {
   std::vector<std::string> accepted = {"name"};
   for (const auto& entry : kSections) accepted.push_back(entry.name);
+  accepted.push_back("space");
   const Section root(node, "", accepted);
   Scene s;
   s.name = root.text("name", "");
+  s.space = root.choice("space", SpaceKind::kPlanar);  // first: it decides what a vector may be
   for (const auto& entry : kSections) entry.parse(root, s);
   checkCombination(s);
   return s;

@@ -13,6 +13,7 @@
 #include "riser_sim/run_builder.h"
 #include "riser_sim/scene.h"
 #include "riser_sim/scene_yaml.h"
+#include "riser_sim/spatial/run_builder.h"
 
 using namespace riser_sim;
 
@@ -52,8 +53,10 @@ const BadScene kBadScenes[] = {
     {"{line: {length: [1, 2], elements: 10, EA: 1e6, EI: 0, mass_per_length: 1}}", "line.length", "got a list"},
     {"{line: {length: 1, elements: 1, EA: 1, EI: 0, mass_per_length: 1, bending: maybe}}", "line.bending",
      "expected true or false"},
-    {"{line: {length: 1, elements: 1, EA: 1, EI: 0, mass_per_length: 1}, top: {position: [1, 2, 3]}}", "top.position",
-     "expected [x, y], got a list of 3 items"},
+    {"{line: {length: 1, elements: 1, EA: 1, EI: 0, mass_per_length: 1}, top: {position: [1, 2, 3, 4]}}", "top.position",
+     "expected [x, z] (planar: x horizontal, z up) or [x, y, z] (z up), got a list of 4 items"},
+    {"{line: {length: 1, elements: 1, EA: 1, EI: 0, mass_per_length: 1}, top: {position: [1, 2, 3]}}",
+     "top.position[1]", "y = 2 points out of the vertical x-z plane of a planar scene"},
     {"{line: {length: 1, elements: 1, EA: 1, EI: 0, mass_per_length: 1}, top: {position: [1, x]}}", "top.position[1]",
      "expected a number"},
     {"{line: 5}", "line", "expected a map of keys"},
@@ -146,7 +149,7 @@ const BadScene kBadScenes[] = {
      "top.motion.knots[1]", "knot times must increase"},
     {"{line: {length: 1, elements: 1, EA: 1, EI: 0, mass_per_length: 1}, "
      "top: {motion: {type: velocity_profile, knots: [[0, 1]]}}}",
-     "top.motion.knots[0][1]", "expected [x, y]"},
+     "top.motion.knots[0][1]", "expected [x, z]"},
     {"{line: {length: 1, elements: 1, EA: 1, EI: 0, mass_per_length: 1}, bottom: {type: pinned}}", "bottom.position",
      "missing required key"},
     {"{line: {length: 1, elements: 1, EA: 1, EI: 0, mass_per_length: 1}, initial: {type: between_points}}",
@@ -485,9 +488,15 @@ TEST(SceneYaml, EveryShippedSceneParsesAndBuilds) {
     Scene s;
     ASSERT_NO_THROW(s = loadSceneFile(entry.path().string())) << entry.path();
     EXPECT_FALSE(s.name.empty());
-    // The initial statics of every shipped scene converge.
+    // The initial statics of every shipped scene converge (a 3D scene's through the 3D builder).
     StaticsResult statics;
-    EXPECT_NO_THROW(buildSimulator(s, &statics));
+    if (s.space == SpaceKind::kSpatial) {
+      std::unique_ptr<spatial::SpatialRun> run;
+      EXPECT_NO_THROW(run = std::make_unique<spatial::SpatialRun>(s));
+      if (run) statics = run->initial().statics;
+    } else {
+      EXPECT_NO_THROW(buildSimulator(s, &statics));
+    }
     EXPECT_TRUE(statics.converged) << statics.message;
   }
   EXPECT_GE(count, 2);  // at least paper_table1 and hanging_chain

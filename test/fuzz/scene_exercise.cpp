@@ -9,6 +9,7 @@
 #include "riser_sim/run_builder.h"
 #include "riser_sim/scene.h"
 #include "riser_sim/scene_yaml.h"
+#include "riser_sim/spatial/run_builder.h"
 
 namespace riser_sim {
 namespace fuzz {
@@ -62,7 +63,43 @@ std::string describeException() {
   }
 }
 
+// space: spatial: the 3D builder and a few steps, under the same rules.
+Outcome buildSpatial(const Scene& scene) {
+  Outcome out;
+  std::unique_ptr<spatial::SpatialRun> run;
+  try {
+    run = std::make_unique<spatial::SpatialRun>(scene);
+  } catch (const std::exception& e) {
+    out.kind = Outcome::Kind::kBuildRejected;
+    out.message = e.what();
+    if (!namesKey(out.message)) out.defect = "build error without a key: " + out.message;
+    return out;
+  } catch (...) {
+    out.defect = "build: " + describeException();
+    return out;
+  }
+  out.kind = Outcome::Kind::kBuilt;
+  int steps = 0;
+  for (;;) {
+    const spatial::LineOutputs3& o = run->outputs();
+    bool ok = o.top_force.allFinite() && o.bottom_force.allFinite() && finite(o.axial_force);
+    for (const auto& p : o.points) ok = ok && p.allFinite();
+    for (double v : {o.top_tension, o.max_tension, o.kinetic_energy, o.potential_energy, o.work_in, o.constraint_error})
+      ok = ok && finite(v);
+    if (!ok) {
+      out.defect = "non-finite 3D outputs after " + std::to_string(steps) + " steps";
+      return out;
+    }
+    if (steps == kSteps || !run->step()) break;
+    ++steps;
+  }
+  out.message = "built (3D), " + std::to_string(steps) + " steps" +
+                (run->diverged() ? " (diverged: " + run->divergenceReason() + ")" : "");
+  return out;
+}
+
 Outcome build(const Scene& scene) {
+  if (scene.space == SpaceKind::kSpatial) return buildSpatial(scene);
   Outcome out;
   std::unique_ptr<Simulator> sim;
   try {

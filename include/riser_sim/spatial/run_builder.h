@@ -1,0 +1,130 @@
+// A 3D run from a scene with `space: spatial` (docs/spatial.md, "Running a 3D scene"): the spatial model
+// (only the terms the scene lists), the top motion in 3D, the initial state and a SpatialSimulator,
+// watched for divergence and energy balance as the planar Simulator is. What the 3D core cannot run yet
+// is refused naming the section (unsupported()), never dropped.
+//
+// Statics: hanging, between two points and end displaced under a horizontal force are planar in the
+// vertical plane through the top and the end. They are solved by the planar statics on a planar Scene
+// built from the rotated data and rotated into 3D (exact); the builder checks that the problem is
+// planar in that plane and that the rotated state is an equilibrium of the 3D model (its accelerations
+// at rest, initialAccelerationBound()).
+#pragma once
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "riser_sim/scene.h"
+#include "riser_sim/spatial/simulator.h"
+
+namespace riser_sim {
+namespace spatial {
+
+// A key and why the 3D path cannot run it.
+struct SceneIssue {
+  std::string key, message;
+};
+// The first thing of a spatial scene the 3D core does not have yet (water, hydrodynamics, seabed,
+// internal flow, the chain formulations, structured Jacobians, dense Jacobians beyond kMaxDenseElements3).
+std::optional<SceneIssue> unsupported(const Scene& scene);
+// Implicit schemes run a dense p x p Jacobian in 3D, p = 7(n + 1): n <= 570 keeps p <= 4000, the
+// planar limit's memory (p = 4(n + 1), n <= 1000).
+constexpr int kMaxDenseElements3 = 570;
+
+// p(t) = position + amplitude ∘ cos(2π t / period + phase), per axis (phase per axis: a horizontal
+// circle is amplitude [R, R, 0], phase [0, -π/2, 0]).
+class SinusoidMotion3 : public TopMotion3 {
+ public:
+  SinusoidMotion3(const Vec3& center, const Vec3& amplitude, double period, const Vec3& phase)
+      : center_(center), amp_(amplitude), omega_(2.0 * M_PI / period), phase_(phase) {}
+  PointMotion3 at(double t) const override;
+
+ private:
+  Vec3 center_, amp_;
+  double omega_;
+  Vec3 phase_;
+};
+
+// Velocity piecewise linear between knots (the planar VelocityProfileMotion on (x, z) and on y).
+class VelocityProfileMotion3 : public TopMotion3 {
+ public:
+  VelocityProfileMotion3(const Vec3& start, const std::vector<TopMotionSpec::Knot3>& knots);
+  PointMotion3 at(double t) const override;
+
+ private:
+  std::unique_ptr<TopMotion> xz_, y_;
+};
+
+std::unique_ptr<TopMotion3> buildTopMotion3(const TopMotionSpec& spec);
+// The scene's line in 3D: gravity (0, 0, -g), axial and bending terms as the scene lists them, the end
+// mass, the bottom free or pinned at bottom.position.
+std::shared_ptr<SpatialModel> buildSpatialModel(const Scene& scene);
+
+struct InitialState3 {
+  Kinematics3 kin;               // at rest
+  Vec3 end_force = Vec3::Zero();  // force [N] at the end that holds kin (displaced; the anchor's for pinned)
+  bool equilibrium = true;       // false for initial.type straight
+  std::string about;
+  StaticsResult statics;         // of the planar problem (kin in its plane)
+  Vec3 plane_direction = Vec3::UnitX();  // horizontal unit vector of the statics' plane
+  double max_acceleration = 0.0;  // largest |acceleration| of a joint or the end at rest [m/s^2]
+  double acceleration_bound = 0.0;
+};
+
+// Largest |acceleration| [m/s^2] of A_0..A_n and of the end of the 3D model of the scene in the state kin
+// at rest (velocities ignored), with end_force on the end (free bottom) or the end pinned where kin puts it;
+// `where` gets the rfe. ~0 for an equilibrium: solveInitialState3's check.
+double restAcceleration(const Scene& scene, const Kinematics3& kin, const Vec3& end_force, const Vec3& top, int& where);
+
+// The scene's initial state with A_0 at top. Throws std::runtime_error("initial: ...") when the statics
+// fail, the problem is not planar, or the rotated state is not an equilibrium of the 3D model.
+InitialState3 solveInitialState3(const Scene& scene, const Vec3& top);
+
+// Every output of the current state.
+struct LineOutputs3 {
+  double t = 0.0;
+  AlignedVector<Vec3> points;      // A_0..A_n and the end [m]
+  AlignedVector<Vec3> springs;     // A_i + l1_i e_i: the point of rfe i's axial spring [m]
+  std::vector<double> axial_force;  // per rfe [N]
+  Vec3 top_force = Vec3::Zero();     // force the line exerts on the hang-off [N]
+  Vec3 bottom_force = Vec3::Zero();  // on the anchor (pinned; 0 when free) [N]
+  double top_tension = 0.0, max_tension = 0.0;  // [N]
+  double kinetic_energy = 0.0, potential_energy = 0.0, work_in = 0.0;  // [J]
+  double constraint_error = 0.0;  // [m]
+};
+
+class SpatialRun {
+ public:
+  // Throws std::invalid_argument("key: ...") for what the 3D core cannot run, std::runtime_error
+  // ("initial: ...") when the initial state fails.
+  explicit SpatialRun(const Scene& scene);
+
+  // One step of solver.dt; false once diverged (divergenceReason() names the cause and solver.dt).
+  bool step();
+  double time() const { return sim_->time(); }
+  long steps() const { return steps_; }
+  double dt() const { return dt_; }
+  bool diverged() const { return !reason_.empty(); }
+  const std::string& divergenceReason() const { return reason_; }
+  // (E - E0 - W) / max(|E0|, m g L), as the planar Simulator::energyDrift.
+  double energyDrift();
+  double energyScale() const { return energy_scale_; }  // m g L [J]
+  double maxConstraintError() const { return max_constraint_error_; }
+  const LineOutputs3& outputs();
+
+  const SpatialModel& model() const { return *model_; }
+  const InitialState3& initial() const { return initial_; }
+  SpatialSimulator& simulator() { return *sim_; }
+
+ private:
+  std::shared_ptr<SpatialModel> model_;
+  InitialState3 initial_;
+  std::unique_ptr<SpatialSimulator> sim_;
+  double dt_, max_gap_, e0_ = 0.0, energy_scale_ = 1.0, max_constraint_error_ = 0.0;
+  long steps_ = 0;
+  std::string reason_;
+  LineOutputs3 out_;
+};
+
+}  // namespace spatial
+}  // namespace riser_sim

@@ -1,0 +1,208 @@
+#include "spatial_run.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "output_file.h"
+#include "run_output.h"
+
+namespace riser_sim {
+namespace cli {
+
+namespace {
+// Columns of spatialSample() before the probes.
+constexpr const char* kSpatialColumns =
+    "t,x_top,y_top,z_top,x_end,y_end,z_end,top_fx,top_fy,top_fz,bottom_fx,bottom_fy,bottom_fz,tension_top,"
+    "tension_max,energy,work,energy_drift,constraint_error";
+enum Column { kT, kXTop, kYTop, kZTop, kXEnd, kYEnd, kZEnd, kTopFx, kTopFy, kTopFz, kBotFx, kBotFy, kBotFz,
+              kTensionTop, kTensionMax, kEnergy, kWork, kDrift, kGap, kColumns };
+
+bool finite(const std::vector<double>& row) {
+  return std::all_of(row.begin(), row.end(), [](double v) { return std::isfinite(v); });
+}
+
+void writeRow(std::FILE* f, const std::vector<double>& row) {
+  for (size_t k = 0; k < row.size(); ++k) std::fprintf(f, k ? ",%.9g" : "%.9g", row[k]);
+  std::fputc('\n', f);
+}
+}  // namespace
+
+std::string spatialCsvHeader(const std::vector<int>& probe_rfes) {
+  std::string h = kSpatialColumns;
+  for (const int k : probe_rfes) {
+    const std::string K = std::to_string(k);
+    h += ",x_rfe" + K + ",y_rfe" + K + ",z_rfe" + K + ",tension_rfe" + K;
+  }
+  return h;
+}
+
+std::vector<double> spatialSample(spatial::SpatialRun& run, const std::vector<int>& probe_rfes) {
+  const spatial::LineOutputs3& o = run.outputs();
+  std::vector<double> row = {o.t};
+  for (const auto& v : {o.points.front(), o.points.back(), o.top_force, o.bottom_force})
+    row.insert(row.end(), {v.x(), v.y(), v.z()});
+  row.insert(row.end(), {o.top_tension, o.max_tension, o.kinetic_energy + o.potential_energy, o.work_in,
+                         run.energyDrift(), o.constraint_error});
+  for (const int k : probe_rfes) {
+    const auto& p = o.springs[k];
+    row.insert(row.end(), {p.x(), p.y(), p.z(), o.axial_force[k]});
+  }
+  return row;
+}
+
+int runSpatial(const Scene& scene, const CliOptions& opt) {
+  const auto info = [&](const char* fmt, auto... args) {
+    if (opt.quiet) return;
+    std::fputs("riser_sim_cli: ", stderr);
+    std::fprintf(stderr, fmt, args...);
+    std::fputc('\n', stderr);
+  };
+  if (opt.modes > 0)
+    return fail(kExitBadInput, "--modes: not available with space: spatial yet (the modal analysis is planar; run "
+                               "the scene with space: planar for its in-plane modes)");
+
+  std::unique_ptr<spatial::SpatialRun> run;
+  try {
+    run = std::make_unique<spatial::SpatialRun>(scene);
+  } catch (const std::invalid_argument& e) {  // what the 3D core cannot run yet, naming the key
+    return fail(kExitBadInput, e.what());
+  } catch (const std::runtime_error& e) {  // statics did not converge / not an equilibrium in 3D
+    return fail(kExitDiverged, e.what());
+  } catch (const std::exception& e) {
+    return fail(kExitInternal, e.what());
+  }
+  const spatial::InitialState3& init = run->initial();
+  info("initial state (%s): %s; %s; end force (%g, %g, %g) N; largest acceleration at rest %g m/s^2 (bound %g)",
+       name(scene.initial.type), init.about.c_str(), init.statics.message.c_str(), init.end_force.x(),
+       init.end_force.y(), init.end_force.z(), init.max_acceleration, init.acceleration_bound);
+  info("stability: no step-size estimate in 3D yet; the run stops naming solver.dt if it diverges");
+
+  OutputFile csv;
+  if (!opt.csv.empty()) {
+    if (!csv.open("--csv", opt.csv)) return fail(kExitBadInput, csv.error());
+    std::fprintf(csv.get(), "%s\n", spatialCsvHeader(opt.probe_rfes).c_str());
+  }
+  const double dt = run->dt();
+  const long total_steps = std::max(1L, static_cast<long>(std::ceil(scene.duration / dt - 1e-9)));
+  const long every = outputStride(opt.output_dt, dt, total_steps);
+
+  std::string diverged;
+  std::vector<double> last = spatialSample(*run, opt.probe_rfes);
+  if (!finite(last)) diverged = "initial state has non-finite outputs";
+  if (csv.isOpen() && diverged.empty()) writeRow(csv.get(), last);
+
+  std::chrono::steady_clock::duration wall{0};
+  double cpu_s = 0.0;
+  while (diverged.empty() && csv.ok() && run->steps() < total_steps) {
+    const long chunk = std::min(every, total_steps - run->steps());
+    const auto start = std::chrono::steady_clock::now();
+    const double cpu_start = threadCpuSeconds();
+    bool ok = true;
+    for (long k = 0; k < chunk && ok; ++k) ok = run->step();
+    wall += std::chrono::steady_clock::now() - start;
+    cpu_s += threadCpuSeconds() - cpu_start;
+    if (!ok) {
+      diverged = run->divergenceReason();
+      break;
+    }
+    std::vector<double> s = spatialSample(*run, opt.probe_rfes);
+    if (!finite(s)) {
+      diverged = "outputs are not finite";
+      break;
+    }
+    last = std::move(s);
+    if (csv.isOpen()) writeRow(csv.get(), last);
+  }
+  const bool written = csv.close();
+  const std::string write_error = csv.error();
+
+  const double wall_s = std::chrono::duration<double>(wall).count();
+  const double sim_s = run->time();
+  const double rtf = wall_s > 0.0 ? sim_s / wall_s : NAN;
+  std::string warning;  // as the planar run: an energy balance off by more than kEnergyDriftWarning
+  if (diverged.empty() && std::abs(last[kDrift]) > kEnergyDriftWarning) {
+    char buf[320];
+    std::snprintf(buf, sizeof(buf),
+                  "energy balance off by %.3g of m g L (bound %g): the step does not resolve the motion, so "
+                  "positions and forces may be wrong; use a smaller solver.dt or solver.integrator midpoint",
+                  last[kDrift], kEnergyDriftWarning);
+    warning = buf;
+  }
+  bool summary_written = true;
+  const Integrator::Stats stats = run->simulator().integrator().stats();
+  if (opt.summary) {
+    JsonLine j;
+    j.add("status", !diverged.empty() ? "diverged" : !written ? "write_failed" : warning.empty() ? "ok" : "warning")
+        .add("wall_s", wall_s)
+        .add("cpu_s", cpu_s)
+        .add("sim_s", sim_s)
+        .add("steps", run->steps())
+        .add("rtf", rtf)
+        .add("rhs_evaluations", stats.rhs)
+        .add("newton_iterations", stats.newton)
+        .add("t_last", last[kT])
+        .add("x_top", last[kXTop])
+        .add("y_top", last[kYTop])
+        .add("z_top", last[kZTop])
+        .add("x_end", last[kXEnd])
+        .add("y_end", last[kYEnd])
+        .add("z_end", last[kZEnd])
+        .add("top_force_x", last[kTopFx])
+        .add("top_force_y", last[kTopFy])
+        .add("top_force_z", last[kTopFz])
+        .add("bottom_force_x", last[kBotFx])
+        .add("bottom_force_y", last[kBotFy])
+        .add("bottom_force_z", last[kBotFz])
+        .add("tension_top", last[kTensionTop])
+        .add("tension_max", last[kTensionMax])
+        .add("max_constraint_error", run->maxConstraintError())
+        .add("energy_drift", last[kDrift])
+        .add("energy", last[kEnergy])
+        .add("work", last[kWork])
+        .add("energy_scale", run->energyScale())
+        .add("scene", scene.name)
+        .add("space", "spatial")
+        .add("n", scene.elements)
+        .add("dt", dt)
+        .add("integrator", name(scene.solver.integrator))
+        .add("formulation", "natural")
+        .add("statics_iterations", init.statics.iterations)
+        .add("statics_residual", init.statics.residual)
+        .add("end_force_x", init.end_force.x())
+        .add("end_force_y", init.end_force.y())
+        .add("end_force_z", init.end_force.z())
+        .add("initial_acceleration", init.max_acceleration)
+        .add("initial_acceleration_bound", init.acceleration_bound);
+    if (!diverged.empty()) j.add("diverged_at", sim_s).add("reason", diverged);
+    if (!written) j.add("write_error", write_error);
+    if (!warning.empty()) j.add("warning", warning);
+    OutputFile out;
+    out.useStdout();
+    std::printf("%s\n", j.str().c_str());
+    summary_written = out.close();
+    if (!summary_written) fail(kExitWriteFailed, "--summary: " + out.error());
+  }
+  int rc = summary_written ? kExitOk : kExitWriteFailed;
+  if (!diverged.empty()) {
+    char when[64];
+    std::snprintf(when, sizeof(when), "diverged at t = %.9g s (step %ld): ", sim_s, run->steps());
+    rc = fail(kExitDiverged, when + diverged + (opt.csv.empty() ? "" : "; the CSV stops at the last finite row"));
+  }
+  if (!written) {
+    char when[96];
+    std::snprintf(when, sizeof(when), "; the file is incomplete%s (t = %.9g s reached)",
+                  diverged.empty() && run->steps() < total_steps ? " and the run was stopped" : "", sim_s);
+    rc = fail(kExitWriteFailed, write_error + when);
+  }
+  if (!summary_written) rc = kExitWriteFailed;
+  if (rc != kExitOk) return rc;
+  if (!warning.empty()) std::fprintf(stderr, "riser_sim_cli: warning: %s\n", warning.c_str());
+  info("done%s: %g s simulated in %.3f s of stepping (RTF %.3g), %ld steps; end at (%.6g, %.6g, %.6g) m",
+       warning.empty() ? "" : " (with the warning above)", sim_s, wall_s, rtf, run->steps(), last[kXEnd], last[kYEnd],
+       last[kZEnd]);
+  return kExitOk;
+}
+
+}  // namespace cli
+}  // namespace riser_sim
