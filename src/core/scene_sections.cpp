@@ -318,8 +318,11 @@ void parseSolver(const Section& root, Scene& s) {
   requireNonNegative(solver.key("jacobian_interval"), s.solver.jacobian_interval);
   s.solver.jacobian = solver.choice("jacobian", defaults.jacobian);
   s.solver.rho_inf = solver.number("rho_inf", defaults.rho_inf);
-  // The integrator's name, the combination and the size limits: the core's one check.
-  if (const auto error = checkSolverSetup(s.solver, s.elements, s.options.axial_flexibility))
+  // The integrator's name, the combination and the size limits: the core's one check (the 3D core checks
+  // its combinations in spatial/run_builder.h's unsupported(), below).
+  const auto error = s.space == SpaceKind::kSpatial ? checkSolverValues(s.solver)
+                                                    : checkSolverSetup(s.solver, s.elements, s.options.axial_flexibility);
+  if (error)
     throw SceneError(error->key, error->message);
 }
 

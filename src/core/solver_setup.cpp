@@ -17,7 +17,7 @@ JacobianKind resolvedJacobian(const SolverSettings& s) {
   return s.formulation == FormulationKind::kAbsolute ? JacobianKind::kDense : JacobianKind::kStructured;
 }
 
-std::optional<SetupError> checkSolverSetup(const SolverSettings& s, int elements, bool axial_flexibility) {
+std::optional<SetupError> checkSolverValues(const SolverSettings& s) {
   if (!(s.dt > 0.0) || !std::isfinite(s.dt)) return SetupError{"solver.dt", "must be > 0"};
   // Enums set in code can still hold a value outside their table.
   if (!parseChoice<IntegratorKind>(name(s.integrator)))
@@ -26,13 +26,18 @@ std::optional<SetupError> checkSolverSetup(const SolverSettings& s, int elements
     return SetupError{"solver.formulation", "unknown formulation (accepted: " + choiceNames<FormulationKind>() + ")"};
   if (!parseChoice<JacobianKind>(name(s.jacobian)))
     return SetupError{"solver.jacobian", "unknown value (accepted: " + choiceNames<JacobianKind>() + ")"};
+  if (!(s.tolerance > 0.0)) return SetupError{"solver.tolerance", "must be > 0"};
+  if (!(s.jacobian_interval >= 0.0)) return SetupError{"solver.jacobian_interval", "must be >= 0"};
+  if (!(s.rho_inf >= 0.0 && s.rho_inf <= 1.0)) return SetupError{"solver.rho_inf", "must be in [0, 1]"};
+  return std::nullopt;
+}
+
+std::optional<SetupError> checkSolverSetup(const SolverSettings& s, int elements, bool axial_flexibility) {
+  if (const auto error = checkSolverValues(s)) return error;
   if (s.jacobian == JacobianKind::kStructured && s.formulation == FormulationKind::kAbsolute)
     return SetupError{"solver.jacobian",
                       "'structured' needs solver.formulation independent or recursive (absolute has none); use "
                       "'dense' or 'auto'"};
-  if (!(s.tolerance > 0.0)) return SetupError{"solver.tolerance", "must be > 0"};
-  if (!(s.jacobian_interval >= 0.0)) return SetupError{"solver.jacobian_interval", "must be >= 0"};
-  if (!(s.rho_inf >= 0.0 && s.rho_inf <= 1.0)) return SetupError{"solver.rho_inf", "must be in [0, 1]"};
   const int k = coordinatesPerRfe(s.formulation, axial_flexibility);
   if (isImplicitIntegrator(s.integrator) && resolvedJacobian(s) == JacobianKind::kDense &&
       k * (elements + 1) > kMaxDenseCoordinates) {

@@ -25,10 +25,10 @@ struct SceneIssue {
   std::string key, message;
 };
 // The first thing of a spatial scene the 3D core does not have yet (water, hydrodynamics, seabed,
-// internal flow, the chain formulations, structured Jacobians, dense Jacobians beyond kMaxDenseElements3).
+// internal flow, the chain formulations, dense Jacobians beyond kMaxDenseElements3).
 std::optional<SceneIssue> unsupported(const Scene& scene);
-// Implicit schemes run a dense p x p Jacobian in 3D, p = 7(n + 1): n <= 570 keeps p <= 4000, the
-// planar limit's memory (p = 4(n + 1), n <= 1000).
+// Implicit schemes with solver.jacobian dense run a p x p Jacobian in 3D, p = 7(n + 1): n <= 570 keeps
+// p <= 4000 (the structured solves, auto, have no such limit).
 constexpr int kMaxDenseElements3 = 570;
 
 // p(t) = position + amplitude ∘ cos(2π t / period + phase), per axis (phase per axis: a horizontal

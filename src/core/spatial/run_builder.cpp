@@ -46,17 +46,16 @@ std::optional<SceneIssue> unsupported(const Scene& s) {
   if (f.density > 0.0 && (f.velocity != 0.0 || f.acceleration != 0.0))
     return SceneIssue{"internal_fluid", "a flow (velocity or acceleration != 0) is " + yet +
                                             " (contents at rest are: their mass moves with the pipe)"};
-  if (s.solver.jacobian == JacobianKind::kStructured)
-    return SceneIssue{"solver.jacobian", "'structured' is " + yet + ": the 3D implicit schemes use the dense "
-                                                                    "Jacobian (set dense or auto)"};
   if (s.solver.formulation != FormulationKind::kAbsolute)
     return SceneIssue{"solver.formulation", "'" + std::string(name(s.solver.formulation)) +
                                                 "' is planar; space: spatial runs natural (director) coordinates, "
                                                 "the 3D counterpart of 'absolute' (remove the key or set absolute)"};
-  if (implicitScheme(s.solver.integrator) && s.elements > kMaxDenseElements3)
-    return SceneIssue{"line.elements", "must be <= " + std::to_string(kMaxDenseElements3) + " with " +
-                                           name(s.solver.integrator) + " and space: spatial, got " +
-                                           std::to_string(s.elements) + " (a dense Jacobian of 7(n + 1) coordinates)"};
+  if (implicitScheme(s.solver.integrator) && s.solver.jacobian == JacobianKind::kDense &&
+      s.elements > kMaxDenseElements3)
+    return SceneIssue{"line.elements", "must be <= " + std::to_string(kMaxDenseElements3) + " with a dense " +
+                                           name(s.solver.integrator) + " Jacobian and space: spatial, got " +
+                                           std::to_string(s.elements) +
+                                           " (7(n + 1) coordinates); use solver.jacobian auto (structured O(n) solves)"};
   return std::nullopt;
 }
 
@@ -242,13 +241,11 @@ SpatialRun::SpatialRun(const Scene& scene)
   IntegratorOptions io;
   io.tolerance = scene.solver.tolerance;
   io.jacobian_interval = scene.solver.jacobian_interval;
-  io.jacobian = JacobianKind::kDense;
+  // auto: the O(n) structured solves (spatial/shifted_solver.h); dense on request.
+  io.jacobian = scene.solver.jacobian == JacobianKind::kDense ? JacobianKind::kDense : JacobianKind::kStructured;
   io.rho_inf = scene.solver.rho_inf;
   sim_ = std::make_unique<SpatialSimulator>(model_, std::move(motion), scene.solver.integrator, io,
                                             scene.solver.stabilization);
-  // generalized_alpha restarts its history at a projection (first order then): project only when the
-  // drift exceeds 1e-4 (docs/spatial.md, "Stepping").
-  if (scene.solver.integrator == IntegratorKind::kGeneralizedAlpha) sim_->setProjectionTolerance(1e-4);
   sim_->reset(initial_.kin, 0.0);
   const int nb = model_->bodies();
   out_.points.resize(nb + 1);
