@@ -11,7 +11,8 @@
 // with the natural per-rfe mass M7_i and velocity terms h_i (the same parts: m_p, J_p, s0, κ), b_i the
 // velocity-product and top accelerations, Q_i the spatial terms' forces. M_θ is assembled in O(n²) from
 // suffix sums and solved by a dense LLT, O(n³) per evaluation: the cross-check, not the fast path.
-// Joints hold by construction. Pinned bottom: not supported (the constructor throws).
+// Joints hold by construction. A pinned bottom adds its 3 constraints E_n = p_b with a multiplier μ (the
+// anchor's force on the line; Schur complement of the dense KKT system) and Baumgarte stabilisation.
 #pragma once
 #include <Eigen/Cholesky>
 #include <memory>
@@ -37,7 +38,8 @@ class IndependentData3 {
   double t = 0.0;
   PointMotion3 top;
   Kinematics3 kin;
-  Reactions3 reactions;        // top only (λ_0); joint forces are not computed
+  Reactions3 reactions;        // top and bottom (pinned) only; joint forces are not computed
+  double constraint_error = 0.0;  // pinned end gap [m] (0 free)
   double term_power = 0.0;     // [W]
   VecX Q;                      // terms' forces, natural coordinates (7 per rfe)
   // Per rfe: G = ∂e/∂u (3x2), C = ∂E_i/∂θ_i (3 x k: [e, len G] or [len G]), e'' bias, natural
@@ -50,11 +52,13 @@ class IndependentData3 {
   MatX M;       // M_θ (full)
   VecX rhs, theta_dd;
   Eigen::LLT<MatX> llt;
+  MatX Phi, X;  // pinned: ∂E_n'/∂θ' (3 x p) and M_θ⁻¹ Φᵀ
 };
 
 class IndependentFormulation3 {
  public:
-  explicit IndependentFormulation3(const SpatialModel& model);
+  // stabilization: Baumgarte ω [rad/s] of the pinned end (as NaturalFormulation's, default 50).
+  explicit IndependentFormulation3(const SpatialModel& model, double stabilization = 50.0);
   const SpatialModel& model() const { return model_; }
   int coordinatesPerBody() const { return k_; }
   int positionSize() const { return k_ * model_.bodies(); }
@@ -72,9 +76,11 @@ class IndependentFormulation3 {
   // position and velocity). Returns how many charts moved.
   int recentre(VecX& y, SphereCharts& charts, double threshold) const;
   double kineticEnergy(const Kinematics3& kin) const;  // [J]
+  double constraintError(const Kinematics3& kin) const;  // pinned end gap [m] (0 free)
 
  private:
   const SpatialModel& model_;
+  const double omega_;
   const int k_;   // coordinates per rfe
   const int ku_;  // offset of u inside θ_i (1 with Δ, 0 without)
 };
@@ -85,7 +91,7 @@ class IndependentFormulation3 {
 class IndependentSimulator3 : private OdeSystem {
  public:
   IndependentSimulator3(std::shared_ptr<const SpatialModel> model, std::unique_ptr<TopMotion3> top, IntegratorKind kind,
-                        const IntegratorOptions& options = {});
+                        const IntegratorOptions& options = {}, double stabilization = 50.0);
   void reset(const Kinematics3& kin, double t0);  // W = 0; charts centred on kin's directors
   bool step(double h);                            // one step, then the chart switches
   void setChartThreshold(double u) { threshold_ = u; }  // |u| beyond which a chart moves (default 0.5)
@@ -105,7 +111,8 @@ class IndependentSimulator3 : private OdeSystem {
   double potentialEnergy() const;
   double energy() const { return kineticEnergy() + potentialEnergy(); }
   double work() const { return y_[y_.size() - 1]; }
-  const IndependentData3& evaluate();  // one evaluation at the current state (reactions.top)
+  double constraintError() const;  // pinned end gap [m]
+  const IndependentData3& evaluate();  // one evaluation at the current state (reactions.top, .bottom)
 
  private:
   void rhs(double t, const VecX& y, VecX& dy) override;

@@ -64,12 +64,16 @@ IndependentData3::IndependentData3(const SpatialModel& model, int k) : kin(model
   rhs.setZero(p);
   theta_dd.setZero(p);
   llt = Eigen::LLT<MatX>(p);
+  Phi.setZero(3, p);
+  X.setZero(p, 3);
 }
 
-IndependentFormulation3::IndependentFormulation3(const SpatialModel& model)
-    : model_(model), k_(model.options().axial_flexibility ? 3 : 2), ku_(model.options().axial_flexibility ? 1 : 0) {
-  if (model.bottom() == BottomBoundary::kPinned)
-    throw std::invalid_argument("IndependentFormulation3: a pinned bottom is not supported");
+IndependentFormulation3::IndependentFormulation3(const SpatialModel& model, double stabilization)
+    : model_(model), omega_(stabilization), k_(model.options().axial_flexibility ? 3 : 2),
+      ku_(model.options().axial_flexibility ? 1 : 0) {}
+
+double IndependentFormulation3::constraintError(const Kinematics3& kin) const {
+  return model_.bottom() == BottomBoundary::kPinned ? (kin.back().end() - model_.bottomPoint()).norm() : 0.0;
 }
 
 void IndependentFormulation3::packState(const Kinematics3& kin, SphereCharts& charts, VecX& y) const {
@@ -169,6 +173,7 @@ void IndependentFormulation3::derivative(double t, const VecX& y, const SphereCh
     h.segment<3>(kE) = w2 * Sk * b.e_dot;
     d.f[i] = d.Q.segment<7>(kDofPerBody3 * i) - h - M7 * bias;
   }
+  d.A_bias[nb] = Ab;  // E_n'' at θ'' = 0
 
   // M_θ: (j, k) blocks C_jᵀ D_k for j < k, D_k = m_{>k} C_k + M7_k(A, Δe) L_k; diagonal
   // m_{>k} C_kᵀ C_k + L_kᵀ M7_k(Δe, Δe) L_k. Right side C_jᵀ Σ_{i>j} f_i(A) + L_jᵀ f_j(Δe).
@@ -189,6 +194,7 @@ void IndependentFormulation3::derivative(double t, const VecX& y, const SphereCh
     }
     m_after += model_.rfe(kb).mass;
     fA_after += d.f[kb].segment<3>(kA);
+    for (int a = 0; a < k_; ++a) d.Phi.col(k_ * kb + a) = C.col(c0 + a);  // E_n' = top' + Σ C_j θ'_j
   }
   for (int kb = 1; kb < nb; ++kb)
     for (int j = 0; j < kb; ++j) {
@@ -198,6 +204,18 @@ void IndependentFormulation3::derivative(double t, const VecX& y, const SphereCh
     }
   d.llt.compute(d.M);
   d.theta_dd = d.llt.solve(d.rhs);
+  // Pinned: M θ'' = r + Φᵀ μ, Φ θ'' = γ (Baumgarte on c = E_n - p_b) -> (Φ M⁻¹ Φᵀ) μ = γ - Φ M⁻¹ r.
+  Vec3 mu = Vec3::Zero();
+  d.constraint_error = 0.0;
+  if (model_.bottom() == BottomBoundary::kPinned) {
+    const Vec3 c = d.kin[nb - 1].end() - model_.bottomPoint(), cd = d.kin[nb - 1].endVelocity();
+    const Vec3 gamma = -d.A_bias[nb] - 2.0 * omega_ * cd - omega_ * omega_ * c;
+    d.X = d.llt.solve(d.Phi.transpose());
+    const Mat3 S = d.Phi * d.X;
+    mu = S.llt().solve(gamma - d.Phi * d.theta_dd);
+    d.theta_dd += d.X * mu;
+    d.constraint_error = c.norm();
+  }
 
   dy.head(p) = y.segment(p, p);
   dy.segment(p, p) = d.theta_dd;
@@ -214,8 +232,11 @@ void IndependentFormulation3::derivative(double t, const VecX& y, const SphereCh
     lambda0 += (d.f[i] - d.M7[i] * qdd).segment<3>(kA);
     Add += d.C[i] * loc;
   }
-  d.reactions.top = lambda0;
-  d.reactions.joint[0] = lambda0;
+  // The anchor's force μ on the line at E_n enters the sum of the A rows too.
+  d.reactions.top = lambda0 + mu;
+  d.reactions.joint[0] = d.reactions.top;
+  d.reactions.bottom = -mu;
+  d.reactions.joint[nb] = mu;
 }
 
 int IndependentFormulation3::recentre(VecX& y, SphereCharts& charts, double threshold) const {
@@ -243,8 +264,9 @@ int IndependentFormulation3::recentre(VecX& y, SphereCharts& charts, double thre
 // ---------------------------------------------------------------------------------------------
 
 IndependentSimulator3::IndependentSimulator3(std::shared_ptr<const SpatialModel> model, std::unique_ptr<TopMotion3> top,
-                                             IntegratorKind kind, const IntegratorOptions& options)
-    : model_(std::move(model)), top_(std::move(top)), formulation_(*model_), data_(formulation_.makeData()),
+                                             IntegratorKind kind, const IntegratorOptions& options,
+                                             double stabilization)
+    : model_(std::move(model)), top_(std::move(top)), formulation_(*model_, stabilization), data_(formulation_.makeData()),
       kin_(model_->bodies()) {
   IntegratorOptions o = options;
   o.jacobian = JacobianKind::kDense;  // no structured solves here
@@ -283,6 +305,11 @@ void IndependentSimulator3::positions(AlignedVector<Vec3>& p) const {
   const int nb = model_->bodies();
   for (int i = 0; i < nb; ++i) p[i] = kin_[i].A;
   p[nb] = kin_[nb - 1].end();
+}
+
+double IndependentSimulator3::constraintError() const {
+  kinematics(kin_);
+  return formulation_.constraintError(kin_);
 }
 
 double IndependentSimulator3::kineticEnergy() const {

@@ -82,6 +82,7 @@ class RestLine {
 
 Kinematics3 spatialEquilibrium(const SpatialModel& model, const Kinematics3& guess, int iterations,
                                const SpatialModalOptions& options) {
+  if (model.bottom() == BottomBoundary::kPinned) throw std::invalid_argument("spatialEquilibrium: free bottom only");
   RestLine line(model, guess, options.fd_step);
   VecX theta = line.theta();
   for (int it = 0; it < iterations; ++it) {
@@ -96,6 +97,7 @@ Kinematics3 spatialEquilibrium(const SpatialModel& model, const Kinematics3& gue
 SpatialModalResult computeSpatialModes(const SpatialModel& model, const Kinematics3& equilibrium,
                                        const SpatialModalOptions& options) {
   if (!(options.fd_step > 0.0)) throw std::invalid_argument("spatial modal fd_step: must be > 0");
+  if (model.bottom() == BottomBoundary::kPinned) throw std::invalid_argument("spatial modal: free bottom only");
   RestLine line(model, equilibrium, options.fd_step);
   const VecX theta0 = line.theta();
   SpatialModalResult res;
