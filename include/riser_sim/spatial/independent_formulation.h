@@ -42,10 +42,11 @@ class IndependentData3 {
   double constraint_error = 0.0;  // pinned end gap [m] (0 free)
   double term_power = 0.0;     // [W]
   VecX Q;                      // terms' forces, natural coordinates (7 per rfe)
-  // Per rfe: G = ∂e/∂u (3x2), C = ∂E_i/∂θ_i (3 x k: [e, len G] or [len G]), e'' bias, natural
-  // acceleration bias b (A: 3, e: 3), natural mass block, f = Q - h - M7 b.
+  // Per rfe: G = ∂e'/∂u' (3x2); C = ∂E_i'/∂(Δ', u') = [e, len G] (the Δ column unused when
+  // inextensible); D = m_{>i} C + M7(A, Δe) L (the off-diagonal blocks of M_θ are C_jᵀ D_i); the e'' bias;
+  // A_bias: A_i'' at θ'' = 0 (i = 0..n+1); the natural mass block M7 and f = Q - h - M7 b.
   AlignedVector<Eigen::Matrix<double, 3, 2>> G;
-  AlignedVector<Eigen::Matrix<double, 3, 3>> C, D;
+  AlignedVector<Mat3> C, D;
   AlignedVector<Vec3> e_bias, A_bias;
   AlignedVector<Mat7> M7;
   AlignedVector<Vec7> f;
