@@ -49,7 +49,8 @@ Mat7 massBlock(const Rfe& r, double delta, const Vec3& e) {
 
 }  // namespace
 
-IndependentData3::IndependentData3(const SpatialModel& model, int k) : kin(model.bodies()) {
+// llt sized in place: Eigen's LLT(Index) leaves its info unset, so it must not be copied from.
+IndependentData3::IndependentData3(const SpatialModel& model, int k) : kin(model.bodies()), llt(k * model.bodies()) {
   const int nb = model.bodies(), p = k * nb;
   reactions.joint.assign(nb + 1, Vec3::Zero());
   Q.setZero(model.dofs());
@@ -63,7 +64,6 @@ IndependentData3::IndependentData3(const SpatialModel& model, int k) : kin(model
   M.setZero(p, p);
   rhs.setZero(p);
   theta_dd.setZero(p);
-  llt = Eigen::LLT<MatX>(p);
   Phi.setZero(3, p);
   X.setZero(p, 3);
 }
