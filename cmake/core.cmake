@@ -45,6 +45,8 @@ add_library(riser_sim_core
   src/core/spatial/natural_formulation.cpp
   src/core/spatial/shifted_solver.cpp
   src/core/spatial/simulator.cpp
+  src/core/spatial/independent_formulation.cpp
+  src/core/spatial/modal.cpp
   src/core/spatial/forces/gravity.cpp
   src/core/spatial/forces/axial_spring.cpp
   src/core/spatial/forces/bending_spring.cpp

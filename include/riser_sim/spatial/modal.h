@@ -1,0 +1,48 @@
+// Small oscillations of the spatial line about a static equilibrium, in the independent coordinates of
+// IndependentFormulation3 (charts centred on the equilibrium directors, so θ* = [Δ*, 0, 0, ...]) with A_0
+// held at its static position:
+//   M_θ(θ*) θ'' + K θ = 0,   K = -∂Q_θ/∂θ (central differences of the terms' generalised forces at rest,
+//   symmetrised; the dropped antisymmetric part is reported),
+// solved by Eigen's dense GeneralizedSelfAdjointEigenSolver, O(n³). Velocity-proportional forces
+// (damping) are left out: the modes are undamped. Free bottom only (as IndependentFormulation3).
+// A line hanging straight down has its transverse modes in degenerate pairs (the two planes across the
+// vertical) at the planar frequencies, and its axial modes once each.
+#pragma once
+#include <vector>
+
+#include "riser_sim/spatial/model.h"
+
+namespace riser_sim {
+namespace spatial {
+
+struct SpatialModalOptions {
+  double fd_step = 1e-6;  // central-difference step: chart units (~rad) for u, x segment length for Δ
+};
+
+struct SpatialMode {
+  double omega2 = 0.0;  // ω² [1/s²]; < 0: unstable in this direction
+  double omega = 0.0;   // [rad/s], 0 when ω² <= 0
+  double axial_fraction = 0.0;  // share of θᵀ M θ in the Δ coordinates, 0..1
+  bool axial = false;           // axial_fraction > 0.5
+  VecX theta;                   // mass-normalised: θᵀ M_θ θ = 1
+};
+
+struct SpatialModalResult {
+  Kinematics3 equilibrium;         // the state the modes are about
+  std::vector<SpatialMode> modes;  // every mode, lowest first
+  double equilibrium_residual = 0.0;  // max |Q_θ| / (total weight x length): ~0 at equilibrium
+  double asymmetry = 0.0;             // ||K - Kᵀ||_F / ||K||_F before symmetrisation
+  MatX stiffness, mass;
+};
+
+// Static equilibrium of the line at rest hanging from A_0 = guess[0].A: Newton on Q_θ = 0 with the
+// finite-difference K, from the guess's directions and Δ (its joints are closed from A_0). Throws
+// std::runtime_error when it does not reach a residual of 1e-12 of the weight in `iterations`.
+Kinematics3 spatialEquilibrium(const SpatialModel& model, const Kinematics3& guess, int iterations = 20,
+                               const SpatialModalOptions& options = SpatialModalOptions());
+// Modes about `equilibrium` (zero velocities). Throws std::runtime_error when the eigen-solve fails.
+SpatialModalResult computeSpatialModes(const SpatialModel& model, const Kinematics3& equilibrium,
+                                       const SpatialModalOptions& options = SpatialModalOptions());
+
+}  // namespace spatial
+}  // namespace riser_sim
