@@ -16,6 +16,7 @@
 #include "riser_sim/scene.h"
 #include "riser_sim/scene_yaml.h"
 #include "run_output.h"
+#include "step_loop.h"
 #include "spatial_run.h"
 
 namespace {
@@ -104,38 +105,16 @@ int main(int argc, char** argv) {
   const long total_steps = std::max(1L, static_cast<long>(std::ceil(scene.duration / dt - 1e-9)));
   const long every = outputStride(opt.output_dt, dt, total_steps);
 
-  std::string diverged;
-  Sample last = takeSample(*sim, opt.probe_rfes);
-  if (!allFinite(last)) diverged = "initial state has non-finite outputs";
-  if (csv.isOpen() && diverged.empty()) writeCsvRow(csv.get(), last);
-
-  // Only the stepping is timed: sampling and writing are excluded from wall_s.
-  std::chrono::steady_clock::duration wall{0};
-  double cpu_s = 0.0;
-  while (diverged.empty() && csv.ok() && sim->steps() < total_steps) {
-    const long chunk = std::min(every, total_steps - sim->steps());
-    const auto start = std::chrono::steady_clock::now();
-    const double cpu_start = threadCpuSeconds();
-    bool ok = true;
-    for (long k = 0; k < chunk && ok; ++k) ok = sim->step();
-    wall += std::chrono::steady_clock::now() - start;
-    cpu_s += threadCpuSeconds() - cpu_start;
-    if (!ok) {
-      diverged = sim->divergenceReason();
-      break;
-    }
-    const Sample s = takeSample(*sim, opt.probe_rfes);
-    if (!allFinite(s)) {
-      diverged = "outputs are not finite";
-      break;
-    }
-    last = s;
-    if (csv.isOpen()) writeCsvRow(csv.get(), last);
-  }
+  Sample last;
+  SteppingTime time;
+  const std::string diverged = stepRun(
+      *sim, total_steps, every, csv, [&] { return takeSample(*sim, opt.probe_rfes); },
+      [](const Sample& s) { return allFinite(s); }, [](std::FILE* f, const Sample& s) { writeCsvRow(f, s); }, last,
+      time);
   const bool written = csv.close();  // flush and close before reporting
   const std::string write_error = csv.error();
 
-  const double wall_s = std::chrono::duration<double>(wall).count();
+  const double wall_s = time.wall_s, cpu_s = time.cpu_s;
   const double sim_s = sim->time();
   const double rtf = wall_s > 0.0 ? sim_s / wall_s : NAN;
   // The energy balance E - E0 - W closes to round-off on a resolved run (1e-7 on the J-lay at midpoint
@@ -143,15 +122,7 @@ int main(int argc, char** argv) {
   // energy that the line never had, and its forces with it. Never "ok": status "warning" with the reason
   // in the summary and on stderr, exit 0 (the user chose the step; the run finished).
   // Forces with step-to-step noise above kForceNoiseWarning (force_noise.h) are not resolved either.
-  std::string warning;
-  if (diverged.empty() && std::abs(last.energy_drift) > kEnergyDriftWarning) {
-    char buf[320];
-    std::snprintf(buf, sizeof(buf),
-                  "energy balance off by %.3g of m g L (bound %g): the step does not resolve the motion, so "
-                  "positions and forces may be wrong; use a smaller solver.dt or solver.integrator midpoint",
-                  last.energy_drift, kEnergyDriftWarning);
-    warning = buf;
-  }
+  std::string warning = diverged.empty() ? energyWarning(last.energy_drift) : "";
   if (diverged.empty()) {
     const std::string forces = sim->forceWarning(sim->forceNoise().total());
     if (!forces.empty()) warning += (warning.empty() ? "" : "; ") + forces;

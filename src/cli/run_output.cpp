@@ -3,6 +3,7 @@
 #include <time.h>
 
 #include <cmath>
+#include <cstdio>
 
 namespace riser_sim {
 namespace cli {
@@ -64,6 +65,16 @@ void writeCsvRow(std::FILE* f, const Sample& s) {
                s.y_end, s.tension_top, s.tension_max, s.energy, s.work, s.energy_drift, s.constraint_error);
   for (double v : s.probes) std::fprintf(f, ",%.9g", v);
   std::fputc('\n', f);
+}
+
+std::string energyWarning(double drift) {
+  if (!(std::abs(drift) > kEnergyDriftWarning)) return "";
+  char buf[320];
+  std::snprintf(buf, sizeof(buf),
+                "energy balance off by %.3g of m g L (bound %g): the step does not resolve the motion, so "
+                "positions and forces may be wrong; use a smaller solver.dt or solver.integrator midpoint",
+                drift, kEnergyDriftWarning);
+  return buf;
 }
 
 long outputStride(double output_dt, double dt, long total_steps) {

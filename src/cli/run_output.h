@@ -43,6 +43,10 @@ void writeCsvRow(std::FILE* f, const Sample& s);
 // the run gives its first and last rows only; the ratio can exceed a long).
 long outputStride(double output_dt, double dt, long total_steps);
 
+// The warning of a finished run whose energy balance is off by more than kEnergyDriftWarning (what it
+// means and what to do), "" when it is within it.
+std::string energyWarning(double drift);
+
 // Builds one line of JSON; non-finite numbers are written as null.
 class JsonLine {
  public:

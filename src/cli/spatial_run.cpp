@@ -6,6 +6,7 @@
 
 #include "output_file.h"
 #include "run_output.h"
+#include "step_loop.h"
 
 namespace riser_sim {
 namespace cli {
@@ -87,48 +88,19 @@ int runSpatial(const Scene& scene, const CliOptions& opt) {
   const long total_steps = std::max(1L, static_cast<long>(std::ceil(scene.duration / dt - 1e-9)));
   const long every = outputStride(opt.output_dt, dt, total_steps);
 
-  std::string diverged;
-  std::vector<double> last = spatialSample(*run, opt.probe_rfes);
-  if (!finite(last)) diverged = "initial state has non-finite outputs";
-  if (csv.isOpen() && diverged.empty()) writeRow(csv.get(), last);
-
-  std::chrono::steady_clock::duration wall{0};
-  double cpu_s = 0.0;
-  while (diverged.empty() && csv.ok() && run->steps() < total_steps) {
-    const long chunk = std::min(every, total_steps - run->steps());
-    const auto start = std::chrono::steady_clock::now();
-    const double cpu_start = threadCpuSeconds();
-    bool ok = true;
-    for (long k = 0; k < chunk && ok; ++k) ok = run->step();
-    wall += std::chrono::steady_clock::now() - start;
-    cpu_s += threadCpuSeconds() - cpu_start;
-    if (!ok) {
-      diverged = run->divergenceReason();
-      break;
-    }
-    std::vector<double> s = spatialSample(*run, opt.probe_rfes);
-    if (!finite(s)) {
-      diverged = "outputs are not finite";
-      break;
-    }
-    last = std::move(s);
-    if (csv.isOpen()) writeRow(csv.get(), last);
-  }
+  std::vector<double> last;
+  SteppingTime time;
+  const std::string diverged = stepRun(
+      *run, total_steps, every, csv, [&] { return spatialSample(*run, opt.probe_rfes); },
+      [](const std::vector<double>& s) { return finite(s); },
+      [](std::FILE* f, const std::vector<double>& s) { writeRow(f, s); }, last, time);
   const bool written = csv.close();
   const std::string write_error = csv.error();
 
-  const double wall_s = std::chrono::duration<double>(wall).count();
+  const double wall_s = time.wall_s, cpu_s = time.cpu_s;
   const double sim_s = run->time();
   const double rtf = wall_s > 0.0 ? sim_s / wall_s : NAN;
-  std::string warning;  // as the planar run: an energy balance off by more than kEnergyDriftWarning
-  if (diverged.empty() && std::abs(last[kDrift]) > kEnergyDriftWarning) {
-    char buf[320];
-    std::snprintf(buf, sizeof(buf),
-                  "energy balance off by %.3g of m g L (bound %g): the step does not resolve the motion, so "
-                  "positions and forces may be wrong; use a smaller solver.dt or solver.integrator midpoint",
-                  last[kDrift], kEnergyDriftWarning);
-    warning = buf;
-  }
+  const std::string warning = diverged.empty() ? energyWarning(last[kDrift]) : "";  // as the planar run
   bool summary_written = true;
   const Integrator::Stats stats = run->simulator().integrator().stats();
   if (opt.summary) {

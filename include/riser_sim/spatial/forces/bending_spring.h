@@ -21,6 +21,10 @@ class BendingSpring : public SpatialForceTerm {
   void addStiffness(const SpatialModel& model, const Kinematics3& kin, double t, SpatialStiffness& S) const override;
   // Angle between two directions [rad] in [0, π] (any lengths).
   static double angle(const Vec3& a, const Vec3& b) { return std::atan2(a.cross(b).norm(), a.dot(b)); }
+  // θ / sin θ without cancellation near 0 (the spring force's factor).
+  static double thetaOverSin(double theta);
+  // [rad] from π: the bending direction is undefined there, no spring force (flex joints likewise).
+  static constexpr double kFoldedTol = 1e-12;
 };
 
 }  // namespace spatial

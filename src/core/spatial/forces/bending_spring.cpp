@@ -5,17 +5,14 @@
 namespace riser_sim {
 namespace spatial {
 
-namespace {
-// θ / sin θ, exact to round-off for small θ (series 1 + θ²/6 + 7θ⁴/360).
-double thetaOverSin(double theta) {
+// Series 1 + θ²/6 + 7θ⁴/360 below 1e-4 rad: exact to round-off there.
+double BendingSpring::thetaOverSin(double theta) {
   if (theta < 1e-4) {
     const double t2 = theta * theta;
     return 1.0 + t2 / 6.0 + 7.0 * t2 * t2 / 360.0;
   }
   return theta / std::sin(theta);
 }
-constexpr double kFoldedTol = 1e-12;  // [rad] from π: bending direction undefined, no spring force
-}  // namespace
 
 // V = ½ k θ²: Q_b = -k θ ∂θ/∂b = k (θ/sinθ) / (|a||b|) (a - (a·b) b/|b|²), Q_a likewise with a, b swapped.
 void BendingSpring::addForces(const SpatialModel& model, const Kinematics3& kin, double, VecX& Q) const {

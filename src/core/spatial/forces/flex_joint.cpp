@@ -8,18 +8,6 @@
 namespace riser_sim {
 namespace spatial {
 
-namespace {
-// θ / sin θ, exact to round-off for small θ (series 1 + θ²/6 + 7θ⁴/360).
-double thetaOverSin(double theta) {
-  if (theta < 1e-4) {
-    const double t2 = theta * theta;
-    return 1.0 + t2 / 6.0 + 7.0 * t2 * t2 / 360.0;
-  }
-  return theta / std::sin(theta);
-}
-constexpr double kFoldedTol = 1e-12;  // [rad] from π: the bending direction is undefined, no spring torque
-}  // namespace
-
 FlexJoint::FlexJoint(End end, const Vec3& direction, double stiffness, double damping)
     : end_(end), d_(direction.normalized()), k_(stiffness), c_(damping) {
   if (!(direction.norm() > 0.0) || !direction.allFinite())
@@ -47,7 +35,8 @@ Vec3 FlexJoint::torque(const SpatialModel& model, const Kinematics3& kin) const 
   const Vec3 u = away(model, kin);
   const double theta = BendingSpring::angle(d_, u);
   Vec3 tau = -c_ * b.omega();
-  if (theta < M_PI - kFoldedTol) tau += k_ * thetaOverSin(theta) / u.norm() * u.cross(d_);
+  if (theta < M_PI - BendingSpring::kFoldedTol)
+    tau += k_ * BendingSpring::thetaOverSin(theta) / u.norm() * u.cross(d_);
   return tau;
 }
 
