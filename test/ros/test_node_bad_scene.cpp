@@ -40,6 +40,8 @@ TEST(NodeBadScene, SceneErrorsNameTheKey) {
   expectFatal("bad_key", "~scene/line/lenght: unknown key (did you mean 'length'?)");
   expectFatal("bad_dt", "~scene/solver/dt");
   expectFatal("bad_type", "~scene/line/mass_per_length: expected a number");
+  // The node is planar: a 3D scene is refused naming the key, never run in the x-z plane.
+  expectFatal("spatial_scene", "space: 'spatial' is not available in the node yet");
 }
 
 TEST(NodeBadScene, MissingSceneIsFatal) { expectFatal("no_scene_here", "~scene: missing"); }
