@@ -34,6 +34,10 @@ long+=":Energy.ConservativeRunKeepsEnergy:HydroDynamics.AddedMassAndBuoyancyScal
 # 10x): NoAlloc, PinnedImplicit.AtRestStaysAtRest and the short tests run every combination once.
 long+=":Extremes.Table:Extremes.OneHourAbsoluteConstraintBounded:PinnedImplicit.MovingTopAgreesWithReference"
 long+=":ImplicitTerms.SecondOrderWithEveryTerm:GeneralizedAlpha.JlayTensionAtLargeStep"
+# The 3D runs of thousands of small steps (under ASan 22-148 s each): the spatial no-allocation, force,
+# solve and short agreement tests run the same per-step code.
+long+=":SpatialIndependent.*:SpatialIndependentCharts.WhirlThroughVerticalKeepsEnergyBalance"
+long+=":SpatialPendulum.*:SpatialShifted.StructuredSchemesAreSecondOrder:SpatialFlexJoint.*"
 export GTEST_FILTER=${RISER_SIM_SANITIZE_FILTER:--$long}
 export ASAN_OPTIONS="detect_leaks=1:halt_on_error=1:strict_string_checks=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
