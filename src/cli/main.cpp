@@ -127,11 +127,20 @@ int main(int argc, char** argv) {
     const std::string forces = sim->forceWarning(sim->forceNoise().total());
     if (!forces.empty()) warning += (warning.empty() ? "" : "; ") + forces;
   }
-  bool summary_written = true;
+  RunEnd end;
+  end.diverged = diverged;
+  end.write_error = write_error;
+  end.warning = warning;
+  end.written = written;
+  end.csv = !opt.csv.empty();
+  end.sim_s = sim_s;
+  end.steps = sim->steps();
+  end.total_steps = total_steps;
+  int rc = kExitOk;
   const Integrator::Stats stats = sim->integrator().stats();  // what the steps cost
   if (opt.summary) {
     JsonLine j;
-    j.add("status", !diverged.empty() ? "diverged" : !written ? "write_failed" : warning.empty() ? "ok" : "warning")
+    j.add("status", runStatus(end))
         .add("wall_s", wall_s)
         .add("cpu_s", cpu_s)
         .add("sim_s", sim_s)
@@ -159,30 +168,11 @@ int main(int argc, char** argv) {
         .add("statics_residual", statics.residual)
         .add("end_force_x", statics.end_force.x())
         .add("end_force_y", statics.end_force.y());
-    if (!diverged.empty()) j.add("diverged_at", sim_s).add("reason", diverged);
-    if (!written) j.add("write_error", write_error);
-    if (!warning.empty()) j.add("warning", warning);
-    OutputFile out;
-    out.useStdout();
-    std::printf("%s\n", j.str().c_str());
-    summary_written = out.close();
-    if (!summary_written) fail(kExitWriteFailed, "--summary: " + out.error());
+    rc = finishRun(end, &j);
+  } else {
+    rc = finishRun(end, nullptr);
   }
-  int rc = summary_written ? kExitOk : kExitWriteFailed;
-  if (!diverged.empty()) {
-    char when[64];
-    std::snprintf(when, sizeof(when), "diverged at t = %.9g s (step %ld): ", sim_s, sim->steps());
-    rc = fail(kExitDiverged, when + diverged + (opt.csv.empty() ? "" : "; the CSV stops at the last finite row"));
-  }
-  if (!written) {  // a lost output wins over a divergence: nothing written can be trusted
-    char when[96];
-    std::snprintf(when, sizeof(when), "; the file is incomplete%s (t = %.9g s reached)",
-                  diverged.empty() && sim->steps() < total_steps ? " and the run was stopped" : "", sim_s);
-    rc = fail(kExitWriteFailed, write_error + when);
-  }
-  if (!summary_written) rc = kExitWriteFailed;
   if (rc != kExitOk) return rc;
-  if (!warning.empty()) std::fprintf(stderr, "riser_sim_cli: warning: %s\n", warning.c_str());  // even with --quiet
   info("done%s: %g s simulated in %.3f s of stepping (RTF %.3g), %ld steps; end at (%.6g, %.6g) m", warning.empty() ? "" : " (with the warning above)",
        sim_s, wall_s, rtf, sim->steps(), last.x_end, last.y_end);
   return kExitOk;

@@ -5,6 +5,9 @@
 #include <cmath>
 #include <cstdio>
 
+#include "cli_options.h"
+#include "output_file.h"
+
 namespace riser_sim {
 namespace cli {
 
@@ -75,6 +78,40 @@ std::string energyWarning(double drift) {
                 "positions and forces may be wrong; use a smaller solver.dt or solver.integrator midpoint",
                 drift, kEnergyDriftWarning);
   return buf;
+}
+
+const char* runStatus(const RunEnd& e) {
+  return !e.diverged.empty() ? "diverged" : !e.written ? "write_failed" : e.warning.empty() ? "ok" : "warning";
+}
+
+int finishRun(const RunEnd& e, JsonLine* summary) {
+  bool summary_written = true;
+  if (summary) {
+    if (!e.diverged.empty()) summary->add("diverged_at", e.sim_s).add("reason", e.diverged);
+    if (!e.written) summary->add("write_error", e.write_error);
+    if (!e.warning.empty()) summary->add("warning", e.warning);
+    OutputFile out;
+    out.useStdout();
+    std::printf("%s\n", summary->str().c_str());
+    summary_written = out.close();
+    if (!summary_written) fail(kExitWriteFailed, "--summary: " + out.error());
+  }
+  int rc = summary_written ? kExitOk : kExitWriteFailed;
+  if (!e.diverged.empty()) {
+    char when[64];
+    std::snprintf(when, sizeof(when), "diverged at t = %.9g s (step %ld): ", e.sim_s, e.steps);
+    rc = fail(kExitDiverged, when + e.diverged + (e.csv ? "; the CSV stops at the last finite row" : ""));
+  }
+  if (!e.written) {  // a lost output wins over a divergence: nothing written can be trusted
+    char when[96];
+    std::snprintf(when, sizeof(when), "; the file is incomplete%s (t = %.9g s reached)",
+                  e.diverged.empty() && e.steps < e.total_steps ? " and the run was stopped" : "", e.sim_s);
+    rc = fail(kExitWriteFailed, e.write_error + when);
+  }
+  if (!summary_written) rc = kExitWriteFailed;
+  if (rc == kExitOk && !e.warning.empty())
+    std::fprintf(stderr, "riser_sim_cli: warning: %s\n", e.warning.c_str());  // even with --quiet
+  return rc;
 }
 
 long outputStride(double output_dt, double dt, long total_steps) {

@@ -47,6 +47,22 @@ long outputStride(double output_dt, double dt, long total_steps);
 // means and what to do), "" when it is within it.
 std::string energyWarning(double drift);
 
+class JsonLine;
+
+// How a CLI run (planar or spatial) ended, for its summary status, its exit code and its messages.
+struct RunEnd {
+  std::string diverged, write_error, warning;  // "" when none
+  bool written = true;                         // the CSV (if any) was written completely
+  bool csv = false;                            // a CSV was asked for
+  double sim_s = 0.0;
+  long steps = 0, total_steps = 0;
+};
+// "diverged", "write_failed", "warning" or "ok".
+const char* runStatus(const RunEnd& e);
+// Prints the summary j (when given) with the end's keys, the failure or warning messages, and returns the
+// exit code; kExitOk: the caller prints its "done" line.
+int finishRun(const RunEnd& e, JsonLine* summary);
+
 // Builds one line of JSON; non-finite numbers are written as null.
 class JsonLine {
  public:

@@ -101,11 +101,20 @@ int runSpatial(const Scene& scene, const CliOptions& opt) {
   const double sim_s = run->time();
   const double rtf = wall_s > 0.0 ? sim_s / wall_s : NAN;
   const std::string warning = diverged.empty() ? energyWarning(last[kDrift]) : "";  // as the planar run
-  bool summary_written = true;
+  RunEnd end;
+  end.diverged = diverged;
+  end.write_error = write_error;
+  end.warning = warning;
+  end.written = written;
+  end.csv = !opt.csv.empty();
+  end.sim_s = sim_s;
+  end.steps = run->steps();
+  end.total_steps = total_steps;
+  int rc = kExitOk;
   const Integrator::Stats stats = run->simulator().integrator().stats();
   if (opt.summary) {
     JsonLine j;
-    j.add("status", !diverged.empty() ? "diverged" : !written ? "write_failed" : warning.empty() ? "ok" : "warning")
+    j.add("status", runStatus(end))
         .add("wall_s", wall_s)
         .add("cpu_s", cpu_s)
         .add("sim_s", sim_s)
@@ -146,30 +155,11 @@ int runSpatial(const Scene& scene, const CliOptions& opt) {
         .add("end_force_z", init.end_force.z())
         .add("initial_acceleration", init.max_acceleration)
         .add("initial_acceleration_bound", init.acceleration_bound);
-    if (!diverged.empty()) j.add("diverged_at", sim_s).add("reason", diverged);
-    if (!written) j.add("write_error", write_error);
-    if (!warning.empty()) j.add("warning", warning);
-    OutputFile out;
-    out.useStdout();
-    std::printf("%s\n", j.str().c_str());
-    summary_written = out.close();
-    if (!summary_written) fail(kExitWriteFailed, "--summary: " + out.error());
+    rc = finishRun(end, &j);
+  } else {
+    rc = finishRun(end, nullptr);
   }
-  int rc = summary_written ? kExitOk : kExitWriteFailed;
-  if (!diverged.empty()) {
-    char when[64];
-    std::snprintf(when, sizeof(when), "diverged at t = %.9g s (step %ld): ", sim_s, run->steps());
-    rc = fail(kExitDiverged, when + diverged + (opt.csv.empty() ? "" : "; the CSV stops at the last finite row"));
-  }
-  if (!written) {
-    char when[96];
-    std::snprintf(when, sizeof(when), "; the file is incomplete%s (t = %.9g s reached)",
-                  diverged.empty() && run->steps() < total_steps ? " and the run was stopped" : "", sim_s);
-    rc = fail(kExitWriteFailed, write_error + when);
-  }
-  if (!summary_written) rc = kExitWriteFailed;
   if (rc != kExitOk) return rc;
-  if (!warning.empty()) std::fprintf(stderr, "riser_sim_cli: warning: %s\n", warning.c_str());
   info("done%s: %g s simulated in %.3f s of stepping (RTF %.3g), %ld steps; end at (%.6g, %.6g, %.6g) m",
        warning.empty() ? "" : " (with the warning above)", sim_s, wall_s, rtf, run->steps(), last[kXEnd], last[kYEnd],
        last[kZEnd]);
