@@ -10,7 +10,7 @@ deps:
 	@scripts/install_deps.sh
 
 build: deps
-	@scripts/build.sh -j2
+	@scripts/build.sh -j2 all riser_sim_benches
 
 # The edit-test loop: build the core + CLI without catkin and run their gtests (~2 min cold, seconds after).
 # CHECK_ARGS go to ctest, e.g. make check CHECK_ARGS='-R statics'.

@@ -60,17 +60,30 @@ set(RISER_SIM_OPT $<$<NOT:$<CONFIG:Sanitize>>:-O3>)
 target_compile_options(riser_sim_core PRIVATE ${RISER_SIM_OPT})
 
 if(CATKIN_ENABLE_TESTING)
+  # One precompiled header (Eigen, gtest, std) for every core gtest: ~2.5 s less CPU per test file.
+  file(WRITE ${CMAKE_CURRENT_BINARY_DIR}/riser_sim_test_pch.cpp "")
+  add_library(riser_sim_test_pch OBJECT ${CMAKE_CURRENT_BINARY_DIR}/riser_sim_test_pch.cpp)
+  target_link_libraries(riser_sim_test_pch PRIVATE riser_sim_core gtest_main)
+  target_compile_definitions(riser_sim_test_pch PRIVATE RISER_SIM_SOURCE_DIR="${CMAKE_CURRENT_SOURCE_DIR}")
+  target_precompile_headers(riser_sim_test_pch PRIVATE <Eigen/Dense> <gtest/gtest.h> <algorithm> <cmath>
+    <cstdio> <functional> <map> <memory> <random> <sstream> <string> <vector>)
   file(GLOB RISER_SIM_CORE_TESTS ${CMAKE_CURRENT_SOURCE_DIR}/test/core/test_*.cpp)
   foreach(test_src ${RISER_SIM_CORE_TESTS})
     get_filename_component(test_name ${test_src} NAME_WE)
+    # RISER_SIM_TESTS (a list of test names) builds only those: the sanitizer build (scripts/test_sanitize.sh).
+    # RISER_SIM_SKIP_TESTS leaves those out (make test: the ones it runs under the sanitizers instead).
+    if((RISER_SIM_TESTS AND NOT test_name IN_LIST RISER_SIM_TESTS) OR test_name IN_LIST RISER_SIM_SKIP_TESTS)
+      continue()
+    endif()
     catkin_add_gtest(${test_name} ${test_src} WORKING_DIRECTORY ${CMAKE_CURRENT_SOURCE_DIR})
     target_link_libraries(${test_name} riser_sim_core gtest_main)
     target_compile_definitions(${test_name} PRIVATE RISER_SIM_SOURCE_DIR="${CMAKE_CURRENT_SOURCE_DIR}")
+    target_precompile_headers(${test_name} REUSE_FROM riser_sim_test_pch)
   endforeach()
 endif()
 
 # The scene fuzzer's replay (test/fuzz/): its input path is compiled into the regression test.
-if(CATKIN_ENABLE_TESTING)
+if(CATKIN_ENABLE_TESTING AND TARGET test_scene_fuzz_regressions)
   target_sources(test_scene_fuzz_regressions PRIVATE test/fuzz/scene_exercise.cpp)
   target_include_directories(test_scene_fuzz_regressions PRIVATE test/fuzz)
 endif()

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Counts test cases in JUnit XML results; prints failures and 'N passed, N failed'. Exit 1 if any failed
+"""Counts test cases in JUnit XML results; prints failures (with their first message lines) and 'N passed, N failed'. Exit 1 if any failed
 or if no test ran."""
 import glob
 import os
@@ -28,6 +28,12 @@ for path in sorted(glob.glob(os.path.join(root, "**", "*.xml"), recursive=True))
             failed += 1
             if not line_only:
                 print(f"FAILED: {case.get('classname')}.{case.get('name')} ({os.path.basename(path)})")
+                # What failed, as the test said it (the first lines: CI shows only this output).
+                for node in list(case.iter("failure")) + list(case.iter("error")):
+                    text = (node.get("message") or "") + "\n" + (node.text or "")
+                    lines = [l for l in text.splitlines() if l.strip()]
+                    for l in lines[:12]:
+                        print(f"    {l[:300]}")
         elif case.find("skipped") is None:
             passed += 1
 if line_only:

@@ -6,7 +6,10 @@
 #   scripts/test_sanitize.sh [RESULTS_DIR]
 # Writes one JUnit XML per test binary to RESULTS_DIR (sanitize-<test>.xml; a binary stopped by a
 # sanitizer gets a failing one), prints "N passed, N failed" and exits non-zero on any failure.
-# RISER_SIM_SANITIZE_FILTER: gtest filter. The default leaves out the long runs that only repeat per-step
+# RISER_SIM_SANITIZE_TESTS: the test binaries built and run (default: those of scripts/sanitize_tests.txt,
+# every test in them; `make test` builds the others in Release only). 'all' builds and runs every one with
+# the filter below.
+# RISER_SIM_SANITIZE_FILTER: gtest filter. With all binaries the default leaves out the long runs that only repeat per-step
 # code the other tests cover (Table 1: 20 s runs at n = 10..40 and h/2; a simulated hour; 20 s energy and
 # added-mass runs): ~3/4 of the CPU time under ASan. '*' runs everything (docs/hardening.md).
 # RISER_SIM_SANITIZE_JOBS: test binaries run at once (default 2). RISER_SIM_SANITIZE_BUILD_ONLY=1: build, run nothing.
@@ -18,7 +21,10 @@ results=${1:-$build/test_results}
 flags="${RISER_SIM_SANITIZE_OPT:--O1} -g1 -fno-omit-frame-pointer -D_GLIBCXX_ASSERTIONS"
 flags+=" -fsanitize=address,undefined -fno-sanitize-recover=all"
 
-cmake -S "$root" -B "$build" -DRISER_SIM_CORE_ONLY=ON -DCMAKE_BUILD_TYPE=Sanitize \
+default_tests=$(grep -v '^#' "$root/scripts/sanitize_tests.txt" | tr '\n' ' ')
+tests=${RISER_SIM_SANITIZE_TESTS:-$default_tests}
+[ "$tests" = all ] && tests=""
+cmake -S "$root" -B "$build" -DRISER_SIM_CORE_ONLY=ON -DCMAKE_BUILD_TYPE=Sanitize -DRISER_SIM_TESTS="${tests// /;}" \
   -DCMAKE_CXX_FLAGS_SANITIZE="$flags" -DCMAKE_EXE_LINKER_FLAGS_SANITIZE="-fsanitize=address,undefined" \
   >"$build.cmake.log" 2>&1 || { cat "$build.cmake.log"; echo "0 passed, 1 failed"; exit 1; }
 cmake --build "$build" -j2 >"$build.build.log" 2>&1 || {
@@ -38,7 +44,10 @@ long+=":ImplicitTerms.SecondOrderWithEveryTerm:GeneralizedAlpha.JlayTensionAtLar
 # solve and short agreement tests run the same per-step code.
 long+=":SpatialIndependent.*:SpatialIndependentCharts.WhirlThroughVerticalKeepsEnergyBalance"
 long+=":SpatialPendulum.*:SpatialShifted.StructuredSchemesAreSecondOrder:SpatialFlexJoint.*"
-export GTEST_FILTER=${RISER_SIM_SANITIZE_FILTER:--$long}
+# The listed binaries are short: every test in them runs (their tests run nowhere else in make test).
+default_filter="-$long"
+[ -n "$tests" ] && default_filter="*"
+export GTEST_FILTER=${RISER_SIM_SANITIZE_FILTER:-$default_filter}
 export ASAN_OPTIONS="detect_leaks=1:halt_on_error=1:strict_string_checks=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 export root build results
@@ -66,10 +75,16 @@ run_one() {
 }
 export -f run_one
 # The longest first, two at a time.
-first=" test_extremes test_formulations_agree test_energy test_hydro_dynamics test_modal "
+first=" test_extremes test_formulations_agree test_energy test_hydro_dynamics test_cli_spatial test_modal "
 {
-  for n in $first; do [ -x "$build/tests/$n" ] && echo "$build/tests/$n"; done
-  for b in "$build"/tests/test_*; do [[ "$first" == *" $(basename "$b") "* ]] || echo "$b"; done
+  for n in $first; do
+    [ -x "$build/tests/$n" ] && { [ -z "$tests" ] || [[ " $tests " == *" $n "* ]]; } && echo "$build/tests/$n"
+  done
+  for b in "$build"/tests/test_*; do
+    n=$(basename "$b")
+    [[ "$first" == *" $n "* ]] && continue
+    [ -z "$tests" ] || [[ " $tests " == *" $n "* ]] && echo "$b"  # not a binary left from another selection
+  done
 } | xargs -P "${RISER_SIM_SANITIZE_JOBS:-2}" -I{} bash -c 'run_one "$1"' _ {}
 rc=$?
 /usr/bin/python3 "$root/scripts/count_results.py" "$results" --line-only

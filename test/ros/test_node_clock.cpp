@@ -192,8 +192,10 @@ TEST(NodeClock, StalledClockPausesBackwardsClockResets) {
   }
   EXPECT_EQ(ignored, 0) << "a pose of the new timeline was ignored";
   EXPECT_EQ(warned, 1);
-  EXPECT_EQ(paused, 1);
-  EXPECT_EQ(resumed, 1);
+  // One pause is the stall above; a loaded machine can starve this test's 5 ms clock timer past the
+  // node's clock_timeout (0.5 s) and pause it again, rightly: each pause is then followed by a resume.
+  EXPECT_GE(paused, 1);
+  EXPECT_EQ(resumed, paused);
   for (const auto& m : tension.all()) EXPECT_TRUE(finite(m));
 }
 
