@@ -7,7 +7,11 @@
 #include <cmath>
 #include <random>
 
+#include <yaml-cpp/yaml.h>
+
 #include "alloc_counter.h"
+#include "riser_sim/scene_yaml.h"
+#include "riser_sim/spatial/run_builder.h"
 #include "spatial_test_util.h"
 
 namespace riser_sim {
@@ -427,6 +431,44 @@ TEST(SpatialTorsion, OffLeavesTheStateAsItWas) {
   SpatialSimulator st(on, std::make_unique<FixedMotion3>(Vec3::Zero()), IntegratorKind::kRk4);
   EXPECT_EQ(st.state().size(), 2 * 8 * on->bodies() + 1);
   EXPECT_THROW(on->setTorsion(TorsionProperties{1e3, 0.0, 0.0, 0.0}), std::invalid_argument);
+}
+
+// Scene: line.torsion builds the torsion (polar inertia from the pipe's diameters when not given), a planar
+// scene refuses it naming the key, and a twisted-free hanging start runs with the twist at rest.
+const char* kTorsionScene = R"(
+space: spatial
+line: {length: 50, elements: 10, outer_diameter: 0.3, inner_diameter: 0.2, youngs_modulus: 2.1e11,
+       density: 7850, end_mass: 100, axial_flexibility: false,
+       torsion: {stiffness: 1.0e7, end_polar_inertia: 2.0}}
+solver: {dt: 0.001}
+)";
+
+TEST(SpatialTorsion, SceneKey) {
+  const Scene s = parseScene(YAML::Load(kTorsionScene));
+  ASSERT_TRUE(s.torsion.enabled);
+  const double m = s.line.mass_per_length;
+  EXPECT_DOUBLE_EQ(s.torsion.polar_inertia, m * (0.09 + 0.04) / 8.0);  // ρ π (D⁴ - d⁴)/32 = m (D² + d²)/8
+  EXPECT_NEAR(s.torsion.polar_inertia, 7850 * M_PI * (std::pow(0.3, 4) - std::pow(0.2, 4)) / 32.0, 1e-9);
+  SpatialRun run(s);
+  EXPECT_TRUE(run.model().hasTorsion());
+  EXPECT_EQ(run.simulator().state().size(), 2 * 8 * run.model().bodies() + 1);
+  for (int k = 0; k < 100; ++k) ASSERT_TRUE(run.step()) << run.divergenceReason();
+  EXPECT_LT(std::abs(run.simulator().evaluate().reactions.top_twist), 1e-6);  // hanging, untwisted: stays so
+  try {
+    const std::string text = kTorsionScene;
+    parseScene(YAML::Load(text.substr(text.find("line:"))));  // without space: spatial
+    ADD_FAILURE() << "a planar scene took line.torsion";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(e.key(), "line.torsion") << e.what();
+  }
+  const std::string no_d = "space: spatial\nline: {length: 5, elements: 2, EA: 1e6, EI: 1e3, mass_per_length: 1, "
+                           "torsion: {stiffness: 1}}\n";
+  try {
+    parseScene(YAML::Load(no_d));
+    ADD_FAILURE() << "no polar inertia and no diameter";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(e.key(), "line.torsion.polar_inertia") << e.what();
+  }
 }
 
 long allocationsPerStep(IntegratorKind kind) {
