@@ -38,6 +38,8 @@ long+=":ImplicitTerms.SecondOrderWithEveryTerm:GeneralizedAlpha.JlayTensionAtLar
 # solve and short agreement tests run the same per-step code.
 long+=":SpatialIndependent.*:SpatialIndependentCharts.WhirlThroughVerticalKeepsEnergyBalance"
 long+=":SpatialPendulum.*:SpatialShifted.StructuredSchemesAreSecondOrder:SpatialFlexJoint.*"
+long+=":SpatialTorsion.Pendulum*:SpatialTorsion.LightLine*:SpatialTorsion.EnergyBalanceExplicit"
+long+=":SpatialTorsion.ImplicitSchemesStaySecondOrder:SpatialTorsion.Axial*:SpatialTorsion.Charts*"
 export GTEST_FILTER=${RISER_SIM_SANITIZE_FILTER:--$long}
 export ASAN_OPTIONS="detect_leaks=1:halt_on_error=1:strict_string_checks=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
