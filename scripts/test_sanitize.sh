@@ -44,6 +44,8 @@ long+=":ImplicitTerms.SecondOrderWithEveryTerm:GeneralizedAlpha.JlayTensionAtLar
 # solve and short agreement tests run the same per-step code.
 long+=":SpatialIndependent.*:SpatialIndependentCharts.WhirlThroughVerticalKeepsEnergyBalance"
 long+=":SpatialPendulum.*:SpatialShifted.StructuredSchemesAreSecondOrder:SpatialFlexJoint.*"
+long+=":SpatialTorsion.Pendulum*:SpatialTorsion.LightLine*:SpatialTorsion.EnergyBalanceExplicit"
+long+=":SpatialTorsion.ImplicitSchemesStaySecondOrder:SpatialTorsion.Axial*:SpatialTorsion.Charts*"
 # The listed binaries are short: every test in them runs (their tests run nowhere else in make test).
 default_filter="-$long"
 [ -n "$tests" ] && default_filter="*"

@@ -50,6 +50,15 @@ struct InitialSpec {
   EndForceKind end_force = EndForceKind::kRelease;
 };
 
+// line.torsion (space: spatial only): off when absent (the spin about the line's axis is then no degree of freedom).
+struct TorsionSpec {
+  bool enabled = false;
+  double stiffness = 0.0;          // GJ [N m^2]
+  double polar_inertia = 0.0;      // ρ I_p per length [kg m]
+  double damping = 0.0;            // c_GJ [N m^2 s]
+  double end_polar_inertia = 0.0;  // the end body's, about the line's axis [kg m^2]
+};
+
 struct HydroSpec {
   bool enabled = false;
   double drag_tangential = 0.0;      // D_ξ
@@ -65,6 +74,7 @@ struct Scene {
   LineProperties line;
   ModelOptions options;
   double end_mass = 0.0;  // line.end_mass [kg]
+  TorsionSpec torsion;    // line.torsion
   double gravity = 9.81;  // environment.gravity [m/s^2]
   TopMotionSpec top;
   BottomBoundary bottom = BottomBoundary::kFree;

@@ -83,12 +83,35 @@ void parseCrossSection(const Section& line, Scene& s) {
   }
 }
 
+// line.torsion: GJ, the polar inertia per length (default from the section: m (D² + d²) / 8 of the pipe
+// wall, when outer_diameter is given), damping, the end body's polar inertia. 3D only.
+void parseTorsion(const Section& line, Scene& s) {
+  if (!line.has("torsion")) return;
+  if (s.space != SpaceKind::kSpatial)
+    throw SceneError(line.key("torsion"), "needs space: spatial (the planar core has no torsion)");
+  const Section t = line.section("torsion", {"stiffness", "polar_inertia", "damping", "end_polar_inertia"});
+  TorsionSpec& ts = s.torsion;
+  ts.enabled = true;
+  ts.stiffness = t.number("stiffness");
+  requirePositive(t.key("stiffness"), ts.stiffness);
+  const double D = s.line.outer_diameter, d = s.line.inner_diameter;
+  if (!t.has("polar_inertia") && !(D > 0.0))
+    throw SceneError(t.key("polar_inertia"), "missing required key (or give line.outer_diameter to derive it)");
+  ts.polar_inertia = t.number("polar_inertia", s.line.mass_per_length * (D * D + d * d) / 8.0);
+  requirePositive(t.key("polar_inertia"), ts.polar_inertia);
+  ts.damping = t.number("damping", 0.0);
+  requireNonNegative(t.key("damping"), ts.damping);
+  ts.end_polar_inertia = t.number("end_polar_inertia", 0.0);
+  requireNonNegative(t.key("end_polar_inertia"), ts.end_polar_inertia);
+}
+
 void parseLine(const Section& root, Scene& s) {
   if (!root.has("line")) throw SceneError("line", "missing required section (needs at least length, elements "
                                                   "and the cross-section properties)");
   const Section line = root.section(
       "line", {"length", "elements", "outer_diameter", "inner_diameter", "youngs_modulus", "density", "EA", "EI",
-               "mass_per_length", "end_mass", "bending", "axial_flexibility", "axial_damping", "bending_damping"});
+               "mass_per_length", "end_mass", "bending", "axial_flexibility", "axial_damping", "bending_damping",
+               "torsion"});
   s.length = line.number("length");
   requirePositive(line.key("length"), s.length);
   s.elements = line.integer("elements");
@@ -107,6 +130,7 @@ void parseLine(const Section& root, Scene& s) {
   requireNonNegative(line.key("bending_damping"), s.line.bending_damping);
   s.end_mass = line.number("end_mass", 0.0);
   requireNonNegative(line.key("end_mass"), s.end_mass);
+  parseTorsion(line, s);
 }
 
 void parseKnots(const Section& motion, TopMotionSpec& top, bool planar) {

@@ -7,6 +7,7 @@
 
 #include "riser_sim/model.h"
 #include "riser_sim/spatial/kinematics.h"
+#include "riser_sim/spatial/torsion.h"
 
 namespace riser_sim {
 namespace spatial {
@@ -36,6 +37,12 @@ class SpatialModel {
   const Vec3& bottomPoint() const { return bottom_point_; }
   void setBottom(BottomBoundary b, const Vec3& p) { bottom_ = b; bottom_point_ = p; }
 
+  // Torsion (torsion.h): off unless set; on adds a spin angle and rate per rfe to the state.
+  // Throws std::invalid_argument unless GJ > 0, ρ I_p > 0, damping >= 0, end polar inertia >= 0.
+  void setTorsion(const TorsionProperties& t);
+  bool hasTorsion() const { return has_torsion_; }
+  const TorsionProperties& torsion() const { return torsion_; }
+
   void addTerm(std::unique_ptr<SpatialForceTerm> term);
   const std::vector<std::unique_ptr<SpatialForceTerm>>& terms() const { return terms_; }
 
@@ -45,6 +52,8 @@ class SpatialModel {
   BottomBoundary bottom_ = BottomBoundary::kFree;
   Vec3 bottom_point_ = Vec3::Zero();
   std::vector<std::unique_ptr<SpatialForceTerm>> terms_;
+  TorsionProperties torsion_;
+  bool has_torsion_ = false;
 };
 
 }  // namespace spatial

@@ -24,6 +24,10 @@ using Mat73 = Eigen::Matrix<double, 7, 3>;
 struct Reactions3 {
   Vec3 top = Vec3::Zero();     // force the line exerts on the hang-off point A_0 [N]
   Vec3 bottom = Vec3::Zero();  // force the line exerts on the bottom anchor (pinned) [N]
+  // Torsion on: the moment the line exerts on the hang-off [N m], top_twist_moment = τ (h + e_0)/(1 + h·e_0)
+  // (h: the hang-off's axis; the holding moment of the homokinetic top), top_twist = τ its part along h.
+  double top_twist = 0.0;
+  Vec3 top_twist_moment = Vec3::Zero();
   AlignedVector<Vec3> joint;   // λ_k: force on rfe k-1 at its end (minus the force on rfe k at A_k), k = 0..n+1
 };
 
@@ -58,6 +62,10 @@ class NaturalData {
   AlignedVector<Body> body;
   AlignedVector<Mat3> diag, low, up;
   AlignedVector<Vec3> rhs, lambda;
+  // Torsion on: the charts (set by NaturalFormulation::initTwist, moved by rechartTwist), the twist of this
+  // evaluation and its [θ; ω].
+  TwistData twist;
+  VecX twist_y;
 };
 
 class ShiftedSolver3;  // shifted_solver.h
@@ -70,7 +78,9 @@ class NaturalFormulation {
   // Cholesky and a Schur step (the general path for terms with inertia later; a cross-check now).
   NaturalFormulation(const SpatialModel& model, double stabilization, bool closed_form = true);
   const SpatialModel& model() const { return model_; }
-  int positionSize() const { return model_.dofs(); }
+  // y = [q; θ; v; ω; rest]: θ, ω (one per rfe) only with torsion on (torsion.h); θ_0 = ω_0 = 0 (held).
+  int positionSize() const { return model_.dofs() + twistDofs(); }
+  int twistDofs() const { return model_.hasTorsion() ? model_.bodies() : 0; }
   std::unique_ptr<NaturalData> makeData() const { return std::make_unique<NaturalData>(model_); }
   // y = [q; v] (its first 2 * positionSize() entries) from / to rfe kinematics.
   void packState(const Kinematics3& kin, VecX& y) const;
@@ -78,7 +88,12 @@ class NaturalFormulation {
   BodyKinematics3 body(const VecX& y, int i) const;
   // dy/dt on [q; v] at time t [s] with A_0 moving as top; data holds the evaluation.
   void derivative(double t, const VecX& y, const PointMotion3& top, VecX& dy, NaturalData& data) const;
-  // Kinetic energy [J] of state y.
+  // Torsion on: charts at state y (before the first derivative()), and moved to y between steps (the state
+  // and the frames are unchanged: exact). twistEnergy: Σ ½ (GJ/d) m_k² [J].
+  void initTwist(const VecX& y, NaturalData& data) const;
+  void rechartTwist(const VecX& y, NaturalData& data) const;
+  double twistEnergy(const VecX& y, NaturalData& data) const;
+  // Kinetic energy [J] of state y (with the spins' ½ J_i ω_i²).
   double kineticEnergy(const VecX& y) const;
   // Largest joint gap (top, joints, pinned end) [m], and largest | |e_i| - 1 | of state y.
   double constraintError(const VecX& y, const PointMotion3& top) const;

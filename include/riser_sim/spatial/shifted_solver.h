@@ -13,8 +13,13 @@
 // shipped terms K and C are the exact linearisation (test_spatial_shifted: the solve matches a dense
 // finite-difference one to its accuracy); a term that leaves its part out only slows Newton. Workspaces
 // are sized in the constructor; factor() and solve() allocate nothing.
+// Torsion on (torsion.h): the spins solve after the KKT system, (J + c C_t + c² K_t) x_ω = J b_ω - c K_t b_θ,
+// x_θ = b_θ + c x_ω, tridiagonal (Thomas), with K_t, C_t the twist springs and dampers on θ, ω alone: the
+// coupling to e (the twist's forces on e, the gyroscopic term, θ' = ω - a·e') is left out of J. That makes
+// the solve approximate: Newton converges to the same step with more iterations (test_spatial_torsion).
 #pragma once
 #include <Eigen/LU>
+#include <vector>
 
 #include "riser_sim/spatial/natural_formulation.h"
 #include "riser_sim/spatial/stiffness.h"
@@ -56,11 +61,12 @@ class ShiftedSolver3 {
 
   const SpatialModel& model_;
   const double omega_;
-  const int nb_, nq_;
+  const int nb_, nq_, nt_, vo_;  // rfes, natural coordinates, twist coordinates, offset of v in y
   const bool axial_;
   bool pinned_ = false;
   AlignedVector<Body> body_;  // nb_ + 1 (the last: the pinned end's block)
   SpatialStiffness S_;
+  std::vector<double> t_diag_, t_mul_;  // torsion: the Thomas factor's pivots and multipliers
   double c_ = 0.0;
   bool linearized_ = false, factored_ = false;
 };

@@ -23,7 +23,10 @@ class SpatialSimulator : private OdeSystem {
                    const IntegratorOptions& options = {}, double stabilization = 50.0);
   // Starts from the given rfe kinematics at time t0 [s] (projected; W = 0).
   void reset(const Kinematics3& kin, double t0);
-  // One integrator step of h [s], then the projection. False when the integrator failed or the state
+  // Torsion on: spin angles θ and rates ω [rad, rad/s] per rfe (torsion.h; entry 0 is held at 0). After
+  // reset(), which starts them at 0.
+  void setTwist(const VecX& theta, const VecX& omega);
+  // One integrator step of h [s], then the projection (and, torsion on, the twist charts moved). False when the integrator failed or the state
   // is not finite.
   bool step(double h);
   // Project only when max_i max(| |e_i| - 1 |, |e_i·e'_i| h) exceeds tol (default 0: after every step).
@@ -32,7 +35,7 @@ class SpatialSimulator : private OdeSystem {
   void setProjectionTolerance(double tol) { projection_tol_ = tol; }
 
   double time() const { return t_; }
-  const VecX& state() const { return y_; }
+  const VecX& state() const { return y_; }  // [q; θ; v; ω; W] (θ, ω with torsion on)
   const SpatialModel& model() const { return *model_; }
   const NaturalFormulation& formulation() const { return formulation_; }
   Integrator& integrator() { return *integrator_; }

@@ -3,6 +3,8 @@
 #include "riser_sim/force_term.h"  // the held planar Model destroys its (empty) term list
 #include "riser_sim/spatial/force_term.h"
 
+#include <stdexcept>
+
 namespace riser_sim {
 namespace spatial {
 
@@ -11,6 +13,14 @@ SpatialModel::SpatialModel(double length, int segments, const LineProperties& pr
     : line_(length, segments, props, options, end_mass, gravity.norm()), gravity_(gravity) {}
 
 SpatialModel::~SpatialModel() = default;
+
+void SpatialModel::setTorsion(const TorsionProperties& t) {
+  if (!(t.stiffness > 0.0 && t.polar_inertia > 0.0 && t.damping >= 0.0 && t.end_polar_inertia >= 0.0))
+    throw std::invalid_argument("spatial torsion: GJ and the polar inertia per length must be > 0, the damping and "
+                                "the end's polar inertia >= 0");
+  torsion_ = t;
+  has_torsion_ = true;
+}
 
 void SpatialModel::addTerm(std::unique_ptr<SpatialForceTerm> term) { terms_.push_back(std::move(term)); }
 

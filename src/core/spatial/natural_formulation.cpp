@@ -3,6 +3,7 @@
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
 #include <cmath>
+#include <limits>
 
 #include <stdexcept>
 
@@ -25,13 +26,17 @@ NaturalData::NaturalData(const SpatialModel& model) : kin(model.bodies()) {
   up.assign(nc, Mat3::Zero());
   rhs.assign(nc, Vec3::Zero());
   lambda.assign(nc, Vec3::Zero());
+  if (model.hasTorsion()) {
+    twist.resize(nb);
+    twist_y.setZero(2 * nb);
+  }
 }
 
 NaturalFormulation::NaturalFormulation(const SpatialModel& model, double stabilization, bool closed_form)
     : model_(model), omega_(stabilization), closed_form_(closed_form) {}
 
 void NaturalFormulation::packState(const Kinematics3& kin, VecX& y) const {
-  const int nq = model_.dofs();
+  const int nq = positionSize();
   for (int i = 0; i < model_.bodies(); ++i) {
     const BodyKinematics3& b = kin[i];
     double* q = y.data() + kDofPerBody3 * i;
@@ -43,7 +48,7 @@ void NaturalFormulation::packState(const Kinematics3& kin, VecX& y) const {
 }
 
 BodyKinematics3 NaturalFormulation::body(const VecX& y, int i) const {
-  const int nq = model_.dofs();
+  const int nq = positionSize();
   const bool axial = model_.options().axial_flexibility;
   const double* q = y.data() + kDofPerBody3 * i;
   const double* v = y.data() + nq + kDofPerBody3 * i;
@@ -161,7 +166,7 @@ void NaturalFormulation::closedFormAcceleration(const NaturalData::Body& c, cons
 
 void NaturalFormulation::derivative(double t, const VecX& y, const PointMotion3& top, VecX& dy,
                                     NaturalData& d) const {
-  const int nb = model_.bodies(), nq = model_.dofs();
+  const int nb = model_.bodies(), nq = model_.dofs(), vo = positionSize(), nt = twistDofs();
   const bool pinned = model_.bottom() == BottomBoundary::kPinned;
   const int nc = nb + (pinned ? 1 : 0);
   d.t = t;
@@ -170,6 +175,12 @@ void NaturalFormulation::derivative(double t, const VecX& y, const PointMotion3&
   d.Q.setZero();
   d.term_power = 0.0;
   for (const auto& term : model_.terms()) d.term_power += term->addForcesAndPower(model_, d.kin, t, d.Q);
+  if (nt > 0) {
+    d.twist_y.head(nt) = y.segment(nq, nt);
+    d.twist_y.tail(nt) = y.segment(vo + nq, nt);
+    d.twist_y[0] = d.twist_y[nt] = 0.0;  // rfe 0 is held by the hang-off
+    d.term_power += addTwistForces(model_, d.kin, d.twist_y.data(), d.twist_y.data() + nt, d.twist, d.Q);
+  }
   for (int i = 0; i < nb; ++i) {
     const BodyKinematics3& b = d.kin[i];
     const Rfe& r = model_.rfe(i);
@@ -225,7 +236,7 @@ void NaturalFormulation::derivative(double t, const VecX& y, const PointMotion3&
   for (int k = nc - 2; k >= 0; --k) d.lambda[k] = d.diag[k] * (d.rhs[k] - d.up[k] * d.lambda[k + 1]);
   if (!pinned) d.lambda[nb] = Vec3::Zero();
 
-  dy.head(nq) = y.segment(nq, nq);
+  dy.head(nq) = y.segment(vo, nq);
   for (int i = 0; i < nb; ++i) {
     const NaturalData::Body& c = d.body[i];
     if (closed_form_) {  // f + B_Aᵀ(-λ_i) + B_Eᵀ λ_{i+1}
@@ -235,16 +246,52 @@ void NaturalFormulation::derivative(double t, const VecX& y, const PointMotion3&
       f.segment<3>(kA) += L - d.lambda[i];
       f[kDelta3] += b.e.dot(L);
       f.segment<3>(kE) += b.len * L;
-      closedFormAcceleration(c, f, dy.data() + nq + kDofPerBody3 * i);
+      closedFormAcceleration(c, f, dy.data() + vo + kDofPerBody3 * i);
     } else {
-      dy.segment<7>(nq + kDofPerBody3 * i).noalias() = c.a - c.W.middleCols<3>(kA) * d.lambda[i] + c.WE * d.lambda[i + 1];
+      dy.segment<7>(vo + kDofPerBody3 * i).noalias() = c.a - c.W.middleCols<3>(kA) * d.lambda[i] + c.WE * d.lambda[i + 1];
     }
   }
   for (int k = 0; k <= nb; ++k) d.reactions.joint[k] = d.lambda[k];
   d.reactions.top = d.lambda[0];
   d.reactions.bottom = pinned ? Vec3(-d.lambda[nb]) : Vec3::Zero();
   d.constraint_error = std::sqrt(cmax);
-  d.acc = dy.segment(nq, nq);
+  d.acc = dy.segment(vo, nq);
+  if (nt > 0) {  // θ' = ω - a(c, e)·e' (the chart's reference turns with e), J ω' = moment
+    dy[nq] = dy[vo + nq] = 0.0;
+    for (int i = 1; i < nb; ++i) {
+      const BodyKinematics3& b = d.kin[i];
+      dy[nq + i] = d.twist_y[nt + i] - spinConnection(d.twist.frames.centre[i], b.e / b.e.norm()).dot(b.e_dot);
+      dy[vo + nq + i] = d.twist.moment[i] / polarInertia(model_, i);
+    }
+    const Vec3& h = d.twist.frames.centre[0];
+    const Vec3 n0 = d.kin[0].e / d.kin[0].e.norm();
+    d.reactions.top_twist = d.twist.moment[0];
+    d.reactions.top_twist_moment = d.twist.moment[0] / (1.0 + h.dot(n0)) * (h + n0);
+  }
+}
+
+void NaturalFormulation::initTwist(const VecX& y, NaturalData& d) const {
+  if (!model_.hasTorsion()) return;
+  kinematics(y, d.kin);
+  initTwistFrames(d.kin, d.twist.frames);
+  d.t = std::numeric_limits<double>::quiet_NaN();  // the charts changed: no evaluation is current
+}
+
+void NaturalFormulation::rechartTwist(const VecX& y, NaturalData& d) const {
+  if (!model_.hasTorsion()) return;
+  kinematics(y, d.kin);
+  rechartTwistFrames(d.kin, d.twist.frames);
+  d.t = std::numeric_limits<double>::quiet_NaN();
+}
+
+double NaturalFormulation::twistEnergy(const VecX& y, NaturalData& d) const {
+  const int nt = twistDofs();
+  if (nt == 0) return 0.0;
+  kinematics(y, d.kin);
+  d.t = std::numeric_limits<double>::quiet_NaN();
+  d.twist_y.head(nt) = y.segment(model_.dofs(), nt);
+  d.twist_y[0] = 0.0;
+  return spatial::twistEnergy(model_, d.kin, d.twist_y.data(), d.twist);
 }
 
 double NaturalFormulation::kineticEnergy(const VecX& y) const {
@@ -256,6 +303,11 @@ double NaturalFormulation::kineticEnergy(const VecX& y) const {
       const RigidPart& part = r.part[p];
       T += 0.5 * part.mass * b.velocity(part.s0, part.kappa).squaredNorm() + 0.5 * part.inertia * b.e_dot.squaredNorm();
     }
+  }
+  const int nt = twistDofs();
+  for (int i = 1; i < nt; ++i) {
+    const double w = y[positionSize() + model_.dofs() + i];
+    T += 0.5 * polarInertia(model_, i) * w * w;
   }
   return T;
 }
@@ -284,7 +336,7 @@ double NaturalFormulation::manifoldError(const VecX& y, double h) const {
 }
 
 void NaturalFormulation::project(VecX& y) const {
-  const int nq = model_.dofs();
+  const int nq = positionSize();
   for (int i = 0; i < model_.bodies(); ++i) {
     auto e = y.segment<3>(kDofPerBody3 * i + kE);
     auto ed = y.segment<3>(nq + kDofPerBody3 * i + kE);
@@ -299,6 +351,9 @@ std::unique_ptr<ShiftedSolver3> NaturalFormulation::makeShifted() const {
 
 bool NaturalFormulation::evaluatedAt(double t, const VecX& y, const NaturalData& d) const {
   if (d.t != t) return false;
+  const int nt = twistDofs(), nq = model_.dofs();
+  for (int i = 1; i < nt; ++i)
+    if (y[nq + i] != d.twist_y[i] || y[positionSize() + nq + i] != d.twist_y[nt + i]) return false;
   for (int i = 0; i < model_.bodies(); ++i) {
     const BodyKinematics3 b = body(y, i);
     const BodyKinematics3& k = d.kin[i];

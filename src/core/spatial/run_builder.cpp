@@ -109,6 +109,10 @@ std::shared_ptr<SpatialModel> buildSpatialModel(const Scene& scene) {
   if (scene.options.axial_flexibility) model->addTerm(std::make_unique<AxialSpring>());
   if (scene.options.bending && (scene.line.EI > 0.0 || scene.line.bending_damping > 0.0))
     model->addTerm(std::make_unique<BendingSpring>());
+  if (scene.torsion.enabled) {
+    const TorsionSpec& t = scene.torsion;
+    model->setTorsion(TorsionProperties{t.stiffness, t.polar_inertia, t.damping, t.end_polar_inertia});
+  }
   return model;
 }
 
@@ -131,9 +135,10 @@ double restAcceleration(const Scene& scene, const Kinematics3& kin, const Vec3& 
     model->addTerm(std::make_unique<EndLoad3>(end_force));
   const NaturalFormulation f(*model, scene.solver.stabilization);
   auto data = f.makeData();
-  const int nq = model->dofs();
+  const int nq = f.positionSize();  // the velocities' offset (torsion adds θ to q)
   VecX y = VecX::Zero(2 * nq), dy = VecX::Zero(2 * nq);
   f.packState(kin, y);
+  f.initTwist(y, *data);  // untwisted: no twist forces
   f.derivative(0.0, y, PointMotion3{top, Vec3::Zero(), Vec3::Zero()}, dy, *data);
   double amax = 0.0;
   where = 0;

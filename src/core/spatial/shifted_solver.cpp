@@ -10,6 +10,8 @@ ShiftedSolver3::ShiftedSolver3(const SpatialModel& model, double stabilization)
       omega_(stabilization),
       nb_(model.bodies()),
       nq_(model.dofs()),
+      nt_(model.hasTorsion() ? model.bodies() : 0),
+      vo_(nq_ + nt_),
       axial_(model.options().axial_flexibility) {
   body_.resize(nb_ + 1);  // + the pinned end's block (used when the bottom is pinned)
   for (Body& B : body_) {
@@ -22,6 +24,8 @@ ShiftedSolver3::ShiftedSolver3(const SpatialModel& model, double stabilization)
     B.lu = Eigen::PartialPivLU<Mat11>(Mat11::Identity());
   }
   S_.resize(nb_);
+  t_diag_.assign(nt_, 1.0);
+  t_mul_.assign(nt_, 0.0);
 }
 
 // Per rfe (u = [A, Δ, e], a = u''): M a + h(u, u') = Q + constraint forces. K, C gather -∂/∂(q, q') of the
@@ -155,6 +159,16 @@ void ShiftedSolver3::factor(double c) {
     D -= B.L.middleCols<7>(3).lazyProduct(P.Y.middleRows<7>(3));
     B.lu.compute(D);
   }
+  if (nt_ > 0) {  // spins: diagonal J_i + s (joints at i), off-diagonal -s between rows i, i+1 >= 1
+    const double s = c * twistDamping(model_) + c * c * twistStiffness(model_);
+    for (int i = 1; i < nt_; ++i) {
+      t_diag_[i] = polarInertia(model_, i) + s * (i + 1 < nt_ ? 2.0 : 1.0);
+      if (i > 1) {
+        t_mul_[i] = -s / t_diag_[i - 1];
+        t_diag_[i] -= t_mul_[i] * -s;
+      }
+    }
+  }
   c_ = c;
   factored_ = true;
 }
@@ -163,7 +177,7 @@ void ShiftedSolver3::factor(double c) {
 void ShiftedSolver3::assembleRhs(int blk, const VecX& b, Vec11& r) const {
   const double c = c_, w2 = omega_ * omega_;
   auto bq = [&](int i) { return b.segment<7>(kDofPerBody3 * i); };
-  auto bv = [&](int i) { return b.segment<7>(nq_ + kDofPerBody3 * i); };
+  auto bv = [&](int i) { return b.segment<7>(vo_ + kDofPerBody3 * i); };
   r.setZero();
   if (blk > 0) {
     const Body& P = body_[blk - 1];
@@ -190,9 +204,28 @@ void ShiftedSolver3::solve(const VecX& b, VecX& x) {
   for (int i = nblk - 2; i >= 0; --i) body_[i].z.noalias() -= body_[i].Y * body_[i + 1].z;
   for (int i = 0; i < nb_; ++i) {
     const auto xv = body_[i].z.segment<7>(3);
-    x.segment<7>(nq_ + kDofPerBody3 * i) = xv;
+    x.segment<7>(vo_ + kDofPerBody3 * i) = xv;
     x.segment<7>(kDofPerBody3 * i) = b.segment<7>(kDofPerBody3 * i) + c_ * xv;
   }
+  if (nt_ == 0) return;
+  // Spins: rows 1..n (rfe 0 held: x = b there), r_i = J_i b_ω,i - c (K_t b_θ)_i, then Thomas.
+  const double k = twistStiffness(model_), s = c_ * twistDamping(model_) + c_ * c_ * k;
+  auto bth = [&](int i) { return i > 0 && i < nt_ ? b[nq_ + i] : 0.0; };
+  x[nq_] = b[nq_];
+  x[vo_ + nq_] = b[vo_ + nq_];
+  for (int i = 1; i < nt_; ++i) {
+    double kq = k * (bth(i) - bth(i - 1));
+    if (i + 1 < nt_) kq += k * (bth(i) - bth(i + 1));
+    double r = polarInertia(model_, i) * b[vo_ + nq_ + i] - c_ * kq;
+    if (i > 1) r -= t_mul_[i] * x[vo_ + nq_ + i - 1];
+    x[vo_ + nq_ + i] = r;
+  }
+  for (int i = nt_ - 1; i >= 1; --i) {
+    double r = x[vo_ + nq_ + i];
+    if (i + 1 < nt_) r += s * x[vo_ + nq_ + i + 1];
+    x[vo_ + nq_ + i] = r / t_diag_[i];
+  }
+  for (int i = 1; i < nt_; ++i) x[nq_ + i] = b[nq_ + i] + c_ * x[vo_ + nq_ + i];
 }
 
 }  // namespace spatial

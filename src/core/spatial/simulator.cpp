@@ -2,6 +2,8 @@
 
 #include "riser_sim/spatial/force_term.h"
 
+#include <stdexcept>
+
 namespace riser_sim {
 namespace spatial {
 
@@ -21,6 +23,17 @@ void SpatialSimulator::reset(const Kinematics3& kin, double t0) {
   y_.setZero();
   formulation_.packState(kin, y_);
   formulation_.project(y_);
+  formulation_.initTwist(y_, *data_);
+  integrator_->restart();
+}
+
+void SpatialSimulator::setTwist(const VecX& theta, const VecX& omega) {
+  const int nt = formulation_.twistDofs(), nq = model_->dofs(), p = formulation_.positionSize();
+  if (nt == 0 || theta.size() != nt || omega.size() != nt)
+    throw std::invalid_argument("SpatialSimulator::setTwist: torsion off, or not one angle and rate per rfe");
+  y_.segment(nq, nt) = theta;
+  y_.segment(p + nq, nt) = omega;
+  y_[nq] = y_[p + nq] = 0.0;  // rfe 0 is held by the hang-off
   integrator_->restart();
 }
 
@@ -41,6 +54,10 @@ bool SpatialSimulator::step(double h) {
   // Back onto |e| = 1, e·e' = 0 (the Baumgarte terms hold the drift within the step).
   if (projection_tol_ <= 0.0 || formulation_.manifoldError(y_, h) > projection_tol_) {
     formulation_.project(y_);
+    formulation_.rechartTwist(y_, *data_);
+    integrator_->stateProjected(y_);
+  } else if (model_->hasTorsion()) {  // the twist charts move every step (the state does not)
+    formulation_.rechartTwist(y_, *data_);
     integrator_->stateProjected(y_);
   }
   return ok && y_.allFinite();
@@ -56,7 +73,7 @@ double SpatialSimulator::potentialEnergy() {
   formulation_.kinematics(y_, kin_);
   double v = 0.0;
   for (const auto& term : model_->terms()) v += term->potentialEnergy(*model_, kin_);
-  return v;
+  return v + formulation_.twistEnergy(y_, *data_);
 }
 
 const NaturalData& SpatialSimulator::evaluate() {

@@ -1,0 +1,76 @@
+// Torsion of the spatial line (on only when the scene gives line.torsion). Per rfe a spin angle θ_i and a
+// spin rate ω_i (about e_i, [rad/s]) join the state. θ_i is measured from a reference u_i(e) = R(c_i -> e) r_i:
+// r_i ⟂ c_i carried by the minimal rotation from a chart centre c_i, moved to e_i between steps (a moving
+// chart, exact: u_i is unchanged by the move). The material frame is u_i turned by θ_i about e_i, so
+//   spin rate ω_i = θ'_i + a(c_i, e_i)·e'_i,   a(c, e) = -(c × e) / (1 + c·e)  (0 at the chart centre).
+// Twist between rfes k, k+1: m_k = θ_{k+1} - θ_k + m_ref,k, m_ref,k the angle about e_{k+1} from
+// R(e_k -> e_{k+1}) u_k to u_{k+1} (space-parallel transport across the joint; discrete elastic rods). Under
+// minimal rotations of the frames ∂m_k/∂e_k = ∂m_k/∂e_{k+1} = kb_k = (e_k × e_{k+1}) / (1 + e_k·e_{k+1}).
+// Spring V = ½ (GJ/d) m_k², damper moment (c_GJ/d) m'_k. The top rfe is held in twist by the hang-off: its
+// frame is the hang-off's (axis h = e_0 at the start) turned by R(h -> e_0), θ_0 = 0 (a homokinetic joint);
+// its own polar inertia is left out. The bottom is free in twist (free or pinned).
+#pragma once
+#include <vector>
+
+#include "riser_sim/spatial/kinematics.h"
+
+namespace riser_sim {
+namespace spatial {
+
+struct TorsionProperties {
+  double stiffness = 0.0;          // GJ [N m^2]
+  double polar_inertia = 0.0;      // ρ I_p per length [kg m]
+  double damping = 0.0;            // c_GJ [N m^2 s]: twisting moment per unit twist rate per length
+  double end_polar_inertia = 0.0;  // end body about the line's axis [kg m^2]
+};
+
+// R(a -> b) x: the minimal rotation taking unit a to unit b (about a × b), applied to x. Singular at b = -a.
+inline Vec3 minimalRotation(const Vec3& a, const Vec3& b, const Vec3& x) {
+  const Vec3 v = a.cross(b);
+  return x + v.cross(x) + v.cross(v.cross(x)) / (1.0 + a.dot(b));
+}
+// a(c, e): spin rate about e of the chart reference R(c -> e) r is a·e'.
+inline Vec3 spinConnection(const Vec3& c, const Vec3& e) { return -c.cross(e) / (1.0 + c.dot(e)); }
+
+// Chart data: centre c_i and reference r_i per rfe (rfe 0: the hang-off's axis and reference, fixed), and
+// the last reference twist per joint (the next one is unwrapped against it).
+struct TwistFrames {
+  AlignedVector<Vec3> centre, ref;
+  std::vector<double> mref;
+};
+
+// One evaluation's twist results and workspaces (sized once).
+struct TwistData {
+  TwistFrames frames;
+  std::vector<double> m, mdot, tau;  // per joint k (rfes k, k+1): twist [rad], its rate, moment k m + c m' [N m]
+  AlignedVector<Vec3> kb;            // per joint
+  std::vector<double> moment;        // per rfe: moment about e_i of the springs and dampers [N m]
+  void resize(int bodies);
+};
+
+class SpatialModel;
+
+// Spring and damper constants per joint [N m/rad], [N m s/rad] and polar inertia of rfe i [kg m^2] (0 for i = 0).
+double twistStiffness(const SpatialModel& model);
+double twistDamping(const SpatialModel& model);
+double polarInertia(const SpatialModel& model, int i);
+
+// Frames at the start: centres at e_i, the hang-off's axis e_0 with a reference ⟂ e_0, the references
+// transported down the line across the joints (so m_ref = 0 at the start).
+void initTwistFrames(const Kinematics3& kin, TwistFrames& f);
+// Between steps: every chart (i >= 1) centred at e_i; the references follow (the frames do not move) and
+// the reference twists are stored for unwrapping.
+void rechartTwistFrames(const Kinematics3& kin, TwistFrames& f);
+// m_k and kb_k per joint at (kin, θ), unwrapped against f.mref.
+void twistAngles(const Kinematics3& kin, const double* theta, const TwistFrames& f, double* m, Vec3* kb);
+// Spin rate of rfe 0, held by the hang-off: a(h, e_0)·e'_0.
+double topSpinRate(const Kinematics3& kin, const TwistFrames& f);
+// Twist forces at (kin, θ, ω): adds the e part (twist, hang-off, gyroscopic J ω e × e') to Q (7 per rfe),
+// fills d.m, d.mdot, d.tau, d.kb, d.moment; returns the dampers' power [W] (<= 0).
+double addTwistForces(const SpatialModel& model, const Kinematics3& kin, const double* theta, const double* omega,
+                      TwistData& d, VecX& Q);
+// Σ ½ (GJ/d) m_k² [J].
+double twistEnergy(const SpatialModel& model, const Kinematics3& kin, const double* theta, TwistData& d);
+
+}  // namespace spatial
+}  // namespace riser_sim

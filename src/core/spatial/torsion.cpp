@@ -1,0 +1,118 @@
+#include "riser_sim/spatial/torsion.h"
+
+#include <cmath>
+
+#include "riser_sim/spatial/model.h"
+
+namespace riser_sim {
+namespace spatial {
+
+namespace {
+Vec3 dir(const BodyKinematics3& b) { return b.e / b.e.norm(); }
+// The reference of rfe i's chart at direction n.
+Vec3 reference(const TwistFrames& f, int i, const Vec3& n) { return minimalRotation(f.centre[i], n, f.ref[i]); }
+// Angle about axis from a to b (both ⟂ axis) [rad], in (-π, π].
+double angleAbout(const Vec3& a, const Vec3& b, const Vec3& axis) { return std::atan2(axis.dot(a.cross(b)), a.dot(b)); }
+Vec3 unitPerp(const Vec3& x, const Vec3& n) { return (x - x.dot(n) * n).normalized(); }
+// Reference twist of joint k, unwrapped against the stored one.
+double referenceTwist(const TwistFrames& f, int k, const Vec3& n0, const Vec3& n1) {
+  const Vec3 u0 = minimalRotation(n0, n1, reference(f, k, n0)), u1 = reference(f, k + 1, n1);
+  const double raw = angleAbout(u0, u1, n1);
+  return f.mref[k] + std::remainder(raw - f.mref[k], 2.0 * M_PI);
+}
+}  // namespace
+
+void TwistData::resize(int bodies) {
+  const int nj = bodies - 1;
+  frames.centre.assign(bodies, Vec3::Zero());
+  frames.ref.assign(bodies, Vec3::Zero());
+  frames.mref.assign(nj, 0.0);
+  m.assign(nj, 0.0);
+  mdot.assign(nj, 0.0);
+  tau.assign(nj, 0.0);
+  kb.assign(nj, Vec3::Zero());
+  moment.assign(bodies, 0.0);
+}
+
+double twistStiffness(const SpatialModel& model) { return model.torsion().stiffness / model.line().segmentLength(); }
+double twistDamping(const SpatialModel& model) { return model.torsion().damping / model.line().segmentLength(); }
+double polarInertia(const SpatialModel& model, int i) {
+  if (i == 0) return 0.0;
+  const TorsionProperties& t = model.torsion();
+  return t.polar_inertia * model.rfe(i).length + (i == model.bodies() - 1 ? t.end_polar_inertia : 0.0);
+}
+
+void initTwistFrames(const Kinematics3& kin, TwistFrames& f) {
+  const int nb = int(kin.size());
+  const Vec3 n0 = dir(kin[0]);
+  int axis = 0;  // the world axis least aligned with e_0
+  n0.cwiseAbs().minCoeff(&axis);
+  f.centre[0] = n0;
+  f.ref[0] = unitPerp(Vec3::Unit(axis), n0);
+  for (int i = 1; i < nb; ++i) {
+    const Vec3 np = dir(kin[i - 1]), n = dir(kin[i]);
+    f.centre[i] = n;
+    f.ref[i] = unitPerp(minimalRotation(np, n, reference(f, i - 1, np)), n);
+  }
+  for (double& m : f.mref) m = 0.0;
+}
+
+void rechartTwistFrames(const Kinematics3& kin, TwistFrames& f) {
+  const int nb = int(kin.size());
+  for (int k = 0; k + 1 < nb; ++k) f.mref[k] = referenceTwist(f, k, dir(kin[k]), dir(kin[k + 1]));
+  for (int i = 1; i < nb; ++i) {
+    const Vec3 n = dir(kin[i]);
+    f.ref[i] = unitPerp(reference(f, i, n), n);
+    f.centre[i] = n;
+  }
+}
+
+void twistAngles(const Kinematics3& kin, const double* theta, const TwistFrames& f, double* m, Vec3* kb) {
+  const int nb = int(kin.size());
+  for (int k = 0; k + 1 < nb; ++k) {
+    const Vec3 n0 = dir(kin[k]), n1 = dir(kin[k + 1]);
+    m[k] = (k + 1 < nb ? theta[k + 1] : 0.0) - (k > 0 ? theta[k] : 0.0) + referenceTwist(f, k, n0, n1);
+    kb[k] = n0.cross(n1) / (1.0 + n0.dot(n1));
+  }
+}
+
+double topSpinRate(const Kinematics3& kin, const TwistFrames& f) {
+  return spinConnection(f.centre[0], dir(kin[0])).dot(kin[0].e_dot);
+}
+
+double addTwistForces(const SpatialModel& model, const Kinematics3& kin, const double* theta, const double* omega,
+                      TwistData& d, VecX& Q) {
+  const int nb = model.bodies(), nj = nb - 1;
+  const double k = twistStiffness(model), c = twistDamping(model);
+  twistAngles(kin, theta, d.frames, d.m.data(), d.kb.data());
+  const double w0 = topSpinRate(kin, d.frames);
+  double power = 0.0;
+  for (int j = 0; j < nj; ++j) {
+    d.mdot[j] = omega[j + 1] - (j == 0 ? w0 : omega[j]) + d.kb[j].dot(kin[j].e_dot + kin[j + 1].e_dot);
+    d.tau[j] = k * d.m[j] + c * d.mdot[j];
+    power -= c * d.mdot[j] * d.mdot[j];
+  }
+  for (int i = 0; i < nb; ++i) {
+    d.moment[i] = (i < nj ? d.tau[i] : 0.0) - (i > 0 ? d.tau[i - 1] : 0.0);
+    Vec3 qe = Vec3::Zero();
+    if (i < nj) qe -= d.tau[i] * d.kb[i];
+    if (i > 0) qe -= d.tau[i - 1] * d.kb[i - 1];
+    const BodyKinematics3& b = kin[i];
+    if (i == 0)  // the hang-off turns rfe 0 about e_0 at a(h, e_0)·e'_0
+      qe += d.moment[0] * spinConnection(d.frames.centre[0], dir(b));
+    else  // gyroscopic: d/dt of the spin's angular momentum J ω e has J ω e' across e
+      qe += polarInertia(model, i) * omega[i] * b.e.cross(b.e_dot);
+    Q.segment<3>(kDofPerBody3 * i + kE) += qe;
+  }
+  return power;
+}
+
+double twistEnergy(const SpatialModel& model, const Kinematics3& kin, const double* theta, TwistData& d) {
+  twistAngles(kin, theta, d.frames, d.m.data(), d.kb.data());
+  double v = 0.0;
+  for (double m : d.m) v += m * m;
+  return 0.5 * twistStiffness(model) * v;
+}
+
+}  // namespace spatial
+}  // namespace riser_sim
