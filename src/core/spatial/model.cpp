@@ -12,6 +12,12 @@ SpatialModel::SpatialModel(double length, int segments, const LineProperties& pr
 
 SpatialModel::~SpatialModel() = default;
 
+void SpatialModel::setBottomMotion(std::shared_ptr<const TopMotion3> motion) {
+  bottom_ = BottomBoundary::kPinned;
+  bottom_point_ = motion->at(0.0).p;
+  bottom_motion_ = std::move(motion);
+}
+
 void SpatialModel::addTerm(std::unique_ptr<SpatialForceTerm> term) { terms_.push_back(std::move(term)); }
 
 }  // namespace spatial
