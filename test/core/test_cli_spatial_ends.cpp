@@ -283,6 +283,27 @@ TEST(CliSpatialEnds, BadKeysAreRefusedNamingTheKey) {
   }
 }
 
+// A 3D straight start pinned where it ends runs (the chain at -45°, anchored at its end), and an external
+// bottom motion is held at bottom.position offline: no anchor columns, the end stays at the anchor.
+TEST(CliSpatialEnds, StraightPinnedStartAndExternalBottomRun) {
+  char end[128];
+  std::snprintf(end, sizeof(end), "[%.17g,0,%.17g]", 10.0 * std::cos(M_PI / 4.0), -10.0 * std::sin(M_PI / 4.0));
+  const std::string set = " --set space=spatial --set bottom.type=pinned --set bottom.position=" + std::string(end);
+  for (const std::string motion : {"", " --set bottom.motion.type=external"}) {
+    SCOPED_TRACE(motion);
+    const std::string csv = tempPath("straight_pinned.csv");
+    const CliRun r = runCli("--scene " + kChain + " --duration 0.2 --summary --quiet --csv " + csv + set + motion);
+    ASSERT_EQ(r.code, 0) << r.err;
+    auto j = summary(r);
+    EXPECT_EQ(j["status"], "ok");
+    EXPECT_EQ(j.count("x_bottom"), 0u);
+    const Table t = readTable(csv);
+    const size_t last = t.rows.size() - 1;
+    EXPECT_LT((t.vec(last, "x_end", "y_end", "z_end") - Vec3(10.0 * std::cos(M_PI / 4.0), 0, -10.0 * std::sin(M_PI / 4.0))).norm(), 1e-6);
+    EXPECT_GT(t.vec(last, "bottom_fx", "bottom_fy", "bottom_fz").norm(), 0.0);
+  }
+}
+
 // One row of a --modes table: frequency [Hz], character, axial share.
 struct ModeRow {
   double f;
