@@ -358,4 +358,26 @@ TEST(CliSpatialEnds, ModesIn3DArePairsAtThePlanarFrequencies) {
   }
 }
 
+// --modes with a top flex joint: a stiff rod (EI = 1e10 N m², inextensible, 10 m, 100 kg, 50 kg end mass)
+// hanging from a joint of k = 3e4 N m/rad swings as a rigid pendulum on a rotational spring,
+// ω² = (k + g (m L/2 + m_e L)) / (m L²/3 + m_e L²), in both vertical planes. The rod's own compliance
+// (the joint turns rfe 0 against the bending springs c = EI/d = 6e9 N m/rad) lowers ω by ~k/2c = 2.5e-6;
+// without the joint ω would be 1.085 rad/s, half of it.
+TEST(CliSpatialEnds, ModesWithATopFlexJoint) {
+  const std::string scene = writeScene(
+      "rod", "name: rod\nspace: spatial\nline: {length: 10, elements: 6, mass_per_length: 10, EI: 1.0e10, "
+             "axial_flexibility: false, end_mass: 50}\ntop: {position: [0, 0, 0], flex_joint: {stiffness: 3.0e4, "
+             "damping: 100}}\ninitial: {type: hanging}\n");
+  const CliRun r = runCli("--scene " + scene + " --quiet --modes 2");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto modes = modeTable(r.out);
+  ASSERT_EQ(modes.size(), 2u);
+  const double J = 100.0 * 100.0 / 3.0 + 50.0 * 100.0;
+  const double f = std::sqrt((3.0e4 + kG * (100.0 * 5.0 + 50.0 * 10.0)) / J) / (2.0 * M_PI);
+  std::printf("[modes flex joint] %.6g, %.6g Hz vs the rigid pendulum on its spring %.6g Hz\n", modes[0].f, modes[1].f, f);
+  EXPECT_EQ(modes[0].character, "in-plane");
+  EXPECT_EQ(modes[1].character, "out-of-plane");
+  for (const ModeRow& m : modes) EXPECT_NEAR(m.f / f, 1.0, 2e-5);  // compliance 2.5e-6 + 6 printed digits
+}
+
 }  // namespace
