@@ -84,7 +84,7 @@ double restAcceleration(const Scene& scene, const Kinematics3& kin, const Vec3& 
 InitialState3 solveInitialState3(const Scene& scene, const Vec3& top);
 
 // The scene's flex joints (top.flex_joint, bottom.flex_joint) added to model, their axes given or along the
-// line in `initial` (then unloaded). Returns "" or which joints start loaded ("top.flex_joint turned 0.1 rad").
+// line in `initial` (then unloaded); `loaded` names those that start turned ("top.flex_joint turned 0.1 rad").
 struct FlexJoints3 {
   const FlexJoint* top = nullptr;
   const FlexJoint* bottom = nullptr;
