@@ -6,6 +6,7 @@ add_executable(riser_sim_cli
   src/cli/run_output.cpp
   src/cli/spatial_run.cpp
   src/cli/modal_output.cpp
+  src/cli/spatial_modes.cpp
   src/cli/output_file.cpp
 )
 target_link_libraries(riser_sim_cli riser_sim_core)
@@ -15,7 +16,7 @@ set_target_properties(riser_sim_cli PROPERTIES
 install(TARGETS riser_sim_cli RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
 
 # test/core/test_cli*.cpp (made gtests by cmake/core.cmake's glob) run the built binary.
-foreach(t test_cli test_cli_outputs test_cli_spatial)
+foreach(t test_cli test_cli_outputs test_cli_spatial test_cli_spatial_ends)
   if(CATKIN_ENABLE_TESTING AND TARGET ${t})
     target_compile_definitions(${t} PRIVATE
       RISER_SIM_CLI_BINARY="${CATKIN_DEVEL_PREFIX}/${CATKIN_PACKAGE_BIN_DESTINATION}/riser_sim_cli")

@@ -36,6 +36,16 @@ struct TopMotionSpec {
   std::vector<Knot3> knots3;
 };
 
+// A flex joint at an end (space: spatial; spatial/forces/flex_joint.h): a rotational spring k and damper c
+// between the end rfe and the holder's axis. Absent: the end is pinned (free rotation).
+struct FlexJointSpec {
+  bool enabled = false;        // top.flex_joint / bottom.flex_joint present
+  double stiffness = 0.0;      // k [N m/rad] > 0
+  double damping = 0.0;        // c [N m s/rad] >= 0
+  bool has_axis = false;       // axis given; else the line's direction there in the initial state
+  Eigen::Vector3d axis = Eigen::Vector3d::Zero();  // along the line, away from the holder
+};
+
 struct InitialSpec {
   InitialKind type = InitialKind::kHanging;  // initial.type
   double end_dx = 0.0;           // displaced: x_end - x_top [m]
@@ -77,9 +87,14 @@ struct Scene {
   TorsionSpec torsion;    // line.torsion
   double gravity = 9.81;  // environment.gravity [m/s^2]
   TopMotionSpec top;
+  FlexJointSpec top_flex_joint;  // top.flex_joint (3D)
   BottomBoundary bottom = BottomBoundary::kFree;
   Vec2 bottom_point = Vec2::Zero();
   Eigen::Vector3d bottom_point3 = Eigen::Vector3d::Zero();  // the same point in 3D [m]
+  // bottom.motion of a pinned bottom (3D; the top's motion keys): its position is bottom.position. fixed by
+  // default; external is held at bottom.position until fed (as the top's external in the CLI).
+  TopMotionSpec bottom_motion;
+  FlexJointSpec bottom_flex_joint;  // bottom.flex_joint (3D, pinned bottom)
   InitialSpec initial;
   SolverSettings solver;
   double duration = 20.0;  // run.duration [s] (CLI default)

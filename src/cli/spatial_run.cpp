@@ -6,6 +6,7 @@
 
 #include "output_file.h"
 #include "run_output.h"
+#include "spatial_modes.h"
 #include "step_loop.h"
 
 namespace riser_sim {
@@ -14,10 +15,11 @@ namespace cli {
 namespace {
 // Columns of spatialSample() before the probes.
 constexpr const char* kSpatialColumns =
-    "t,x_top,y_top,z_top,x_end,y_end,z_end,top_fx,top_fy,top_fz,bottom_fx,bottom_fy,bottom_fz,tension_top,"
-    "tension_max,energy,work,energy_drift,constraint_error";
+    "t,x_top,y_top,z_top,x_end,y_end,z_end,top_fx,top_fy,top_fz,bottom_fx,bottom_fy,bottom_fz,top_mx,top_my,top_mz,"
+    "bottom_mx,bottom_my,bottom_mz,tension_top,tension_max,energy,work,energy_drift,constraint_error";
 enum Column { kT, kXTop, kYTop, kZTop, kXEnd, kYEnd, kZEnd, kTopFx, kTopFy, kTopFz, kBotFx, kBotFy, kBotFz,
-              kTensionTop, kTensionMax, kEnergy, kWork, kDrift, kGap, kColumns };
+              kTopMx, kTopMy, kTopMz, kBotMx, kBotMy, kBotMz, kTensionTop, kTensionMax, kEnergy, kWork, kDrift, kGap,
+              kColumns, kXBottom = kColumns, kYBottom, kZBottom };
 
 bool finite(const std::vector<double>& row) {
   return std::all_of(row.begin(), row.end(), [](double v) { return std::isfinite(v); });
@@ -29,8 +31,9 @@ void writeRow(std::FILE* f, const std::vector<double>& row) {
 }
 }  // namespace
 
-std::string spatialCsvHeader(const std::vector<int>& probe_rfes) {
+std::string spatialCsvHeader(const std::vector<int>& probe_rfes, bool bottom_moves) {
   std::string h = kSpatialColumns;
+  if (bottom_moves) h += ",x_bottom,y_bottom,z_bottom";
   for (const int k : probe_rfes) {
     const std::string K = std::to_string(k);
     h += ",x_rfe" + K + ",y_rfe" + K + ",z_rfe" + K + ",tension_rfe" + K;
@@ -41,10 +44,11 @@ std::string spatialCsvHeader(const std::vector<int>& probe_rfes) {
 std::vector<double> spatialSample(spatial::SpatialRun& run, const std::vector<int>& probe_rfes) {
   const spatial::LineOutputs3& o = run.outputs();
   std::vector<double> row = {o.t};
-  for (const auto& v : {o.points.front(), o.points.back(), o.top_force, o.bottom_force})
+  for (const auto& v : {o.points.front(), o.points.back(), o.top_force, o.bottom_force, o.top_moment, o.bottom_moment})
     row.insert(row.end(), {v.x(), v.y(), v.z()});
   row.insert(row.end(), {o.top_tension, o.max_tension, o.kinetic_energy + o.potential_energy, o.work_in,
                          run.energyDrift(), o.constraint_error});
+  if (run.bottomMoves()) row.insert(row.end(), {o.bottom_point.x(), o.bottom_point.y(), o.bottom_point.z()});
   for (const int k : probe_rfes) {
     const auto& p = o.springs[k];
     row.insert(row.end(), {p.x(), p.y(), p.z(), o.axial_force[k]});
@@ -59,10 +63,11 @@ int runSpatial(const Scene& scene, const CliOptions& opt) {
     std::fprintf(stderr, fmt, args...);
     std::fputc('\n', stderr);
   };
-  if (opt.modes > 0)
-    return fail(kExitBadInput, "--modes: not available with space: spatial yet (the modal analysis is planar; run "
-                               "the scene with space: planar for its in-plane modes)");
 
+  if (opt.modes > 0) {  // the 3D modes; a time run only when --duration is given too (as planar)
+    const int rc = runSpatialModes(scene, opt.modes, opt.modes_csv, opt.quiet);
+    if (rc != kExitOk || opt.duration <= 0.0) return rc;
+  }
   std::unique_ptr<spatial::SpatialRun> run;
   try {
     run = std::make_unique<spatial::SpatialRun>(scene);
@@ -82,7 +87,7 @@ int runSpatial(const Scene& scene, const CliOptions& opt) {
   OutputFile csv;
   if (!opt.csv.empty()) {
     if (!csv.open("--csv", opt.csv)) return fail(kExitBadInput, csv.error());
-    std::fprintf(csv.get(), "%s\n", spatialCsvHeader(opt.probe_rfes).c_str());
+    std::fprintf(csv.get(), "%s\n", spatialCsvHeader(opt.probe_rfes, run->bottomMoves()).c_str());
   }
   const double dt = run->dt();
   const long total_steps = std::max(1L, static_cast<long>(std::ceil(scene.duration / dt - 1e-9)));
@@ -135,7 +140,16 @@ int runSpatial(const Scene& scene, const CliOptions& opt) {
         .add("bottom_force_x", last[kBotFx])
         .add("bottom_force_y", last[kBotFy])
         .add("bottom_force_z", last[kBotFz])
-        .add("tension_top", last[kTensionTop])
+        .add("top_moment_x", last[kTopMx])
+        .add("top_moment_y", last[kTopMy])
+        .add("top_moment_z", last[kTopMz])
+        .add("bottom_moment_x", last[kBotMx])
+        .add("bottom_moment_y", last[kBotMy])
+        .add("bottom_moment_z", last[kBotMz]);
+    if (run->topFlexJoint()) j.add("top_moment_max", run->maxTopMoment());
+    if (run->bottomFlexJoint()) j.add("bottom_moment_max", run->maxBottomMoment());
+    if (run->bottomMoves()) j.add("x_bottom", last[kXBottom]).add("y_bottom", last[kYBottom]).add("z_bottom", last[kZBottom]);
+    j.add("tension_top", last[kTensionTop])
         .add("tension_max", last[kTensionMax])
         .add("max_constraint_error", run->maxConstraintError())
         .add("energy_drift", last[kDrift])

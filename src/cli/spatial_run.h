@@ -12,8 +12,9 @@
 namespace riser_sim {
 namespace cli {
 
-// t, x/y/z of the top and the end, the forces on the hang-off and on the anchor, then as the planar row.
-std::string spatialCsvHeader(const std::vector<int>& probe_rfes = {});
+// t, x/y/z of the top and the end, the forces and the moments on the hang-off and on the anchor, then as
+// the planar row; x/y/z_bottom (the anchor) when the bottom moves; then the probes.
+std::string spatialCsvHeader(const std::vector<int>& probe_rfes = {}, bool bottom_moves = false);
 // The row's values, in spatialCsvHeader()'s order; probes: x/y/z_rfeK (spring point) and tension_rfeK.
 std::vector<double> spatialSample(spatial::SpatialRun& run, const std::vector<int>& probe_rfes);
 

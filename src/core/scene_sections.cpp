@@ -155,43 +155,85 @@ void parseKnots(const Section& motion, TopMotionSpec& top, bool planar) {
   }
 }
 
-void parseTop(const Section& root, Scene& s) {
-  const bool planar = s.space == SpaceKind::kPlanar;
-  const Section top = root.section("top", {"position", "motion"});
-  s.top = TopMotionSpec();
-  s.top.position3 = top.vec3("position", planar, Eigen::Vector3d::Zero());
-  s.top.position = planarOf(s.top.position3);
-  const Section motion = top.section("motion", {"type", "amplitude", "period", "phase", "knots"});
-  s.top.type = motion.choice("type", MotionKind::kFixed);
+// top.motion or bottom.motion (the same keys): spec.position3 is set by the caller.
+void parseMotion(const Section& motion, TopMotionSpec& spec, bool planar) {
+  spec.type = motion.choice("type", MotionKind::kFixed);
   // Keys of the other motion types are type-checked but ignored (so --set top.motion.type=... just works).
-  const bool sinusoid = s.top.type == MotionKind::kSinusoid;
-  s.top.amplitude3 = sinusoid ? motion.vec3("amplitude", planar) : motion.vec3("amplitude", planar, Eigen::Vector3d::Zero());
-  s.top.amplitude = planarOf(s.top.amplitude3);
-  s.top.period = sinusoid ? motion.number("period") : motion.number("period", 1.0);
-  requirePositive(motion.key("period"), s.top.period);
+  const bool sinusoid = spec.type == MotionKind::kSinusoid;
+  spec.amplitude3 = sinusoid ? motion.vec3("amplitude", planar) : motion.vec3("amplitude", planar, Eigen::Vector3d::Zero());
+  spec.amplitude = planarOf(spec.amplitude3);
+  spec.period = sinusoid ? motion.number("period") : motion.number("period", 1.0);
+  requirePositive(motion.key("period"), spec.period);
   if (motion.has("phase") && motion.at("phase").IsSequence()) {  // per axis: 3D only
     const std::string key = motion.key("phase");
     const YAML::Node ph = motion.at("phase");
     if (planar)
       throw SceneError(key, "a phase per axis [px, py, pz] needs space: spatial (a planar sinusoid has one phase)");
     if (ph.size() != 3) throw SceneError(key, "expected a number or [px, py, pz], got " + describe(ph));
-    for (int k = 0; k < 3; ++k) s.top.phase3[k] = toNumber(ph[k], key + "[" + std::to_string(k) + "]");
-    s.top.phase = s.top.phase3.x();
+    for (int k = 0; k < 3; ++k) spec.phase3[k] = toNumber(ph[k], key + "[" + std::to_string(k) + "]");
+    spec.phase = spec.phase3.x();
   } else {
-    s.top.phase = motion.number("phase", 0.0);
-    s.top.phase3.setConstant(s.top.phase);
+    spec.phase = motion.number("phase", 0.0);
+    spec.phase3.setConstant(spec.phase);
   }
-  if (s.top.type == MotionKind::kVelocityProfile || motion.has("knots")) parseKnots(motion, s.top, planar);
+  if (spec.type == MotionKind::kVelocityProfile || motion.has("knots")) parseKnots(motion, spec, planar);
+}
+
+// top.flex_joint / bottom.flex_joint: 3D only.
+FlexJointSpec parseFlexJoint(const Section& end, bool planar) {
+  FlexJointSpec j;
+  if (!end.has("flex_joint")) return j;
+  const Section fj = end.section("flex_joint", {"stiffness", "damping", "axis"});
+  if (planar)
+    throw SceneError(end.key("flex_joint"), "needs space: spatial (the planar core has pinned ends only)");
+  j.enabled = true;
+  j.stiffness = fj.number("stiffness");
+  requirePositive(fj.key("stiffness"), j.stiffness);
+  j.damping = fj.number("damping", 0.0);
+  requireNonNegative(fj.key("damping"), j.damping);
+  j.has_axis = fj.has("axis");
+  if (j.has_axis) {
+    const YAML::Node a = fj.at("axis");
+    if (!a.IsSequence() || a.size() != 3) throw SceneError(fj.key("axis"), "expected [x, y, z], got " + describe(a));
+    for (int k = 0; k < 3; ++k) j.axis[k] = toNumber(a[k], fj.key("axis") + "[" + std::to_string(k) + "]");
+    if (!(j.axis.norm() > 0.0)) throw SceneError(fj.key("axis"), "must be a non-zero vector");
+    j.axis.normalize();
+  }
+  return j;
+}
+
+void parseTop(const Section& root, Scene& s) {
+  const bool planar = s.space == SpaceKind::kPlanar;
+  const Section top = root.section("top", {"position", "motion", "flex_joint"});
+  s.top = TopMotionSpec();
+  s.top.position3 = top.vec3("position", planar, Eigen::Vector3d::Zero());
+  s.top.position = planarOf(s.top.position3);
+  parseMotion(top.section("motion", {"type", "amplitude", "period", "phase", "knots"}), s.top, planar);
+  s.top_flex_joint = parseFlexJoint(top, planar);
 }
 
 void parseBottom(const Section& root, Scene& s) {
-  const Section bottom = root.section("bottom", {"type", "position"});
+  const Section bottom = root.section("bottom", {"type", "position", "motion", "flex_joint"});
   const std::string type = bottom.choice("type", "free", {"free", "pinned"});
   s.bottom = type == "pinned" ? BottomBoundary::kPinned : BottomBoundary::kFree;
   const bool planar = s.space == SpaceKind::kPlanar;
   s.bottom_point3 = s.bottom == BottomBoundary::kPinned ? bottom.vec3("position", planar)
                                                          : bottom.vec3("position", planar, Eigen::Vector3d::Zero());
   s.bottom_point = planarOf(s.bottom_point3);
+  s.bottom_motion = TopMotionSpec();
+  s.bottom_motion.position3 = s.bottom_point3;
+  s.bottom_motion.position = s.bottom_point;
+  const bool pinned = s.bottom == BottomBoundary::kPinned;
+  for (const char* k : {"motion", "flex_joint"})
+    if (bottom.has(k) && !pinned)
+      throw SceneError(bottom.key(k), "needs bottom.type: pinned (a free bottom has no joint to move or stiffen)");
+  if (bottom.has("motion")) {
+    const Section motion = bottom.section("motion", {"type", "amplitude", "period", "phase", "knots"});
+    parseMotion(motion, s.bottom_motion, planar);
+    if (planar && s.bottom_motion.type != MotionKind::kFixed)
+      throw SceneError(motion.key("type"), "needs space: spatial (the planar core pins the bottom at a fixed point)");
+  }
+  s.bottom_flex_joint = parseFlexJoint(bottom, planar);
 }
 
 void parseInitial(const Section& root, Scene& s) {
@@ -371,9 +413,20 @@ void checkCombination(const Scene& s) {
     throw SceneError("line.inner_diameter", "is needed (> 0) for internal_fluid");
   if (s.initial.type == InitialKind::kBetweenPoints && !pinned)
     throw SceneError("initial.type", "'between_points' needs bottom.type: pinned (bottom.position is the end point)");
-  if (pinned && s.initial.type != InitialKind::kBetweenPoints)
+  // 3D: a straight start may be pinned where it ends (a taut line; checked against bottom.position at t = 0).
+  const bool straight3 = s.space == SpaceKind::kSpatial && s.initial.type == InitialKind::kStraight;
+  if (pinned && s.initial.type != InitialKind::kBetweenPoints && !straight3)
     throw SceneError("bottom.type", "'pinned' needs initial.type: between_points (the initial state must end at "
                                     "bottom.position), got initial.type '" + std::string(name(s.initial.type)) + "'");
+  if (pinned && straight3) {
+    const double c = std::cos(s.initial.angle), h = s.initial.heading;
+    const Eigen::Vector3d end = spatial::buildTopMotion3(s.top)->at(0.0).p +
+                                s.length * Eigen::Vector3d(c * std::cos(h), c * std::sin(h), std::sin(s.initial.angle));
+    const double gap = (end - spatial::buildTopMotion3(s.bottom_motion)->at(0.0).p).norm();
+    if (!(gap <= 1e-9 * s.length))
+      throw SceneError("bottom.position", "is " + formatNumber(gap) + " m from the end of the straight initial line "
+                                          "(initial.type straight with a pinned bottom: the line must end there at t = 0)");
+  }
   if (s.initial.type == InitialKind::kDisplaced && s.initial.end_offset.y() != 0.0 &&
       !(s.initial.end_offset.norm() < s.length))
     throw SceneError("initial.end_offset", "must be shorter than line.length (" + formatNumber(s.length) + " m), got " +
@@ -386,7 +439,8 @@ void checkCombination(const Scene& s) {
   }
   if (pinned && !s.options.axial_flexibility) {
     const double span = s.space == SpaceKind::kSpatial
-                            ? (s.bottom_point3 - spatial::buildTopMotion3(s.top)->at(0.0).p).norm()
+                            ? (spatial::buildTopMotion3(s.bottom_motion)->at(0.0).p -
+                               spatial::buildTopMotion3(s.top)->at(0.0).p).norm()
                             : (s.bottom_point - buildTopMotion(s.top)->at(0.0).p).norm();
     if (span > s.length)
       throw SceneError("bottom.position", "is " + formatNumber(span) + " m from the top at t = 0 but the line is " +

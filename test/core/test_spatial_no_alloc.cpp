@@ -3,6 +3,8 @@
 // constraint error, one evaluation for the reactions). Global operator new is replaced by a counting one.
 #include <gtest/gtest.h>
 
+#include "riser_sim/spatial/forces/flex_joint.h"
+#include "riser_sim/spatial/run_builder.h"
 #include "spatial_test_util.h"
 #include "alloc_counter.h"
 
@@ -14,12 +16,19 @@ using namespace spatial;
 constexpr double kStep = 1e-3;  // [s] rk4-stable at n = 10 (axial ω ≤ 900 rad/s: ω h ≤ 0.9)
 constexpr int kWarmup = 3, kCounted = 30;
 
-long countAllocations(IntegratorKind kind, bool pinned) {
+// moving: the bottom pinned to a sinusoid, flex joints at both ends.
+long countAllocations(IntegratorKind kind, bool pinned, bool moving = false) {
   const spatial_test::LineSpec s = spatial_test::flexibleLine();
   auto m = spatial_test::spatialModel(s, Vec3(0.3, 0.2, -s.g));
   std::vector<Vec3> dirs(m->bodies(), Vec3(0.3, 0.2, -1.0));
   const Kinematics3 kin0 = rigidChain(m->line(), Vec3::Zero(), dirs, Vec3::Zero(), Vec3::Zero());
   if (pinned) m->setBottom(BottomBoundary::kPinned, kin0.back().end());
+  if (moving) {
+    const Vec3 amp(0.3, 0.2, 0.1);
+    m->setBottomMotion(std::make_shared<SinusoidMotion3>(kin0.back().end() - amp, amp, 2.0, Vec3::Zero()));
+    m->addTerm(std::make_unique<FlexJoint>(FlexJoint::End::kTop, Vec3(0, 0, -1), 1e3, 10.0));
+    m->addTerm(std::make_unique<FlexJoint>(FlexJoint::End::kBottom, Vec3(0, 0, 1), 1e3, 10.0));
+  }
   IntegratorOptions options;
   options.jacobian = JacobianKind::kDense;  // the structured solves: test_spatial_shifted_no_alloc.cpp
   options.tolerance = 1e-8;
@@ -44,6 +53,8 @@ TEST(SpatialNoAlloc, Rk4Free) { EXPECT_EQ(countAllocations(IntegratorKind::kRk4,
 TEST(SpatialNoAlloc, Rk4Pinned) { EXPECT_EQ(countAllocations(IntegratorKind::kRk4, true), 0); }
 TEST(SpatialNoAlloc, Dopri5Pinned) { EXPECT_EQ(countAllocations(IntegratorKind::kDopri5, true), 0); }
 TEST(SpatialNoAlloc, GeneralizedAlphaDense) { EXPECT_EQ(countAllocations(IntegratorKind::kGeneralizedAlpha, false), 0); }
+
+TEST(SpatialNoAlloc, Rk4MovingBottomFlexJoints) { EXPECT_EQ(countAllocations(IntegratorKind::kRk4, true, true), 0); }
 
 // The counter counts (the test above could not pass by a dead counter).
 TEST(SpatialNoAlloc, CounterCounts) {

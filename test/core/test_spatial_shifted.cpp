@@ -9,6 +9,8 @@
 #include <random>
 
 #include "riser_sim/simulator.h"
+#include "riser_sim/spatial/forces/flex_joint.h"
+#include "riser_sim/spatial/run_builder.h"
 #include "spatial_test_util.h"
 
 namespace riser_sim {
@@ -20,6 +22,7 @@ struct LineCase {
   const char* name;
   bool pinned, flexible;
   bool bending_damping = true;
+  bool ends = false;  // flex joints at the top (and at a pinned bottom), the pinned bottom moving
 };
 
 spatial_test::LineSpec spec(bool flexible, int segments = 10, bool bending_damping = true) {
@@ -63,7 +66,8 @@ IntegratorOptions withJacobian(JacobianKind j) {
 constexpr double kFd = 1e-6;
 // For the shipped terms the structured K, C and constraint rows are the exact Jacobian, so the two solves
 // agree to the finite differences' accuracy at every c, not only as c -> 0 (measured: 1e-11..3e-9 relative,
-// worst 2.6e-7 on a moving pinned inextensible line at c = 1e-2). A left-out term shows at 1e-4..1e-2
+// worst 2.6e-7 on a moving pinned inextensible line at c = 1e-2; flex joints at both ends with the bottom
+// moving: up to 1.3e-7; without the flex joint's 2φ g bᵀ term: 2e-3..5e-2). A left-out term shows at 1e-4..1e-2
 // (the bending damping's dependence on e: 9e-5..8e-4; the bending Hessian at θ = 0 for all θ: 1e-3..2e-2).
 constexpr double kSolveAgree = 1e-6;
 
@@ -95,6 +99,14 @@ std::vector<SolveGap> solveGaps(const LineCase& lc, unsigned seed, bool at_rest)
   for (Vec3& d : dirs) d = Vec3(0.3 * N(rng), 0.3 * N(rng), -1.0);
   Kinematics3 kin = rigidChain(m->line(), Vec3::Zero(), dirs, Vec3::Zero(), at_rest ? Vec3::Zero() : Vec3(N(rng), N(rng), N(rng)));
   if (lc.pinned) m->setBottom(BottomBoundary::kPinned, kin.back().end() + Vec3(0.01, -0.02, 0.01));  // off by a gap
+  if (lc.ends) {  // axes off the line's: both joints loaded
+    m->addTerm(std::make_unique<FlexJoint>(FlexJoint::End::kTop, Vec3(0.3, -0.2, -1.0), 3e3, 50.0));
+    if (lc.pinned) {
+      m->addTerm(std::make_unique<FlexJoint>(FlexJoint::End::kBottom, Vec3(-0.2, 0.4, 1.0), 2e3, 30.0));
+      const Vec3 amp(0.3, -0.2, 0.1), p0 = m->bottomPoint();
+      m->setBottomMotion(std::make_shared<SinusoidMotion3>(p0 - amp, amp, 2.0, Vec3(0.0, 0.5, 1.0)));
+    }
+  }
   if (!at_rest)
     for (BodyKinematics3& b : kin) {
       b.A_dot += 0.1 * Vec3(N(rng), N(rng), N(rng));  // joints not closed in velocity
@@ -124,7 +136,9 @@ std::vector<SolveGap> solveGaps(const LineCase& lc, unsigned seed, bool at_rest)
 TEST(SpatialShifted, SolveAgainstDenseFiniteDifferenceJacobian) {
   const LineCase cases[] = {{"free flexible", false, true}, {"pinned flexible", true, true},
                             {"pinned flexible, no bending damping", true, true, false},
-                            {"free inextensible", false, false}, {"pinned inextensible", true, false}};
+                            {"free inextensible", false, false}, {"pinned inextensible", true, false},
+                            {"free flexible, top flex joint", false, true, true, true},
+                            {"pinned flexible, flex joints, moving bottom", true, true, true, true}};
   for (const LineCase& lc : cases)
     for (bool at_rest : {true, false})
       for (unsigned seed : {1u, 2u}) {

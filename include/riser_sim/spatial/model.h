@@ -7,6 +7,7 @@
 
 #include "riser_sim/model.h"
 #include "riser_sim/spatial/kinematics.h"
+#include "riser_sim/spatial/top_motion.h"
 #include "riser_sim/spatial/torsion.h"
 
 namespace riser_sim {
@@ -32,10 +33,18 @@ class SpatialModel {
   double bendingStiffness() const { return line_.bendingStiffness(); }  // c = EI/d [N m/rad]
   double bendingDamping() const { return line_.bendingDamping(); }      // c_d [N m s/rad]
 
-  // Bottom end: free, or the end of rfe n pinned at a fixed point [m].
+  // Bottom end: free, or the end of rfe n pinned at a point [m]: fixed (setBottom), or moving along a
+  // prescribed path (setBottomMotion: A_{n+1} = p_b(t), held as the top's A_0 = p(t)).
   BottomBoundary bottom() const { return bottom_; }
-  const Vec3& bottomPoint() const { return bottom_point_; }
-  void setBottom(BottomBoundary b, const Vec3& p) { bottom_ = b; bottom_point_ = p; }
+  const Vec3& bottomPoint() const { return bottom_point_; }  // at t = 0 when it moves
+  void setBottom(BottomBoundary b, const Vec3& p) { bottom_ = b; bottom_point_ = p; bottom_motion_.reset(); }
+  // Pins the bottom to motion (its position at t = 0 becomes bottomPoint()).
+  void setBottomMotion(std::shared_ptr<const TopMotion3> motion);
+  bool bottomMoves() const { return bottom_motion_ != nullptr; }
+  // Position, velocity, acceleration of the pinned bottom at t [s] (fixed: velocity 0). Allocates nothing.
+  PointMotion3 bottomAt(double t) const {
+    return bottom_motion_ ? bottom_motion_->at(t) : PointMotion3{bottom_point_, Vec3::Zero(), Vec3::Zero()};
+  }
 
   // Torsion (torsion.h): off unless set; on adds a spin angle and rate per rfe to the state.
   // Throws std::invalid_argument unless GJ > 0, ρ I_p > 0, damping >= 0, end polar inertia >= 0.
@@ -51,6 +60,7 @@ class SpatialModel {
   Vec3 gravity_;
   BottomBoundary bottom_ = BottomBoundary::kFree;
   Vec3 bottom_point_ = Vec3::Zero();
+  std::shared_ptr<const TopMotion3> bottom_motion_;
   std::vector<std::unique_ptr<SpatialForceTerm>> terms_;
   TorsionProperties torsion_;
   bool has_torsion_ = false;

@@ -4,7 +4,7 @@
 // a point-mass system plus a director inertia, so M_i u'' + h_i = Q_i + constraint forces with the 7x7
 // M_i (m I, m_k e, S I; m_k, S_k eᵀ; I_A I) and h_i = 2Δ' [m_k e'; m_k e·e'; S_k e'].
 // Constraints: per rfe ½(e·e - 1) = 0, eliminated inside the rfe (one scalar Schur step); joints
-// E_{k-1} - A_k = 0, the top A_0 = p(t), a pinned end E_n = p_b, with joint reactions λ_k ∈ R³ from a
+// E_{k-1} - A_k = 0, the top A_0 = p(t), a pinned end E_n = p_b(t) (fixed or moving), with joint reactions λ_k ∈ R³ from a
 // block-tridiagonal (3x3 blocks) system solved by block Thomas: O(n) per evaluation. Every constraint
 // is Baumgarte-stabilised, c'' + 2ω c' + ω² c = 0. Evaluations allocate nothing (NaturalData).
 #pragma once
@@ -23,7 +23,7 @@ using Mat73 = Eigen::Matrix<double, 7, 3>;
 
 struct Reactions3 {
   Vec3 top = Vec3::Zero();     // force the line exerts on the hang-off point A_0 [N]
-  Vec3 bottom = Vec3::Zero();  // force the line exerts on the bottom anchor (pinned) [N]
+  Vec3 bottom = Vec3::Zero();  // force the line exerts on the bottom anchor (pinned, fixed or moving) [N]
   // Torsion on: the moment the line exerts on the hang-off [N m], top_twist_moment = τ (h + e_0)/(1 + h·e_0)
   // (h: the hang-off's axis; the holding moment of the homokinetic top), top_twist = τ its part along h.
   double top_twist = 0.0;
@@ -37,6 +37,7 @@ class NaturalData {
   explicit NaturalData(const SpatialModel& model);
   double t = 0.0;
   PointMotion3 top;
+  PointMotion3 bottom;  // the pinned bottom's anchor at t (SpatialModel::bottomAt)
   Kinematics3 kin;
   Reactions3 reactions;
   double term_power = 0.0;        // summed non-conservative power of the terms [W]
@@ -95,8 +96,8 @@ class NaturalFormulation {
   double twistEnergy(const VecX& y, NaturalData& data) const;
   // Kinetic energy [J] of state y (with the spins' ½ J_i ω_i²).
   double kineticEnergy(const VecX& y) const;
-  // Largest joint gap (top, joints, pinned end) [m], and largest | |e_i| - 1 | of state y.
-  double constraintError(const VecX& y, const PointMotion3& top) const;
+  // Largest joint gap (top, joints, pinned end at bottom.p) [m], and largest | |e_i| - 1 | of state y.
+  double constraintError(const VecX& y, const PointMotion3& top, const PointMotion3& bottom) const;
   double directorError(const VecX& y) const;
   // max_i max(| |e_i| - 1 |, |e_i·e'_i| h): the distance from the unit-length manifold over a step h [s].
   double manifoldError(const VecX& y, double h) const;

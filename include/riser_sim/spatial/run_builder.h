@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "riser_sim/scene.h"
+#include "riser_sim/spatial/forces/flex_joint.h"
 #include "riser_sim/spatial/simulator.h"
 
 namespace riser_sim {
@@ -55,9 +56,11 @@ class VelocityProfileMotion3 : public TopMotion3 {
   std::unique_ptr<TopMotion> xz_, y_;
 };
 
+// top.motion (or bottom.motion, the same keys) in 3D; external is held at spec.position3 (the CLI has no feed).
 std::unique_ptr<TopMotion3> buildTopMotion3(const TopMotionSpec& spec);
 // The scene's line in 3D: gravity (0, 0, -g), axial and bending terms as the scene lists them, the end
-// mass, the bottom free or pinned at bottom.position.
+// mass, the bottom free or pinned at bottom.position (held fixed: SpatialRun adds the bottom's motion and
+// the flex joints, whose default axes come from the initial state).
 std::shared_ptr<SpatialModel> buildSpatialModel(const Scene& scene);
 
 struct InitialState3 {
@@ -80,6 +83,15 @@ double restAcceleration(const Scene& scene, const Kinematics3& kin, const Vec3& 
 // fail, the problem is not planar, or the rotated state is not an equilibrium of the 3D model.
 InitialState3 solveInitialState3(const Scene& scene, const Vec3& top);
 
+// The scene's flex joints (top.flex_joint, bottom.flex_joint) added to model, their axes given or along the
+// line in `initial` (then unloaded); `loaded` names those that start turned ("top.flex_joint turned 0.1 rad").
+struct FlexJoints3 {
+  const FlexJoint* top = nullptr;
+  const FlexJoint* bottom = nullptr;
+  std::string loaded;
+};
+FlexJoints3 addFlexJoints(const Scene& scene, const Kinematics3& initial, SpatialModel& model);
+
 // Every output of the current state.
 struct LineOutputs3 {
   double t = 0.0;
@@ -88,6 +100,10 @@ struct LineOutputs3 {
   std::vector<double> axial_force;  // per rfe [N]
   Vec3 top_force = Vec3::Zero();     // force the line exerts on the hang-off [N]
   Vec3 bottom_force = Vec3::Zero();  // on the anchor (pinned; 0 when free) [N]
+  // Moment the line exerts on the hang-off / the anchor through a flex joint [N m] (0 when pinned or free:
+  // the force acts at the joint's point).
+  Vec3 top_moment = Vec3::Zero(), bottom_moment = Vec3::Zero();
+  Vec3 bottom_point = Vec3::Zero();  // the pinned bottom's anchor p_b(t) [m] (moves with bottom.motion)
   double top_tension = 0.0, max_tension = 0.0;  // [N]
   double kinetic_energy = 0.0, potential_energy = 0.0, work_in = 0.0;  // [J]
   double constraint_error = 0.0;  // [m]
@@ -110,19 +126,30 @@ class SpatialRun {
   double energyDrift();
   double energyScale() const { return energy_scale_; }  // m g L [J]
   double maxConstraintError() const { return max_constraint_error_; }
+  // Largest |moment| of the top / bottom flex joint over every step so far, t = 0 included [N m] (0 without).
+  double maxTopMoment() const { return max_moment_[0]; }
+  double maxBottomMoment() const { return max_moment_[1]; }
   const LineOutputs3& outputs();
 
   const SpatialModel& model() const { return *model_; }
   const InitialState3& initial() const { return initial_; }
+  bool bottomMoves() const { return model_->bottomMoves(); }
+  const FlexJoint* topFlexJoint() const { return top_joint_; }      // nullptr: pinned (free rotation)
+  const FlexJoint* bottomFlexJoint() const { return bottom_joint_; }
   SpatialSimulator& simulator() { return *sim_; }
 
  private:
+  void trackMoments();
   std::shared_ptr<SpatialModel> model_;
   InitialState3 initial_;
+  const FlexJoint* top_joint_ = nullptr;
+  const FlexJoint* bottom_joint_ = nullptr;
   std::unique_ptr<SpatialSimulator> sim_;
   double dt_, max_gap_, e0_ = 0.0, energy_scale_ = 1.0, max_constraint_error_ = 0.0;
   long steps_ = 0;
   std::string reason_;
+  double max_moment_[2] = {0.0, 0.0};
+  Kinematics3 ends_;  // the end rfes' kinematics for trackMoments()
   LineOutputs3 out_;
 };
 

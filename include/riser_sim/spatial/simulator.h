@@ -1,5 +1,5 @@
 // Runs the spatial line with the existing integrators (integrator.h's OdeSystem, state y = [q; v; W],
-// W [J] the work of the top motion and the non-conservative terms integrated alongside). After every
+// W [J] the work of the top motion, of a moving bottom and of the non-conservative terms integrated alongside). After every
 // integrator step the state is projected back onto |e_i| = 1, e_i·e'_i = 0 (NaturalFormulation::
 // project); within a step the Baumgarte terms hold the drift. The joint gaps are not projected (the
 // planar absolute formulation does not either).
@@ -49,7 +49,10 @@ class SpatialSimulator : private OdeSystem {
   double potentialEnergy();
   double energy() { return kineticEnergy() + potentialEnergy(); }  // T + V [J]
   double work() const { return y_[y_.size() - 1]; }                 // W [J]
-  double constraintError() const { return formulation_.constraintError(y_, top_->at(t_)); }  // [m]
+  double constraintError() const {  // [m]
+    return formulation_.constraintError(y_, top_->at(t_), model_->bottomAt(t_));
+  }
+  PointMotion3 topAt(double t) const { return top_->at(t); }
   double directorError() const { return formulation_.directorError(y_); }
   // One evaluation at the current state: its data (reactions.top, reactions.bottom, joint forces).
   const NaturalData& evaluate();

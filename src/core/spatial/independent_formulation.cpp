@@ -70,7 +70,10 @@ IndependentData3::IndependentData3(const SpatialModel& model, int k) : kin(model
 
 IndependentFormulation3::IndependentFormulation3(const SpatialModel& model, double stabilization)
     : model_(model), omega_(stabilization), k_(model.options().axial_flexibility ? 3 : 2),
-      ku_(model.options().axial_flexibility ? 1 : 0) {}
+      ku_(model.options().axial_flexibility ? 1 : 0) {
+  if (model.bottomMoves())
+    throw std::invalid_argument("spatial independent formulation: a fixed or free bottom only (not a moving one)");
+}
 
 double IndependentFormulation3::constraintError(const Kinematics3& kin) const {
   return model_.bottom() == BottomBoundary::kPinned ? (kin.back().end() - model_.bottomPoint()).norm() : 0.0;

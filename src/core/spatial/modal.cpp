@@ -2,6 +2,7 @@
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/LU>
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -119,6 +120,30 @@ SpatialModalResult computeSpatialModes(const SpatialModel& model, const Kinemati
     for (int c = 0; c < line.size(); ++c)
       if (line.isDelta(c)) mode.axial_fraction += mode.theta[c] * Mt[c];
     mode.axial = mode.axial_fraction > 0.5;
+    const double h = options.fd_step / std::max(mode.theta.cwiseAbs().maxCoeff(), 1e-300);
+    const Kinematics3 kp = line.kinematics(theta0 + h * mode.theta, model);
+    const Kinematics3 km = line.kinematics(theta0 - h * mode.theta, model);
+    const int nb = model.bodies();
+    mode.displacement.assign(nb + 1, Vec3::Zero());
+    double along = 0.0, normal = 0.0;
+    for (int i = 0; i <= nb; ++i) {
+      const Vec3 p = i < nb ? kp[i].A : kp[nb - 1].end(), q = i < nb ? km[i].A : km[nb - 1].end();
+      mode.displacement[i] = (p - q) / (2.0 * h);
+      if (i == nb) break;
+      // Parts: δx = δA + κ δΔ e + (s0 + κ Δ) δe, split along e and across it (+ the parts' J |δe|²).
+      const BodyKinematics3& b = res.equilibrium[i];
+      const Vec3 de = (kp[i].e - km[i].e) / (2.0 * h);
+      const double dd = (kp[i].delta - km[i].delta) / (2.0 * h);
+      const Rfe& r = model.rfe(i);
+      for (int k = 0; k < r.num_parts; ++k) {
+        const RigidPart& part = r.part[k];
+        const Vec3 dx = mode.displacement[i] + part.kappa * dd * b.e + (part.s0 + part.kappa * b.delta) * de;
+        const double a = b.e.dot(dx);
+        along += part.mass * a * a;
+        normal += part.mass * (dx - a * b.e).squaredNorm() + part.inertia * de.squaredNorm();
+      }
+    }
+    mode.along_fraction = along + normal > 0.0 ? along / (along + normal) : 0.0;
     res.modes.push_back(std::move(mode));
   }
   res.stiffness = std::move(K);

@@ -22,6 +22,12 @@ void SpatialModel::setTorsion(const TorsionProperties& t) {
   has_torsion_ = true;
 }
 
+void SpatialModel::setBottomMotion(std::shared_ptr<const TopMotion3> motion) {
+  bottom_ = BottomBoundary::kPinned;
+  bottom_point_ = motion->at(0.0).p;
+  bottom_motion_ = std::move(motion);
+}
+
 void SpatialModel::addTerm(std::unique_ptr<SpatialForceTerm> term) { terms_.push_back(std::move(term)); }
 
 }  // namespace spatial

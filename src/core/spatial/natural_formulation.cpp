@@ -171,6 +171,7 @@ void NaturalFormulation::derivative(double t, const VecX& y, const PointMotion3&
   const int nc = nb + (pinned ? 1 : 0);
   d.t = t;
   d.top = top;
+  if (pinned) d.bottom = model_.bottomAt(t);
   kinematics(y, d.kin);
   d.Q.setZero();
   d.term_power = 0.0;
@@ -207,11 +208,13 @@ void NaturalFormulation::derivative(double t, const VecX& y, const PointMotion3&
       r = -top.a;
     } else {
       const BodyKinematics3& bp = d.kin[k - 1];
-      const Vec3 Ak = k < nb ? d.kin[k].A : model_.bottomPoint();
-      const Vec3 Akd = k < nb ? d.kin[k].A_dot : Vec3::Zero();
+      // A_{n+1}: the pinned bottom's anchor p_b(t), its acceleration prescribed as the top's.
+      const Vec3 Ak = k < nb ? d.kin[k].A : d.bottom.p;
+      const Vec3 Akd = k < nb ? d.kin[k].A_dot : d.bottom.v;
       c = bp.end() - Ak;
       cd = bp.endVelocity() - Akd;
       r = -d.body[k - 1].aE;
+      if (k == nb) r += d.bottom.a;
       dk += d.body[k - 1].EE;
       d.low[k] = -d.body[k - 1].AE.transpose();
     }
@@ -312,11 +315,11 @@ double NaturalFormulation::kineticEnergy(const VecX& y) const {
   return T;
 }
 
-double NaturalFormulation::constraintError(const VecX& y, const PointMotion3& top) const {
+double NaturalFormulation::constraintError(const VecX& y, const PointMotion3& top, const PointMotion3& bottom) const {
   const int nb = model_.bodies();
   double err = (top.p - body(y, 0).A).norm();
   for (int k = 1; k < nb; ++k) err = std::max(err, (body(y, k - 1).end() - body(y, k).A).norm());
-  if (model_.bottom() == BottomBoundary::kPinned) err = std::max(err, (body(y, nb - 1).end() - model_.bottomPoint()).norm());
+  if (model_.bottom() == BottomBoundary::kPinned) err = std::max(err, (body(y, nb - 1).end() - bottom.p).norm());
   return err;
 }
 

@@ -236,10 +236,34 @@ SpatialRun::SpatialRun(const Scene& scene)
   if (const auto issue = unsupported(scene)) throw std::invalid_argument(issue->key + ": " + issue->message);
   model_ = buildSpatialModel(scene);
   std::unique_ptr<TopMotion3> motion = buildTopMotion3(scene.top);
-  initial_ = solveInitialState3(scene, motion->at(0.0).p);
+  // The statics end at the bottom's position at t = 0 (bottom.motion's, which may differ from bottom.position).
+  Scene at0 = scene;
+  const bool pinned = scene.bottom == BottomBoundary::kPinned;
+  if (pinned) at0.bottom_point3 = buildTopMotion3(scene.bottom_motion)->at(0.0).p;
+  initial_ = solveInitialState3(at0, motion->at(0.0).p);
   // A pinned end is held where the statics put it: within initial.tolerance x line.length of
-  // bottom.position (their end condition), so the run starts without a Baumgarte kick from that gap.
-  if (scene.bottom == BottomBoundary::kPinned) model_->setBottom(BottomBoundary::kPinned, initial_.kin.back().end());
+  // bottom.position (their end condition), so the run starts without a Baumgarte kick from that gap. A
+  // moving bottom's path is shifted by that gap for the same reason.
+  if (pinned) {
+    const Vec3 gap = initial_.kin.back().end() - at0.bottom_point3;
+    const MotionKind type = scene.bottom_motion.type;
+    if (type == MotionKind::kSinusoid || type == MotionKind::kVelocityProfile) {
+      TopMotionSpec spec = scene.bottom_motion;
+      spec.position3 += gap;
+      model_->setBottomMotion(buildTopMotion3(spec));
+    } else {
+      model_->setBottom(BottomBoundary::kPinned, initial_.kin.back().end());
+    }
+  }
+  // A loaded joint at t = 0 makes the start no equilibrium (the statics pin the ends): said in initial().about.
+  const FlexJoints3 joints = addFlexJoints(scene, initial_.kin, *model_);
+  top_joint_ = joints.top;
+  bottom_joint_ = joints.bottom;
+  if (!joints.loaded.empty()) {
+    initial_.equilibrium = false;
+    initial_.about += "; not an equilibrium with the flex joints, which start loaded (" + joints.loaded +
+                      " from their axis; the statics pin the ends)";
+  }
   // The statics' end force stays on as a constant end load (hold), so the start is an exact equilibrium.
   if (scene.initial.type == InitialKind::kDisplaced && scene.initial.end_force == EndForceKind::kHold)
     model_->addTerm(std::make_unique<EndLoad3>(initial_.end_force));
@@ -259,9 +283,40 @@ SpatialRun::SpatialRun(const Scene& scene)
   energy_scale_ = std::max(model_->line().totalMass() * scene.gravity * scene.length, 1e-12);
   e0_ = sim_->energy();
   max_constraint_error_ = sim_->constraintError();
+  ends_.assign(nb, BodyKinematics3());
+  trackMoments();
   if (!sim_->state().allFinite() || !std::isfinite(e0_) || !sim_->evaluate().reactions.top.allFinite())
     throw std::runtime_error("initial: the initial state or its forces are not finite (NaN/Inf): the scene's values "
                              "combine beyond double range");
+}
+
+void SpatialRun::trackMoments() {
+  const int nb = model_->bodies();
+  const VecX& y = sim_->state();
+  if (top_joint_) {
+    ends_[0] = sim_->formulation().body(y, 0);
+    max_moment_[0] = std::max(max_moment_[0], top_joint_->moment(*model_, ends_).norm());
+  }
+  if (bottom_joint_) {
+    ends_[nb - 1] = sim_->formulation().body(y, nb - 1);
+    max_moment_[1] = std::max(max_moment_[1], bottom_joint_->moment(*model_, ends_).norm());
+  }
+}
+
+FlexJoints3 addFlexJoints(const Scene& scene, const Kinematics3& initial, SpatialModel& model) {
+  FlexJoints3 out;
+  const auto add = [&](const FlexJointSpec& spec, FlexJoint::End end, const Vec3& along, const char* key) {
+    if (!spec.enabled) return static_cast<const FlexJoint*>(nullptr);
+    const Vec3 axis = spec.has_axis ? Vec3(spec.axis) : along;
+    model.addTerm(std::make_unique<FlexJoint>(end, axis, spec.stiffness, spec.damping));
+    const auto* joint = static_cast<const FlexJoint*>(model.terms().back().get());
+    const double theta = joint->angle(model, initial);
+    if (theta > 1e-9) out.loaded += std::string(out.loaded.empty() ? "" : ", ") + key + " turned " + fmt(theta) + " rad";
+    return joint;
+  };
+  out.top = add(scene.top_flex_joint, FlexJoint::End::kTop, initial.front().e, "top.flex_joint");
+  out.bottom = add(scene.bottom_flex_joint, FlexJoint::End::kBottom, -initial.back().e, "bottom.flex_joint");
+  return out;
 }
 
 bool SpatialRun::step() {
@@ -282,7 +337,10 @@ bool SpatialRun::step() {
       if (!(turn <= kMaxTurnPerStep && stretch <= kMaxStretchPerStep)) fast = i;
     }
   }
-  if (stepped && finite && err <= max_gap_ && fast < 0) return true;
+  if (stepped && finite && err <= max_gap_ && fast < 0) {
+    trackMoments();
+    return true;
+  }
   std::ostringstream why;
   const std::string& failure = sim_->integrator().failure();
   if (finite && !failure.empty())
@@ -323,6 +381,9 @@ const LineOutputs3& SpatialRun::outputs() {
   out_.points[nb] = d.kin[nb - 1].end();
   out_.top_force = d.reactions.top;
   out_.bottom_force = d.reactions.bottom;
+  out_.top_moment = top_joint_ ? top_joint_->moment(*model_, d.kin) : Vec3::Zero();
+  out_.bottom_moment = bottom_joint_ ? bottom_joint_->moment(*model_, d.kin) : Vec3::Zero();
+  out_.bottom_point = model_->bottom() == BottomBoundary::kPinned ? d.bottom.p : Vec3::Zero();
   out_.top_tension = d.reactions.top.norm();
   out_.max_tension = tmax;
   out_.kinetic_energy = sim_->kineticEnergy();

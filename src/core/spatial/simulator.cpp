@@ -40,8 +40,11 @@ void SpatialSimulator::setTwist(const VecX& theta, const VecX& omega) {
 void SpatialSimulator::rhs(double t, const VecX& y, VecX& dy) {
   const PointMotion3 top = top_->at(t);
   formulation_.derivative(t, y, top, dy, *data_);
-  // dW/dt: power of the top motion (force on rfe 0 at A_0 is -λ_0) and of the non-conservative terms.
-  dy[dy.size() - 1] = -data_->reactions.top.dot(top.v) + data_->term_power;
+  // dW/dt: power of the top motion (force on rfe 0 at A_0 is -λ_0), of a moving bottom (force on rfe n at
+  // E_n is λ_{n+1} = -reactions.bottom; 0 when fixed or free) and of the non-conservative terms.
+  double p_bottom = 0.0;
+  if (model_->bottomMoves()) p_bottom = -data_->reactions.bottom.dot(data_->bottom.v);
+  dy[dy.size() - 1] = -data_->reactions.top.dot(top.v) + p_bottom + data_->term_power;
 }
 
 void SpatialSimulator::linearize(double t, const VecX& y) {

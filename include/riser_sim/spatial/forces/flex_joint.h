@@ -19,6 +19,8 @@ class FlexJoint : public SpatialForceTerm {
   void addForces(const SpatialModel& model, const Kinematics3& kin, double t, VecX& Q) const override;
   double potentialEnergy(const SpatialModel& model, const Kinematics3& kin) const override;
   double power(const SpatialModel& model, const Kinematics3& kin, double t) const override;
+  // The exact linearisation (spring Hessian, damper in the rate and through e) for the structured solves.
+  void addStiffness(const SpatialModel& model, const Kinematics3& kin, double t, SpatialStiffness& S) const override;
   // The moment the line exerts on the holder through the joint [N m] (world frame): spring and damper.
   Vec3 moment(const SpatialModel& model, const Kinematics3& kin) const;
   // Rotation of the joint from its unloaded axis [rad].

@@ -1,0 +1,147 @@
+#include "spatial_modes.h"
+
+#include <Eigen/Eigenvalues>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include "cli_options.h"
+#include "output_file.h"
+#include "riser_sim/spatial/forces/end_load.h"
+#include "riser_sim/spatial/modal.h"
+#include "riser_sim/spatial/run_builder.h"
+
+namespace riser_sim {
+namespace cli {
+
+namespace {
+
+using spatial::Vec3;
+
+int fail(int code, const std::string& message) {
+  std::fprintf(stderr, "riser_sim_cli: error: %s\n", message.c_str());
+  return code;
+}
+
+constexpr double kZeroOmega2 = 1e-12;  // as the planar table: ω² below this share of the largest is zero
+constexpr double kPairTolerance = 1e-6;  // relative ω² gap of a degenerate pair
+
+// Σ_p (d_p·n)² and the cross term of two modes' displacements: the out-of-plane quadratic form.
+double outOfPlane(const spatial::SpatialMode& a, const spatial::SpatialMode& b, const Vec3& n) {
+  double s = 0.0;
+  for (size_t p = 0; p < a.displacement.size(); ++p) s += a.displacement[p].dot(n) * b.displacement[p].dot(n);
+  return s;
+}
+
+double total(const spatial::SpatialMode& a) {
+  double s = 0.0;
+  for (const Vec3& v : a.displacement) s += v.squaredNorm();
+  return s;
+}
+
+// A degenerate pair's modes span a plane of shapes; any rotation of the pair is as good (M-orthonormal).
+// Rotate it so one is in the statics' plane and the other across it (eigenvectors of the out-of-plane form).
+void alignPair(spatial::SpatialMode& a, spatial::SpatialMode& b, const Vec3& n) {
+  Eigen::Matrix2d P;
+  P << outOfPlane(a, a, n), outOfPlane(a, b, n), outOfPlane(a, b, n), outOfPlane(b, b, n);
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> es(P);
+  const Eigen::Matrix2d R = es.eigenvectors();  // column 0: least out of plane
+  const VecX ta = a.theta, tb = b.theta;
+  const spatial::SpatialMode a0 = a, b0 = b;
+  a.theta = R(0, 0) * ta + R(1, 0) * tb;
+  b.theta = R(0, 1) * ta + R(1, 1) * tb;
+  for (size_t p = 0; p < a.displacement.size(); ++p) {
+    a.displacement[p] = R(0, 0) * a0.displacement[p] + R(1, 0) * b0.displacement[p];
+    b.displacement[p] = R(0, 1) * a0.displacement[p] + R(1, 1) * b0.displacement[p];
+  }
+}
+
+// As the planar table: axial when most of the kinetic energy moves along the line.
+std::string character(const spatial::SpatialMode& m, const Vec3& n) {
+  if (m.along_fraction > 0.5) return "axial";
+  const double t = total(m);
+  return t > 0.0 && outOfPlane(m, m, n) > 0.5 * t ? "out-of-plane" : "in-plane";
+}
+
+}  // namespace
+
+int runSpatialModes(const Scene& scene, int count, const std::string& csv_path, bool quiet) {
+  if (scene.bottom == BottomBoundary::kPinned)
+    return fail(kExitBadInput, "bottom.type: --modes with space: spatial needs a free bottom (the 3D modal analysis "
+                               "has no pinned end yet)");
+  std::shared_ptr<spatial::SpatialModel> model;
+  spatial::InitialState3 init;
+  spatial::SpatialModalResult r;
+  try {
+    model = spatial::buildSpatialModel(scene);
+    init = spatial::solveInitialState3(scene, spatial::buildTopMotion3(scene.top)->at(0.0).p);
+    spatial::addFlexJoints(scene, init.kin, *model);
+    // The statics' end force stays as a dead load (as the planar --modes).
+    if (init.end_force.squaredNorm() > 0.0) model->addTerm(std::make_unique<spatial::EndLoad3>(init.end_force));
+    r = spatial::computeSpatialModes(*model, spatial::spatialEquilibrium(*model, init.kin));
+  } catch (const std::invalid_argument& e) {
+    return fail(kExitBadInput, e.what());
+  } catch (const std::exception& e) {
+    return fail(kExitDiverged, std::string("--modes: ") + e.what());
+  }
+  const Vec3 n = Vec3::UnitZ().cross(init.plane_direction).normalized();  // normal of the statics' plane
+  std::vector<spatial::SpatialMode>& modes = r.modes;
+  for (size_t k = 0; k + 1 < modes.size(); ++k)
+    if (character(modes[k], n) != "axial" && character(modes[k + 1], n) != "axial" &&
+        std::abs(modes[k + 1].omega2 - modes[k].omega2) <= kPairTolerance * std::abs(modes[k + 1].omega2)) {
+      alignPair(modes[k], modes[k + 1], n);
+      ++k;
+    }
+  if (!quiet)
+    std::fprintf(stderr,
+                 "riser_sim_cli: 3D modes about the static state (%s, %s), %d coordinates; plane of in-plane modes "
+                 "along (%g, %g, 0); end load (%g, %g, %g) N kept as a dead load; undamped; equilibrium residual "
+                 "%.2e, K asymmetry %.2e\n",
+                 name(scene.initial.type), init.statics.message.c_str(), int(r.stiffness.rows()),
+                 init.plane_direction.x(), init.plane_direction.y(), init.end_force.x(), init.end_force.y(),
+                 init.end_force.z(), r.equilibrium_residual, r.asymmetry);
+  const size_t shown = std::min(modes.size(), static_cast<size_t>(count));
+  double big = 0.0;
+  for (const auto& m : modes) big = std::max(big, std::abs(m.omega2));
+  OutputFile table;
+  table.useStdout();
+  std::printf("%4s %14s %16s %14s  %-12s %11s\n", "mode", "period [s]", "frequency [Hz]", "omega [rad/s]",
+              "character", "axial share");
+  for (size_t k = 0; k < shown; ++k) {
+    const spatial::SpatialMode& m = modes[k];
+    if (std::abs(m.omega2) <= kZeroOmega2 * big || m.omega2 < 0.0) {
+      std::printf("%4zu %14s %16s %14s  %-12s %11.3f\n", k + 1, "-", "-", "-", m.omega2 < 0.0 ? "unstable" : "zero",
+                  m.along_fraction);
+      continue;
+    }
+    std::printf("%4zu %14.6g %16.6g %14.6g  %-12s %11.3f\n", k + 1, 2.0 * M_PI / m.omega, m.omega / (2.0 * M_PI),
+                m.omega, character(m, n).c_str(), m.along_fraction);
+  }
+  if (!table.close()) return fail(kExitWriteFailed, "--modes: " + table.error());
+  if (csv_path.empty()) return kExitOk;
+  OutputFile csv;
+  if (!csv.open("--modes-csv", csv_path)) return fail(kExitBadInput, csv.error());
+  std::FILE* f = csv.get();
+  // Displacements are unitless (largest point displacement of each mode = 1), as the planar CSV.
+  std::fprintf(f, "mode,period_s,frequency_hz,character,point,s,x,y,z,dx,dy,dz\n");
+  for (size_t k = 0; k < shown && csv.ok(); ++k) {
+    const spatial::SpatialMode& m = modes[k];
+    const double period = m.omega > 0.0 ? 2.0 * M_PI / m.omega : 0.0, freq = m.omega / (2.0 * M_PI);
+    double scale = 0.0;
+    for (const Vec3& v : m.displacement) scale = std::max(scale, v.norm());
+    scale = scale > 0.0 ? 1.0 / scale : 0.0;
+    const int nb = model->bodies();
+    for (int p = 0; p <= nb; ++p) {
+      const Vec3 x = p < nb ? r.equilibrium[p].A : r.equilibrium[nb - 1].end();
+      const double s = p < nb ? model->rfe(p).s_begin : scene.length;  // arc length, unstretched [m]
+      const Vec3 u = scale * m.displacement[p];
+      std::fprintf(f, "%zu,%.10g,%.10g,%s,%d,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g\n", k + 1, period, freq,
+                   character(m, n).c_str(), p, s, x.x() + 0.0, x.y() + 0.0, x.z() + 0.0, u.x() + 0.0, u.y() + 0.0,
+                   u.z() + 0.0);
+    }
+  }
+  return csv.close() ? kExitOk : fail(kExitWriteFailed, csv.error());
+}
+
+}  // namespace cli
+}  // namespace riser_sim
