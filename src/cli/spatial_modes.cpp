@@ -69,6 +69,9 @@ int runSpatialModes(const Scene& scene, int count, const std::string& csv_path, 
   if (scene.bottom == BottomBoundary::kPinned)
     return fail(kExitBadInput, "bottom.type: --modes with space: spatial needs a free bottom (the 3D modal analysis "
                                "has no pinned end yet)");
+  if (scene.torsion.enabled)
+    return fail(kExitBadInput, "line.torsion: --modes with space: spatial has no torsion yet (the 3D modal "
+                               "analysis has bending and axial modes only); remove line.torsion for --modes");
   std::shared_ptr<spatial::SpatialModel> model;
   spatial::InitialState3 init;
   spatial::SpatialModalResult r;

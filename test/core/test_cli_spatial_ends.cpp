@@ -267,6 +267,8 @@ TEST(CliSpatialEnds, BadKeysAreRefusedNamingTheKey) {
       {"--set space=spatial --set bottom.type=pinned --set bottom.position=[0,0,-9] --set initial.type=straight",
        "m from the end of the straight initial line"},
       {pinned + " --modes 3", "bottom.type: --modes with space: spatial needs a free bottom"},
+      {"--set space=spatial --set line.torsion.stiffness=1e4 --set line.torsion.polar_inertia=1 --modes 3",
+       "line.torsion: --modes with space: spatial has no torsion yet"},
   };
   for (const auto& c : cases) {
     SCOPED_TRACE(c.first);

@@ -101,7 +101,7 @@ struct LineOutputs3 {
   Vec3 top_force = Vec3::Zero();     // force the line exerts on the hang-off [N]
   Vec3 bottom_force = Vec3::Zero();  // on the anchor (pinned; 0 when free) [N]
   // Moment the line exerts on the hang-off / the anchor through a flex joint [N m] (0 when pinned or free:
-  // the force acts at the joint's point).
+  // the force acts at the joint's point); at the top with line.torsion, plus the twist the hang-off holds.
   Vec3 top_moment = Vec3::Zero(), bottom_moment = Vec3::Zero();
   Vec3 bottom_point = Vec3::Zero();  // the pinned bottom's anchor p_b(t) [m] (moves with bottom.motion)
   double top_tension = 0.0, max_tension = 0.0;  // [N]

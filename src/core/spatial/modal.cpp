@@ -99,6 +99,7 @@ SpatialModalResult computeSpatialModes(const SpatialModel& model, const Kinemati
                                        const SpatialModalOptions& options) {
   if (!(options.fd_step > 0.0)) throw std::invalid_argument("spatial modal fd_step: must be > 0");
   if (model.bottom() == BottomBoundary::kPinned) throw std::invalid_argument("spatial modal: free bottom only");
+  if (model.hasTorsion()) throw std::invalid_argument("spatial modal: no torsion yet");
   RestLine line(model, equilibrium, options.fd_step);
   const VecX theta0 = line.theta();
   SpatialModalResult res;

@@ -381,7 +381,7 @@ const LineOutputs3& SpatialRun::outputs() {
   out_.points[nb] = d.kin[nb - 1].end();
   out_.top_force = d.reactions.top;
   out_.bottom_force = d.reactions.bottom;
-  out_.top_moment = top_joint_ ? top_joint_->moment(*model_, d.kin) : Vec3::Zero();
+  out_.top_moment = (top_joint_ ? top_joint_->moment(*model_, d.kin) : Vec3::Zero()) + d.reactions.top_twist_moment;
   out_.bottom_moment = bottom_joint_ ? bottom_joint_->moment(*model_, d.kin) : Vec3::Zero();
   out_.bottom_point = model_->bottom() == BottomBoundary::kPinned ? d.bottom.p : Vec3::Zero();
   out_.top_tension = d.reactions.top.norm();
