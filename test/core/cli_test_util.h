@@ -121,6 +121,17 @@ inline std::vector<std::vector<double>> csvRows(const std::string& text, std::st
   return rows;
 }
 
+// The --summary line of a run as key -> value text; num() one number of it (NaN and a failure when absent).
+inline std::map<std::string, std::string> summary(const CliRun& r) {
+  std::map<std::string, std::string> j;
+  EXPECT_TRUE(parseFlatJson(r.out, j)) << r.out;
+  return j;
+}
+inline double num(std::map<std::string, std::string>& j, const std::string& key) {
+  EXPECT_EQ(j.count(key), 1u) << "summary lacks " << key;
+  return j.count(key) ? std::stod(j[key]) : NAN;
+}
+
 const char* kHeader = "t,x_top,y_top,x_end,y_end,tension_top,tension_max,energy,work,energy_drift,constraint_error";
 
 }  // namespace cli_test

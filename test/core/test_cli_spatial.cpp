@@ -17,16 +17,6 @@ namespace {
 
 const std::string kSwing = kScenes + "spatial_swing.yaml";
 
-std::map<std::string, std::string> summary(const CliRun& r) {
-  std::map<std::string, std::string> j;
-  EXPECT_TRUE(parseFlatJson(r.out, j)) << r.out;
-  return j;
-}
-double num(std::map<std::string, std::string>& j, const std::string& key) {
-  EXPECT_EQ(j.count(key), 1u) << "summary lacks " << key;
-  return j.count(key) ? std::stod(j[key]) : NAN;
-}
-
 Eigen::Matrix3d yaw(double deg) { return Eigen::AngleAxisd(deg * M_PI / 180.0, Vec3::UnitZ()).toRotationMatrix(); }
 
 std::string vec(const Vec3& v) {

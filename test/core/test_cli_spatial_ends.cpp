@@ -17,16 +17,6 @@ namespace {
 
 constexpr double kG = 9.81;
 
-std::map<std::string, std::string> summary(const CliRun& r) {
-  std::map<std::string, std::string> j;
-  EXPECT_TRUE(parseFlatJson(r.out, j)) << r.out;
-  return j;
-}
-double num(std::map<std::string, std::string>& j, const std::string& key) {
-  EXPECT_EQ(j.count(key), 1u) << "summary lacks " << key;
-  return j.count(key) ? std::stod(j[key]) : NAN;
-}
-
 std::string writeScene(const std::string& name, const std::string& text) {
   const std::string path = tempPath(name + ".yaml");
   std::ofstream(path) << text;
