@@ -37,6 +37,7 @@ add_library(riser_sim_core
   src/core/scene.cpp
   src/core/run_builder.cpp
   src/core/scene_sections.cpp
+  src/core/scene_sea_sections.cpp
   src/core/scene_yaml.cpp
   src/core/spatial/run_builder.cpp
   src/core/spatial/forces/end_load.cpp
@@ -52,6 +53,10 @@ add_library(riser_sim_core
   src/core/spatial/forces/axial_spring.cpp
   src/core/spatial/forces/bending_spring.cpp
   src/core/spatial/forces/flex_joint.cpp
+  src/core/spatial/water.cpp
+  src/core/spatial/forces/buoyancy.cpp
+  src/core/spatial/forces/morison_drag.cpp
+  src/core/spatial/forces/froude_krylov.cpp
 )
 target_include_directories(riser_sim_core PUBLIC include ${EIGEN3_INCLUDE_DIR})
 target_link_libraries(riser_sim_core PUBLIC yaml-cpp)

@@ -8,20 +8,24 @@
 namespace riser_sim {
 
 struct CurrentSpec {
-  Vec2 velocity = Vec2::Zero();      // uniform current at t = 0 [m/s] (x, y)
+  Vec2 velocity = Vec2::Zero();      // uniform current at t = 0 [m/s] (x, y_up: the planar core's plane)
   Vec2 acceleration = Vec2::Zero();  // uniform acceleration of the current [m/s^2]
+  // The same in 3D (x, y horizontal, z up; the planar ones are their (x, z)): the spatial core reads these.
+  Eigen::Vector3d velocity3 = Eigen::Vector3d::Zero(), acceleration3 = Eigen::Vector3d::Zero();
   struct Point {
-    double depth;  // below the surface [m], increasing
-    double vx;     // horizontal velocity [m/s]
+    double depth;     // below the surface [m], increasing
+    double vx;        // horizontal velocity [m/s]
+    double vy = 0.0;  // the other horizontal component (3D only) [m/s]
   };
-  std::vector<Point> profile;  // depth profile (replaces velocity.x when given), linear between points
+  std::vector<Point> profile;  // depth profile (replaces the horizontal velocity when given), linear between points
 };
 
 struct WaveSpec {
   double height = 0.0;     // H, crest to trough [m]; 0 = no waves
   double period = 10.0;    // T [s]
   double phase = 0.0;      // [rad]
-  double direction = 1.0;  // +1 travels towards +x, -1 towards -x
+  double direction = 1.0;  // +1 travels towards +x, -1 towards -x (in 3D: along +-(cos heading, sin heading))
+  double heading = 0.0;    // azimuth of +direction from +x towards +y [rad] (3D only; planar: 0)
   double depth = 1000.0;   // water depth for the dispersion relation [m]
   double ramp = 0.0;       // amplitude ramped from 0 at t = 0 to full at t = ramp, ½(1 - cos πt/ramp) [s]; 0 = none
 };

@@ -1,4 +1,4 @@
-// Internals of the scene loader (scene_sections.cpp only): formatting for messages, typed conversions
+// Internals of the scene loader (scene_sections.cpp, scene_sea_sections.cpp): formatting for messages, typed conversions
 // of one YAML node (every message names the key path), and Section, a YAML map whose keys are checked.
 #pragma once
 #include <yaml-cpp/yaml.h>
@@ -12,18 +12,18 @@
 #include "riser_sim/scene_yaml.h"
 
 namespace riser_sim {
-namespace {
+namespace scene_detail {
 
-constexpr double kDegToRad = M_PI / 180.0;
+inline constexpr double kDegToRad = M_PI / 180.0;
 
 
-std::string join(const std::vector<std::string>& items) {
+inline std::string join(const std::vector<std::string>& items) {
   std::string out;
   for (const auto& s : items) out += (out.empty() ? "" : ", ") + s;
   return out;
 }
 
-std::string formatNumber(double v) {
+inline std::string formatNumber(double v) {
   std::ostringstream os;
   os.precision(9);
   os << v;
@@ -31,7 +31,7 @@ std::string formatNumber(double v) {
 }
 
 // "got ..." part of a type error.
-std::string describe(const YAML::Node& node) {
+inline std::string describe(const YAML::Node& node) {
   if (!node.IsDefined() || node.IsNull()) return "nothing (null)";
   if (node.IsSequence()) return "a list of " + std::to_string(node.size()) + (node.size() == 1 ? " item" : " items");
   if (node.IsMap()) return "a map";
@@ -39,13 +39,13 @@ std::string describe(const YAML::Node& node) {
 }
 
 // " (line L, column C)" of a node read from text, "" for one built in code or copied from an override.
-std::string where(const YAML::Node& node) {
+inline std::string where(const YAML::Node& node) {
   const YAML::Mark m = node.Mark();
   if (m.is_null() || m.line < 0) return "";
   return " (line " + std::to_string(m.line + 1) + ", column " + std::to_string(m.column + 1) + ")";
 }
 
-size_t editDistance(const std::string& a, const std::string& b) {
+inline size_t editDistance(const std::string& a, const std::string& b) {
   std::vector<size_t> row(b.size() + 1);
   for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
   for (size_t i = 1; i <= a.size(); ++i) {
@@ -62,7 +62,7 @@ size_t editDistance(const std::string& a, const std::string& b) {
 
 // ---- typed conversions of one node; `key` is its full path, used in every message ----
 
-double toNumber(const YAML::Node& node, const std::string& key) {
+inline double toNumber(const YAML::Node& node, const std::string& key) {
   double v = 0.0;
   if (!node.IsScalar() || !YAML::convert<double>::decode(node, v))
     throw SceneError(key, "expected a number, got " + describe(node));
@@ -72,33 +72,33 @@ double toNumber(const YAML::Node& node, const std::string& key) {
   return v;
 }
 
-int toInteger(const YAML::Node& node, const std::string& key) {
+inline int toInteger(const YAML::Node& node, const std::string& key) {
   int v = 0;
   if (!node.IsScalar() || !YAML::convert<int>::decode(node, v))
     throw SceneError(key, "expected an integer, got " + describe(node));
   return v;
 }
 
-bool toBool(const YAML::Node& node, const std::string& key) {
+inline bool toBool(const YAML::Node& node, const std::string& key) {
   bool v = false;
   if (!node.IsScalar() || !YAML::convert<bool>::decode(node, v))
     throw SceneError(key, "expected true or false, got " + describe(node));
   return v;
 }
 
-std::string toText(const YAML::Node& node, const std::string& key) {
+inline std::string toText(const YAML::Node& node, const std::string& key) {
   if (!node.IsScalar()) throw SceneError(key, "expected a string, got " + describe(node));
   return node.Scalar();
 }
 
-Vec2 toVec2(const YAML::Node& node, const std::string& key) {
+inline Vec2 toVec2(const YAML::Node& node, const std::string& key) {
   if (!node.IsSequence() || node.size() != 2) throw SceneError(key, "expected [x, y], got " + describe(node));
   return Vec2(toNumber(node[0], key + "[0]"), toNumber(node[1], key + "[1]"));
 }
 
 // A point or vector of the scene: [a, b] keeps its planar meaning [x, z_up] and is (a, 0, b) in 3D;
 // [x, y, z] is 3D (z up). In a planar scene a y != 0 is out of the plane: refused, naming the key.
-Eigen::Vector3d toVec3(const YAML::Node& node, const std::string& key, bool planar) {
+inline Eigen::Vector3d toVec3(const YAML::Node& node, const std::string& key, bool planar) {
   if (!node.IsSequence() || (node.size() != 2 && node.size() != 3))
     throw SceneError(key, "expected [x, z] (planar: x horizontal, z up) or [x, y, z] (z up), got " + describe(node));
   if (node.size() == 2) return Eigen::Vector3d(toNumber(node[0], key + "[0]"), 0.0, toNumber(node[1], key + "[1]"));
@@ -109,14 +109,14 @@ Eigen::Vector3d toVec3(const YAML::Node& node, const std::string& key, bool plan
   return v;
 }
 // The planar [x, z_up] of a 3D vector (exact: the doubles of a 2-vector are copied).
-Vec2 planarOf(const Eigen::Vector3d& v) { return Vec2(v.x(), v.z()); }
+inline Vec2 planarOf(const Eigen::Vector3d& v) { return Vec2(v.x(), v.z()); }
 
 // ---- value checks ----
 
-void requirePositive(const std::string& key, double v) {
+inline void requirePositive(const std::string& key, double v) {
   if (!(v > 0.0)) throw SceneError(key, "must be > 0, got " + formatNumber(v));
 }
-void requireNonNegative(const std::string& key, double v) {
+inline void requireNonNegative(const std::string& key, double v) {
   if (!(v >= 0.0)) throw SceneError(key, "must be >= 0, got " + formatNumber(v));
 }
 
@@ -187,5 +187,12 @@ class Section {
   std::vector<std::string> accepted_;
 };
 
-}  // namespace
+// The sea's sections (scene_sea_sections.cpp): environment (gravity, water, current, waves), hydrodynamics,
+// seabed, internal_fluid.
+void parseEnvironment(const Section& root, Scene& s);
+void parseHydrodynamics(const Section& root, Scene& s);
+void parseSeabed(const Section& root, Scene& s);
+void parseInternalFluid(const Section& root, Scene& s);
+
+}  // namespace scene_detail
 }  // namespace riser_sim

@@ -1,5 +1,6 @@
 // Scene sections: YAML tree -> riser_sim::Scene, one small parse function per section (see
-// kSections at the bottom; adding a section = one function + one table row). Every error is a
+// kSections at the bottom; adding a section = one function + one table row; the sea's sections are in
+// scene_sea_sections.cpp). Every error is a
 // SceneError naming the full key path. The accepted keys are documented in docs/scene_keys.md.
 // Reading files and --set overrides: scene_yaml.cpp.
 #include "riser_sim/scene_yaml.h"
@@ -18,6 +19,8 @@
 #include "scene_section.h"
 
 namespace riser_sim {
+
+using namespace scene_detail;
 
 std::string unknownKeyMessage(const std::string& key, const std::vector<std::string>& accepted) {
   for (const auto& a : accepted)
@@ -268,100 +271,6 @@ void parseInitial(const Section& root, Scene& s) {
   s.initial.tolerance = initial.number("tolerance", 1e-9);
   requirePositive(initial.key("tolerance"), s.initial.tolerance);
   s.initial.end_force = initial.choice("end_force", EndForceKind::kRelease);
-}
-
-void parseCurrent(const Section& env, Scene& s) {
-  const Section cur = env.section("current", {"velocity", "acceleration", "profile"});
-  CurrentSpec& c = s.water.current;
-  c = CurrentSpec();
-  c.velocity = cur.vec2("velocity", Vec2::Zero());
-  c.acceleration = cur.vec2("acceleration", Vec2::Zero());
-  if (!cur.has("profile")) return;
-  const std::string key = cur.key("profile");
-  const YAML::Node prof = cur.at("profile");
-  if (!prof.IsSequence() || prof.size() == 0)
-    throw SceneError(key, "expected a non-empty list of [depth, vx], got " + describe(prof));
-  for (size_t i = 0; i < prof.size(); ++i) {
-    const std::string k = key + "[" + std::to_string(i) + "]";
-    const YAML::Node p = prof[i];
-    if (!p.IsSequence() || p.size() != 2) throw SceneError(k, "expected [depth, vx], got " + describe(p));
-    const double d = toNumber(p[0], k + "[0]");
-    requireNonNegative(k + "[0]", d);
-    if (i > 0 && !(d > c.profile.back().depth)) throw SceneError(k, "depths must increase");
-    c.profile.push_back({d, toNumber(p[1], k + "[1]")});
-  }
-}
-
-void parseWaves(const Section& env, Scene& s) {
-  const Section w = env.section("waves", {"height", "period", "phase", "direction", "depth", "ramp"});
-  WaveSpec& wave = s.water.waves;
-  wave = WaveSpec();
-  wave.height = w.number("height", 0.0);
-  requireNonNegative(w.key("height"), wave.height);
-  wave.period = w.has("height") ? w.number("period") : w.number("period", 10.0);
-  requirePositive(w.key("period"), wave.period);
-  wave.phase = w.number("phase", 0.0);
-  wave.direction = w.number("direction", 1.0);
-  if (wave.direction != 1.0 && wave.direction != -1.0) throw SceneError(w.key("direction"), "must be 1 or -1");
-  wave.depth = w.number("depth", 1000.0);
-  requirePositive(w.key("depth"), wave.depth);
-  wave.ramp = w.number("ramp", 0.0);
-  requireNonNegative(w.key("ramp"), wave.ramp);
-}
-
-void parseEnvironment(const Section& root, Scene& s) {
-  const Section env = root.section("environment", {"gravity", "water", "current", "waves"});
-  s.gravity = env.number("gravity", 9.81);
-  requireNonNegative(env.key("gravity"), s.gravity);
-  s.water = WaterSpec();
-  s.water.enabled = env.has("water");
-  const Section water = env.section("water", {"density", "surface"});
-  s.water.density = water.number("density", 1025.0);
-  requirePositive(water.key("density"), s.water.density);
-  s.water.surface = water.number("surface", 0.0);
-  parseCurrent(env, s);
-  parseWaves(env, s);
-  if (!s.water.enabled && (env.has("current") || env.has("waves")))
-    throw SceneError(env.key("water"), "current and waves need a water section");
-}
-
-void parseHydrodynamics(const Section& root, Scene& s) {
-  const Section h = root.section("hydrodynamics", {"drag_tangential", "drag_normal", "inertia_coefficient"});
-  s.hydro = HydroSpec();
-  s.hydro.enabled = root.has("hydrodynamics");
-  s.hydro.drag_tangential = h.number("drag_tangential", 0.0);
-  s.hydro.drag_normal = h.number("drag_normal", 0.0);
-  s.hydro.inertia_coefficient = h.number("inertia_coefficient", 1.0);
-  requireNonNegative(h.key("drag_tangential"), s.hydro.drag_tangential);
-  requireNonNegative(h.key("drag_normal"), s.hydro.drag_normal);
-  if (!(s.hydro.inertia_coefficient >= 1.0))
-    throw SceneError(h.key("inertia_coefficient"), "C_M must be >= 1 (added mass C_M - 1 >= 0)");
-}
-
-void parseSeabed(const Section& root, Scene& s) {
-  const Section b = root.section(
-      "seabed", {"level", "stiffness_normal", "stiffness_tangential", "damping_normal", "damping_tangential"});
-  s.seabed = SeabedSpec();
-  s.seabed.enabled = root.has("seabed");
-  if (!s.seabed.enabled) return;
-  s.seabed.level = b.number("level");
-  s.seabed.stiffness_normal = b.number("stiffness_normal");
-  s.seabed.stiffness_tangential = b.number("stiffness_tangential", 0.0);
-  s.seabed.damping_normal = b.number("damping_normal", 0.0);
-  s.seabed.damping_tangential = b.number("damping_tangential", 0.0);
-  requirePositive(b.key("stiffness_normal"), s.seabed.stiffness_normal);
-  for (const char* k : {"stiffness_tangential", "damping_normal", "damping_tangential"})
-    requireNonNegative(b.key(k), b.number(k, 0.0));
-}
-
-void parseInternalFluid(const Section& root, Scene& s) {
-  const Section f = root.section("internal_fluid", {"density", "velocity", "acceleration", "model"});
-  s.internal_fluid = InternalFlowSpec();
-  s.internal_fluid.density = f.number("density", 0.0);
-  requireNonNegative(f.key("density"), s.internal_fluid.density);
-  s.internal_fluid.velocity = f.number("velocity", 0.0);
-  s.internal_fluid.acceleration = f.number("acceleration", 0.0);
-  s.internal_fluid.model = f.choice("model", FlowModelKind::kPipeFlow);
 }
 
 void parseSolver(const Section& root, Scene& s) {

@@ -25,8 +25,8 @@ namespace spatial {
 struct SceneIssue {
   std::string key, message;
 };
-// The first thing of a spatial scene the 3D core does not have yet (water, hydrodynamics, seabed,
-// internal flow, the chain formulations, dense Jacobians beyond kMaxDenseElements3).
+// The first thing of a spatial scene the 3D core does not have yet (added mass, seabed, internal flow, the
+// chain formulations, dense Jacobians beyond kMaxDenseElements3).
 std::optional<SceneIssue> unsupported(const Scene& scene);
 // Implicit schemes with solver.jacobian dense run a p x p Jacobian in 3D, p = 7(n + 1): n <= 570 keeps
 // p <= 4000 (the structured solves, auto, have no such limit).
@@ -74,6 +74,8 @@ struct InitialState3 {
   double acceleration_bound = 0.0;
 };
 
+// The scene without its waves: what the statics and the equilibrium check see (the current stays, steady at t = 0).
+Scene stillWater(const Scene& scene);
 // Largest |acceleration| [m/s^2] of A_0..A_n and of the end of the 3D model of the scene in the state kin
 // at rest (velocities ignored), with end_force on the end (free bottom) or the end pinned where kin puts it;
 // `where` gets the rfe. ~0 for an equilibrium: solveInitialState3's check.

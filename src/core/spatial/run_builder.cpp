@@ -8,8 +8,11 @@
 #include "riser_sim/spatial/force_term.h"
 #include "riser_sim/spatial/forces/axial_spring.h"
 #include "riser_sim/spatial/forces/bending_spring.h"
+#include "riser_sim/spatial/forces/buoyancy.h"
 #include "riser_sim/spatial/forces/end_load.h"
+#include "riser_sim/spatial/forces/froude_krylov.h"
 #include "riser_sim/spatial/forces/gravity.h"
+#include "riser_sim/spatial/forces/morison_drag.h"
 
 namespace riser_sim {
 namespace spatial {
@@ -38,9 +41,9 @@ bool implicitScheme(IntegratorKind k) {
 
 std::optional<SceneIssue> unsupported(const Scene& s) {
   const std::string yet = "not available with space: spatial yet";
-  if (s.hydro.enabled) return SceneIssue{"hydrodynamics", yet + " (no drag or added mass in the 3D core)"};
-  if (s.water.enabled)
-    return SceneIssue{"environment.water", yet + " (no buoyancy, current or waves in the 3D core)"};
+  if (s.hydro.enabled && s.hydro.inertia_coefficient != 1.0)
+    return SceneIssue{"hydrodynamics.inertia_coefficient",
+                      "C_M != 1 (added mass) is " + yet + " (buoyancy, drag and the Froude-Krylov force with C_M = 1 are)"};
   if (s.seabed.enabled) return SceneIssue{"seabed", yet + " (no seabed contact in the 3D core)"};
   const InternalFlowSpec& f = s.internal_fluid;
   if (f.density > 0.0 && (f.velocity != 0.0 || f.acceleration != 0.0))
@@ -109,6 +112,14 @@ std::shared_ptr<SpatialModel> buildSpatialModel(const Scene& scene) {
   if (scene.options.axial_flexibility) model->addTerm(std::make_unique<AxialSpring>());
   if (scene.options.bending && (scene.line.EI > 0.0 || scene.line.bending_damping > 0.0))
     model->addTerm(std::make_unique<BendingSpring>());
+  if (scene.water.enabled) {  // the sea's terms, as the planar buildModel builds them
+    const Water3 water(scene.water, model->gravity());
+    if (scene.gravity != 0.0) model->addTerm(std::make_unique<Buoyancy3>(water));
+    const HydroSpec& h = scene.hydro;
+    if (h.enabled && (h.drag_normal > 0.0 || h.drag_tangential > 0.0))
+      model->addTerm(std::make_unique<MorisonDrag3>(water, h.drag_tangential, h.drag_normal));
+    if (h.enabled && water.moving()) model->addTerm(std::make_unique<FroudeKrylov3>(water));
+  }
   if (scene.torsion.enabled) {
     const TorsionSpec& t = scene.torsion;
     model->setTorsion(TorsionProperties{t.stiffness, t.polar_inertia, t.damping, t.end_polar_inertia});
@@ -125,11 +136,47 @@ Mat3 yaw(const Vec2& u) {
   return R;
 }
 
+// The current's horizontal direction (uniform, or the first non-zero point of the profile); zero if none.
+Vec2 currentDirection(const CurrentSpec& c) {
+  if (!c.profile.empty()) {
+    for (const CurrentSpec::Point& p : c.profile)
+      if (Vec2(p.vx, p.vy).norm() > 0.0) return Vec2(p.vx, p.vy).normalized();
+    return Vec2::Zero();
+  }
+  const Vec2 h = c.velocity3.head<2>();
+  return h.norm() > 0.0 ? Vec2(h.normalized()) : Vec2::Zero();
+}
+
+// The current in the vertical plane along u (x along u, y_up = z), for the planar statics; `across` gets its
+// largest horizontal component normal to that plane beyond round-off (kPlanarTolerance of the speeds) [m/s].
+CurrentSpec planarCurrent(const CurrentSpec& c, const Vec2& u, double& across) {
+  const Vec2 nrm(-u.y(), u.x());
+  CurrentSpec p = c;
+  p.velocity = Vec2(c.velocity3.head<2>().dot(u), c.velocity3.z());
+  p.acceleration = Vec2(c.acceleration3.head<2>().dot(u), c.acceleration3.z());
+  across = std::max(std::abs(c.velocity3.head<2>().dot(nrm)), std::abs(c.acceleration3.head<2>().dot(nrm)));
+  double speed = std::max(c.velocity3.norm(), c.acceleration3.norm());
+  for (CurrentSpec::Point& q : p.profile) {
+    const Vec2 v(q.vx, q.vy);
+    across = std::max(across, std::abs(v.dot(nrm)));
+    speed = std::max(speed, v.norm());
+    q.vx = v.dot(u), q.vy = 0.0;
+  }
+  if (across <= kPlanarTolerance * speed) across = 0.0;
+  return p;
+}
+
 }  // namespace
+
+Scene stillWater(const Scene& scene) {
+  Scene s = scene;
+  s.water.waves.height = 0.0;
+  return s;
+}
 
 double restAcceleration(const Scene& scene, const Kinematics3& kin, const Vec3& end_force, const Vec3& top,
                         int& where) {
-  std::shared_ptr<SpatialModel> model = buildSpatialModel(scene);
+  std::shared_ptr<SpatialModel> model = buildSpatialModel(stillWater(scene));
   if (scene.bottom == BottomBoundary::kPinned) model->setBottom(BottomBoundary::kPinned, kin.back().end());
   if (end_force.squaredNorm() > 0.0 && scene.bottom != BottomBoundary::kPinned)
     model->addTerm(std::make_unique<EndLoad3>(end_force));
@@ -161,6 +208,10 @@ InitialState3 solveInitialState3(const Scene& scene, const Vec3& top) {
   if (kind == InitialKind::kStraight) u = Vec2(std::cos(scene.initial.heading), std::sin(scene.initial.heading));
   if (kind == InitialKind::kDisplaced && scene.initial.end_offset.norm() > 0.0) u = scene.initial.end_offset.normalized();
   if (kind == InitialKind::kBetweenPoints && bottom_h.norm() > 0.0) u = bottom_h.normalized();
+  // A line hanging free in a current leans downstream: its plane is the current's (the statics see it steady).
+  const Vec2 cur = scene.water.enabled ? currentDirection(scene.water.current) : Vec2::Zero();
+  const bool free_hang = kind == InitialKind::kHanging || (kind == InitialKind::kDisplaced && scene.initial.end_offset.norm() == 0.0);
+  if (free_hang && cur.norm() > 0.0) u = cur;
   const Mat3 R = yaw(u);
   const Vec3 origin(top.x(), top.y(), 0.0);
   const Vec3 normal(-u.y(), u.x(), 0.0);  // of the plane
@@ -173,6 +224,9 @@ InitialState3 solveInitialState3(const Scene& scene, const Vec3& top) {
   ps.top.position = Vec2(0.0, top.z());
   ps.initial.end_dx = scene.initial.end_offset.norm();
   ps.bottom_point = Vec2(bottom_h.norm(), scene.bottom_point3.z());
+  double current_across = 0.0;
+  ps.water.current = planarCurrent(scene.water.current, u, current_across);
+  ps.water.waves = WaveSpec();  // the statics never see the waves
   const std::shared_ptr<Model> planar = buildModel(ps);
 
   if (kind == InitialKind::kStraight) {
@@ -192,6 +246,8 @@ InitialState3 solveInitialState3(const Scene& scene, const Vec3& top) {
   if (check.empty() && kind == InitialKind::kBetweenPoints &&
       offPlane(scene.bottom_point3) > kPlanarTolerance * std::max(L, (scene.bottom_point3 - top).norm()))
     check = "bottom.position is " + fmt(offPlane(scene.bottom_point3)) + " m off the plane";
+  if (check.empty() && scene.water.enabled && current_across > 0.0)
+    check = "the current has " + fmt(current_across) + " m/s across the plane (environment.current)";
 
   const StaticsProblem problem = staticsProblem(ps);
   if (check.empty()) {

@@ -1,0 +1,32 @@
+// Morison drag in 3D on the velocity V' of each submerged part's centroid relative to the water
+// (the planar MorisonDrag, paper eq. 12, by the cross-flow principle):
+// dF = -½ ρ_w D_out [D_ξ |V'_ξ| V'_ξ e + D_η |V'_η| V'_η] dξ, V'_ξ = e·V', V'_η = V' - V'_ξ e (the normal
+// part's magnitude and direction).
+#pragma once
+#include "riser_sim/spatial/force_term.h"
+#include "riser_sim/spatial/water.h"
+
+namespace riser_sim {
+namespace spatial {
+
+class MorisonDrag3 : public SpatialForceTerm {
+ public:
+  MorisonDrag3(const Water3& water, double drag_tangential, double drag_normal)
+      : water_(water), cd_t_(drag_tangential), cd_n_(drag_normal) {}
+  std::string name() const override { return "morison_drag"; }
+  void addForces(const SpatialModel& model, const Kinematics3& kin, double t, VecX& Q) const override;
+  double potentialEnergy(const SpatialModel&, const Kinematics3&) const override { return 0.0; }  // power() only
+  double power(const SpatialModel& model, const Kinematics3& kin, double t) const override;
+  double addForcesAndPower(const SpatialModel& model, const Kinematics3& kin, double t, VecX& Q) const override;
+  // Damping C = -∂F/∂V' of each centroid (exact in the rates); the dependence on position stays explicit.
+  void addStiffness(const SpatialModel& model, const Kinematics3& kin, double t, SpatialStiffness& S) const override;
+
+ private:
+  // Adds the forces to *Q (when given); returns their power [W].
+  double sweep(const SpatialModel& model, const Kinematics3& kin, double t, VecX* Q) const;
+  Water3 water_;
+  double cd_t_, cd_n_;
+};
+
+}  // namespace spatial
+}  // namespace riser_sim

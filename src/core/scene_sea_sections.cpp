@@ -1,0 +1,127 @@
+// Scene sections of the sea and the contents: environment (gravity, water, current, waves),
+// hydrodynamics, seabed, internal_fluid. Every error is a SceneError naming the full key path
+// (docs/scene_keys.md). A 2-vector keeps its planar meaning [x, z_up]; a 3-vector is [x, y, z].
+#include <cmath>
+#include <string>
+
+#include "scene_section.h"
+
+namespace riser_sim {
+namespace scene_detail {
+
+namespace {
+
+void parseProfile(const Section& cur, bool planar, CurrentSpec& c) {
+  const std::string key = cur.key("profile");
+  const YAML::Node prof = cur.at("profile");
+  const std::string form = planar ? "[depth, vx]" : "[depth, vx] or [depth, vx, vy]";
+  if (!prof.IsSequence() || prof.size() == 0)
+    throw SceneError(key, "expected a non-empty list of " + form + ", got " + describe(prof));
+  for (size_t i = 0; i < prof.size(); ++i) {
+    const std::string k = key + "[" + std::to_string(i) + "]";
+    const YAML::Node p = prof[i];
+    if (!p.IsSequence() || (p.size() != 2 && p.size() != 3)) throw SceneError(k, "expected " + form + ", got " + describe(p));
+    const double d = toNumber(p[0], k + "[0]");
+    requireNonNegative(k + "[0]", d);
+    if (i > 0 && !(d > c.profile.back().depth)) throw SceneError(k, "depths must increase");
+    const double vy = p.size() == 3 ? toNumber(p[2], k + "[2]") : 0.0;
+    if (planar && vy != 0.0)
+      throw SceneError(k + "[2]", "vy = " + formatNumber(vy) + " points out of the vertical x-z plane of a planar "
+                                  "scene (space: planar, the default); set space: spatial for a 3D scene");
+    c.profile.push_back({d, toNumber(p[1], k + "[1]"), vy});
+  }
+}
+
+void parseCurrent(const Section& env, Scene& s) {
+  const bool planar = s.space == SpaceKind::kPlanar;
+  const Section cur = env.section("current", {"velocity", "acceleration", "profile"});
+  CurrentSpec& c = s.water.current;
+  c = CurrentSpec();
+  c.velocity3 = cur.vec3("velocity", planar, Eigen::Vector3d::Zero());
+  c.acceleration3 = cur.vec3("acceleration", planar, Eigen::Vector3d::Zero());
+  c.velocity = planarOf(c.velocity3);
+  c.acceleration = planarOf(c.acceleration3);
+  if (cur.has("profile")) parseProfile(cur, planar, c);
+}
+
+void parseWaves(const Section& env, Scene& s) {
+  const Section w = env.section("waves", {"height", "period", "phase", "direction", "heading", "depth", "ramp"});
+  WaveSpec& wave = s.water.waves;
+  wave = WaveSpec();
+  wave.height = w.number("height", 0.0);
+  requireNonNegative(w.key("height"), wave.height);
+  wave.period = w.has("height") ? w.number("period") : w.number("period", 10.0);
+  requirePositive(w.key("period"), wave.period);
+  wave.phase = w.number("phase", 0.0);
+  wave.direction = w.number("direction", 1.0);
+  if (wave.direction != 1.0 && wave.direction != -1.0) throw SceneError(w.key("direction"), "must be 1 or -1");
+  wave.heading = w.number("heading", 0.0) * kDegToRad;
+  if (s.space == SpaceKind::kPlanar && wave.heading != 0.0)
+    throw SceneError(w.key("heading"), "turns the waves out of the vertical x-z plane of a planar scene (space: "
+                                       "planar, the default; use direction: -1 for waves towards -x); set space: "
+                                       "spatial for a 3D scene");
+  wave.depth = w.number("depth", 1000.0);
+  requirePositive(w.key("depth"), wave.depth);
+  wave.ramp = w.number("ramp", 0.0);
+  requireNonNegative(w.key("ramp"), wave.ramp);
+}
+
+}  // namespace
+
+void parseEnvironment(const Section& root, Scene& s) {
+  const Section env = root.section("environment", {"gravity", "water", "current", "waves"});
+  s.gravity = env.number("gravity", 9.81);
+  requireNonNegative(env.key("gravity"), s.gravity);
+  s.water = WaterSpec();
+  s.water.enabled = env.has("water");
+  const Section water = env.section("water", {"density", "surface"});
+  s.water.density = water.number("density", 1025.0);
+  requirePositive(water.key("density"), s.water.density);
+  s.water.surface = water.number("surface", 0.0);
+  parseCurrent(env, s);
+  parseWaves(env, s);
+  if (!s.water.enabled && (env.has("current") || env.has("waves")))
+    throw SceneError(env.key("water"), "current and waves need a water section");
+}
+
+void parseHydrodynamics(const Section& root, Scene& s) {
+  const Section h = root.section("hydrodynamics", {"drag_tangential", "drag_normal", "inertia_coefficient"});
+  s.hydro = HydroSpec();
+  s.hydro.enabled = root.has("hydrodynamics");
+  s.hydro.drag_tangential = h.number("drag_tangential", 0.0);
+  s.hydro.drag_normal = h.number("drag_normal", 0.0);
+  s.hydro.inertia_coefficient = h.number("inertia_coefficient", 1.0);
+  requireNonNegative(h.key("drag_tangential"), s.hydro.drag_tangential);
+  requireNonNegative(h.key("drag_normal"), s.hydro.drag_normal);
+  if (!(s.hydro.inertia_coefficient >= 1.0))
+    throw SceneError(h.key("inertia_coefficient"), "C_M must be >= 1 (added mass C_M - 1 >= 0)");
+}
+
+void parseSeabed(const Section& root, Scene& s) {
+  const Section b = root.section(
+      "seabed", {"level", "stiffness_normal", "stiffness_tangential", "damping_normal", "damping_tangential"});
+  s.seabed = SeabedSpec();
+  s.seabed.enabled = root.has("seabed");
+  if (!s.seabed.enabled) return;
+  s.seabed.level = b.number("level");
+  s.seabed.stiffness_normal = b.number("stiffness_normal");
+  s.seabed.stiffness_tangential = b.number("stiffness_tangential", 0.0);
+  s.seabed.damping_normal = b.number("damping_normal", 0.0);
+  s.seabed.damping_tangential = b.number("damping_tangential", 0.0);
+  requirePositive(b.key("stiffness_normal"), s.seabed.stiffness_normal);
+  for (const char* k : {"stiffness_tangential", "damping_normal", "damping_tangential"})
+    requireNonNegative(b.key(k), b.number(k, 0.0));
+}
+
+void parseInternalFluid(const Section& root, Scene& s) {
+  const Section f = root.section("internal_fluid", {"density", "velocity", "acceleration", "model"});
+  s.internal_fluid = InternalFlowSpec();
+  s.internal_fluid.density = f.number("density", 0.0);
+  requireNonNegative(f.key("density"), s.internal_fluid.density);
+  s.internal_fluid.velocity = f.number("velocity", 0.0);
+  s.internal_fluid.acceleration = f.number("acceleration", 0.0);
+  s.internal_fluid.model = f.choice("model", FlowModelKind::kPipeFlow);
+}
+
+}  // namespace scene_detail
+}  // namespace riser_sim

@@ -1,0 +1,47 @@
+#include "riser_sim/spatial/forces/buoyancy.h"
+
+namespace riser_sim {
+namespace spatial {
+
+namespace {
+// ρ_w |g| A_w [N/m]: the lift per submerged length.
+double liftPerLength(const SpatialModel& model, const Water3& water) {
+  return water.spec().density * model.line().line().externalArea() * model.gravity().norm();
+}
+}  // namespace
+
+void Buoyancy3::addForces(const SpatialModel& model, const Kinematics3& kin, double, VecX& Q) const {
+  const double f = liftPerLength(model, water_);
+  for (int i = 0; i < model.bodies(); ++i)
+    for (int p = 0; p < 2; ++p) {
+      const WetPart3 w = wetPart3(model.line(), kin[i], i, p, water_);
+      if (w.length > 0.0) addPointForce(kin[i], w.s0, w.kappa, (f * w.length) * water_.up(), Q.data() + kDofPerBody3 * i);
+    }
+}
+
+double Buoyancy3::potentialEnergy(const SpatialModel& model, const Kinematics3& kin) const {
+  const double f = liftPerLength(model, water_);
+  double v = 0.0;
+  for (int i = 0; i < model.bodies(); ++i)
+    for (int p = 0; p < 2; ++p) {
+      const WetPart3 w = wetPart3(model.line(), kin[i], i, p, water_);
+      if (w.length > 0.0) v -= f * w.length * water_.height(kin[i].point(w.s0, w.kappa));
+    }
+  return v;
+}
+
+// Q = [F; κ e·F; s F] with F constant: -∂Q_Δ/∂e = -κ Fᵀ, -∂Q_e/∂Δ = -κ F.
+void Buoyancy3::addStiffness(const SpatialModel& model, const Kinematics3& kin, double, SpatialStiffness& S) const {
+  if (!model.options().axial_flexibility) return;
+  const double f = liftPerLength(model, water_);
+  for (int i = 0; i < model.bodies(); ++i) {
+    const WetPart3 w = wetPart3(model.line(), kin[i], i, 1, water_);  // part 0 has κ = 0
+    if (!(w.length > 0.0)) continue;
+    const Vec3 F = (f * w.length) * water_.up();
+    S.K_diag[i].block<1, 3>(kDelta3, kE) -= F.transpose();
+    S.K_diag[i].block<3, 1>(kE, kDelta3) -= F;
+  }
+}
+
+}  // namespace spatial
+}  // namespace riser_sim

@@ -1,0 +1,37 @@
+#include "riser_sim/spatial/forces/froude_krylov.h"
+
+namespace riser_sim {
+namespace spatial {
+
+double FroudeKrylov3::sweep(const SpatialModel& model, const Kinematics3& kin, double t, VecX* Q) const {
+  if (!water_.moving()) return 0.0;
+  const double rhoA = water_.spec().density * model.line().line().externalArea();
+  double pw = 0.0;
+  for (int i = 0; i < model.bodies(); ++i)
+    for (int p = 0; p < 2; ++p) {
+      const BodyKinematics3& b = kin[i];
+      const WetPart3 w = wetPart3(model.line(), b, i, p, water_);
+      if (!(w.length > 0.0)) continue;
+      Vec3 vw, aw;
+      water_.at(b.point(w.s0, w.kappa), t, vw, aw);
+      const Vec3 F = (rhoA * w.length) * (aw - b.e.dot(aw) * b.e);
+      if (Q) addPointForce(b, w.s0, w.kappa, F, Q->data() + kDofPerBody3 * i);
+      pw += F.dot(b.velocity(w.s0, w.kappa));
+    }
+  return pw;
+}
+
+void FroudeKrylov3::addForces(const SpatialModel& model, const Kinematics3& kin, double t, VecX& Q) const {
+  sweep(model, kin, t, &Q);
+}
+
+double FroudeKrylov3::addForcesAndPower(const SpatialModel& model, const Kinematics3& kin, double t, VecX& Q) const {
+  return sweep(model, kin, t, &Q);
+}
+
+double FroudeKrylov3::power(const SpatialModel& model, const Kinematics3& kin, double t) const {
+  return sweep(model, kin, t, nullptr);
+}
+
+}  // namespace spatial
+}  // namespace riser_sim

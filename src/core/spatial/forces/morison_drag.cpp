@@ -1,0 +1,82 @@
+#include "riser_sim/spatial/forces/morison_drag.h"
+
+#include <cmath>
+
+namespace riser_sim {
+namespace spatial {
+
+namespace {
+// Velocity of the point (s0, κ) of b per q' (3x7): [I, κ e, s I].
+Eigen::Matrix<double, 3, 7> pointJacobian(const BodyKinematics3& b, double s0, double kappa) {
+  Eigen::Matrix<double, 3, 7> J = Eigen::Matrix<double, 3, 7>::Zero();
+  J.block<3, 3>(0, kA).setIdentity();
+  J.col(kDelta3) = kappa * b.e;
+  J.block<3, 3>(0, kE) = (s0 + kappa * b.delta) * Mat3::Identity();
+  return J;
+}
+}  // namespace
+
+double MorisonDrag3::sweep(const SpatialModel& model, const Kinematics3& kin, double t, VecX* Q) const {
+  const double k = 0.5 * water_.spec().density * model.line().line().outer_diameter;
+  double pw = 0.0;
+  for (int i = 0; i < model.bodies(); ++i)
+    for (int p = 0; p < 2; ++p) {
+      const BodyKinematics3& b = kin[i];
+      const WetPart3 w = wetPart3(model.line(), b, i, p, water_);
+      if (!(w.length > 0.0)) continue;
+      const Vec3 v = b.velocity(w.s0, w.kappa);
+      Vec3 rel = v;
+      if (water_.moving()) {
+        Vec3 vw, aw;
+        water_.at(b.point(w.s0, w.kappa), t, vw, aw);
+        rel -= vw;
+      }
+      const double vt = b.e.dot(rel);
+      const Vec3 vn = rel - vt * b.e;
+      const Vec3 F = -(k * w.length) * (cd_t_ * std::abs(vt) * vt * b.e + cd_n_ * vn.norm() * vn);
+      if (Q) addPointForce(b, w.s0, w.kappa, F, Q->data() + kDofPerBody3 * i);
+      pw += F.dot(v);
+    }
+  return pw;
+}
+
+void MorisonDrag3::addForces(const SpatialModel& model, const Kinematics3& kin, double t, VecX& Q) const {
+  sweep(model, kin, t, &Q);
+}
+
+double MorisonDrag3::addForcesAndPower(const SpatialModel& model, const Kinematics3& kin, double t, VecX& Q) const {
+  return sweep(model, kin, t, &Q);
+}
+
+double MorisonDrag3::power(const SpatialModel& model, const Kinematics3& kin, double t) const {
+  return sweep(model, kin, t, nullptr);
+}
+
+// -∂F/∂V' = k l [2 D_ξ |V'_ξ| e eᵀ + D_η (|V'_η| (I - e eᵀ) + V'_η V'_ηᵀ / |V'_η|)], mapped by the point's Jacobian.
+void MorisonDrag3::addStiffness(const SpatialModel& model, const Kinematics3& kin, double t, SpatialStiffness& S) const {
+  const double k = 0.5 * water_.spec().density * model.line().line().outer_diameter;
+  for (int i = 0; i < model.bodies(); ++i)
+    for (int p = 0; p < 2; ++p) {
+      const BodyKinematics3& b = kin[i];
+      const WetPart3 w = wetPart3(model.line(), b, i, p, water_);
+      if (!(w.length > 0.0)) continue;
+      Vec3 rel = b.velocity(w.s0, w.kappa);
+      if (water_.moving()) {
+        Vec3 vw, aw;
+        water_.at(b.point(w.s0, w.kappa), t, vw, aw);
+        rel -= vw;
+      }
+      const double vt = b.e.dot(rel);
+      const Vec3 vn = rel - vt * b.e;
+      const double un = vn.norm();
+      const Mat3 P = Mat3::Identity() - b.e * b.e.transpose();
+      Mat3 Cp = (2.0 * cd_t_ * std::abs(vt)) * b.e * b.e.transpose() + (cd_n_ * un) * P;
+      if (un > 0.0) Cp += (cd_n_ / un) * vn * vn.transpose();
+      Cp *= k * w.length;
+      const Eigen::Matrix<double, 3, 7> J = pointJacobian(b, w.s0, w.kappa);
+      S.C_diag[i] += J.transpose() * Cp * J;
+    }
+}
+
+}  // namespace spatial
+}  // namespace riser_sim
