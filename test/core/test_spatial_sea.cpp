@@ -16,6 +16,7 @@
 #include "riser_sim/spatial/forces/buoyancy.h"
 #include "riser_sim/spatial/forces/froude_krylov.h"
 #include "riser_sim/spatial/forces/morison_drag.h"
+#include "riser_sim/spatial/relaxation.h"
 #include "riser_sim/spatial/run_builder.h"
 #include "riser_sim/simulator.h"
 #include "spatial_force_checks.h"
@@ -229,8 +230,8 @@ environment:
               drift[1]);
 }
 
-// A line hanging in a current at heading 120 deg leans that way and starts at rest; a pinned line with the
-// current across its plane is refused naming environment.current (a 3D equilibrium is not solved yet).
+// A line hanging in a current at heading 120 deg leans that way and starts at rest (the planar statics in the
+// current's plane); what is solved in a plane only is refused naming the key.
 TEST(SpatialSea, StaticsInACurrentAtAnyHeading) {
   const Scene s = seaScene(R"(space: spatial
 environment:
@@ -248,16 +249,12 @@ environment:
               "(bound %.2e), moved %.2e m in 1 s\n", Vec2(end0.x(), end0.y()).norm(), run.initial().max_acceleration,
               run.initial().acceleration_bound, moved);
 
-  const std::string pinned = R"(space: spatial
-bottom: {type: pinned, position: [30.0, 0.0, -40.0]}
-initial: {type: between_points}
-environment:
-  water: {}
-  current: {velocity: [0.0, 0.5, 0.0]}
-)";
+  // A displaced end in a current across its plane is refused naming environment.current (it is solved in its
+  // plane only).
   try {
-    SpatialRun bad(seaScene(pinned));
-    ADD_FAILURE() << "a current across the statics' plane was accepted";
+    SpatialRun bad(seaScene("space: spatial\ninitial: {type: displaced, end_offset: [20.0, 0.0]}\nenvironment:\n"
+                            "  water: {}\n  current: {velocity: [0.0, 0.5, 0.0]}\n"));
+    ADD_FAILURE() << "a current across a displaced end's plane was accepted";
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("environment.current"), std::string::npos) << e.what();
   }
@@ -270,6 +267,54 @@ environment:
   }
   // A heading in a planar scene is refused naming it.
   EXPECT_THROW(seaScene("environment: {water: {}, waves: {height: 1.0, period: 5.0, heading: 30.0}}\n"), SceneError);
+}
+
+// The 3D relaxation (relaxation.h) against the planar statics: the line hanging in a current towards 120 deg,
+// relaxed from the still-water equilibrium (straight down, 25 m from the answer), reaches the planar statics'
+// shape in the current's plane. The relaxation stops at 1 % of the builder's acceleration bound; the
+// slowest mode's stiffness (ω1² L ~ g) turns that into ~1e-6 m: bound 1e-5 m.
+TEST(SpatialSea, RelaxationReachesThePlanarStatics) {
+  const Scene s = seaScene("space: spatial\nenvironment:\n  water: {}\n  current: {velocity: [-0.5, 0.8660254037844386, 0.0]}\n");
+  SpatialRun run(s);  // the planar statics in the current's plane
+  const Scene still = seaScene("space: spatial\nenvironment: {water: {}}\n");
+  SpatialRun hang(still);
+  const Vec3 top = run.initial().kin.front().A;
+  const Relaxed3 r = relaxToRest(s, hang.initial().kin, top, run.initial().acceleration_bound);
+  double d = 0.0;
+  for (size_t i = 0; i < r.kin.size(); ++i) d = std::max(d, (r.kin[i].end() - run.initial().kin[i].end()).norm());
+  EXPECT_LE(d, 1e-5);
+  EXPECT_LE(r.acceleration, 0.01 * run.initial().acceleration_bound);
+  std::printf("[ measured ] relaxation from straight down vs the planar statics in a 120 deg current: %.2e m after "
+              "%.3g s (%d steps), acceleration %.2e m/s^2\n", d, r.time, r.steps, r.acceleration);
+}
+
+// What the planar statics cannot solve: a profile veering from 0 deg at the surface to 90 deg at 40 m, and a
+// current across a pinned line. Relaxed in 3D, both start at rest (1 s of motion) and bend the right way.
+TEST(SpatialSea, VeeringAndCrossCurrentsRelaxedIn3D) {
+  const Scene veer = seaScene("space: spatial\nenvironment:\n  water: {}\n  current: {profile: [[0.0, 0.8, 0.0], [40.0, 0.0, 0.8]]}\n");
+  const Scene cross = seaScene("space: spatial\nbottom: {type: pinned, position: [30.0, 0.0, -45.0]}\n"
+                               "initial: {type: between_points}\nenvironment:\n  water: {}\n  current: {velocity: [0.0, 0.5, 0.0]}\n");
+  for (const Scene* sc : {&veer, &cross}) {
+    SpatialRun run(*sc);
+    EXPECT_NE(run.initial().about.find("relaxed in 3D"), std::string::npos) << run.initial().about;
+    EXPECT_LE(run.initial().max_acceleration, 0.01 * run.initial().acceleration_bound);
+    const AlignedVector<Vec3> p0 = run.outputs().points;
+    for (int k = 0; k < 100; ++k) ASSERT_TRUE(run.step()) << run.divergenceReason();
+    double moved = 0.0;
+    for (size_t i = 0; i < p0.size(); ++i) moved = std::max(moved, (run.outputs().points[i] - p0[i]).norm());
+    EXPECT_LE(moved, 1e-6);
+    const Vec3 mid = p0[p0.size() / 2], end = p0.back();
+    if (sc == &veer) {  // the deep part drifts towards +y, the shallow towards +x
+      EXPECT_GT(end.y(), 1.0);
+      EXPECT_GT(end.x(), 0.1);
+    } else {  // bowed downstream (+y), the ends on their pins
+      EXPECT_GT(mid.y(), 0.5);
+      EXPECT_LE((end - Vec3(30.0, 0.0, -45.0)).norm(), 1e-6);
+    }
+    std::printf("[ measured ] %s: %s; mid (%.3g, %.3g, %.3g) m, end (%.3g, %.3g, %.3g) m; moved %.2e m in 1 s\n",
+                sc == &veer ? "veering profile" : "pinned, current across", run.initial().about.c_str(), mid.x(),
+                mid.y(), mid.z(), end.x(), end.y(), end.z(), moved);
+  }
 }
 
 // No allocation per step with every sea term on (waves, a sheared current, drag, buoyancy, Froude-Krylov).

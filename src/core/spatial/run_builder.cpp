@@ -13,6 +13,7 @@
 #include "riser_sim/spatial/forces/froude_krylov.h"
 #include "riser_sim/spatial/forces/gravity.h"
 #include "riser_sim/spatial/forces/morison_drag.h"
+#include "riser_sim/spatial/relaxation.h"
 
 namespace riser_sim {
 namespace spatial {
@@ -246,8 +247,12 @@ InitialState3 solveInitialState3(const Scene& scene, const Vec3& top) {
   if (check.empty() && kind == InitialKind::kBetweenPoints &&
       offPlane(scene.bottom_point3) > kPlanarTolerance * std::max(L, (scene.bottom_point3 - top).norm()))
     check = "bottom.position is " + fmt(offPlane(scene.bottom_point3)) + " m off the plane";
-  if (check.empty() && scene.water.enabled && current_across > 0.0)
-    check = "the current has " + fmt(current_across) + " m/s across the plane (environment.current)";
+  // A current across the plane (or veering with depth): the planar statics with its projection give the guess
+  // that the 3D relaxation starts from (relaxation.h). An end held by a force (displaced) is not relaxed.
+  const bool relax = scene.water.enabled && current_across > 0.0;
+  if (check.empty() && relax && kind == InitialKind::kDisplaced)
+    check = "the current has " + fmt(current_across) + " m/s across the plane (environment.current; a displaced "
+            "end is solved in its plane only)";
 
   const StaticsProblem problem = staticsProblem(ps);
   if (check.empty()) {
@@ -276,6 +281,13 @@ InitialState3 solveInitialState3(const Scene& scene, const Vec3& top) {
   for (int i = 0; i < line.bodies(); ++i) m_min = std::min(m_min, line.rfe(i).mass);
   const double W = line.totalMass() * scene.gravity;
   init.acceleration_bound = 100.0 * scene.initial.tolerance * W / m_min + 1e-9 * std::max(scene.gravity, 1.0);
+  if (relax) {
+    const Relaxed3 r = relaxToRest(scene, init.kin, top, init.acceleration_bound);
+    init.kin = r.kin;
+    init.about = std::string(name(kind)) + " equilibrium in the current across the plane along (" + fmt(u.x()) + ", " +
+                 fmt(u.y()) + "): the planar statics with the current projected, relaxed in 3D (" + fmt(r.time) +
+                 " s, " + std::to_string(r.steps) + " steps)";
+  }
   int where = 0;
   init.max_acceleration = restAcceleration(scene, init.kin, init.end_force, top, where);
   if (!(init.max_acceleration <= init.acceleration_bound))

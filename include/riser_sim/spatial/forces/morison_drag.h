@@ -11,8 +11,10 @@ namespace spatial {
 
 class MorisonDrag3 : public SpatialForceTerm {
  public:
-  MorisonDrag3(const Water3& water, double drag_tangential, double drag_normal)
-      : water_(water), cd_t_(drag_tangential), cd_n_(drag_normal) {}
+  // line_at_rest: the force on the line held still in the water (V' = -V_water), whatever its velocity: the
+  // static load, for the 3D relaxation (relaxation.h), where the drag's damping would only slow it down.
+  MorisonDrag3(const Water3& water, double drag_tangential, double drag_normal, bool line_at_rest = false)
+      : water_(water), cd_t_(drag_tangential), cd_n_(drag_normal), at_rest_(line_at_rest) {}
   std::string name() const override { return "morison_drag"; }
   void addForces(const SpatialModel& model, const Kinematics3& kin, double t, VecX& Q) const override;
   double potentialEnergy(const SpatialModel&, const Kinematics3&) const override { return 0.0; }  // power() only
@@ -26,6 +28,7 @@ class MorisonDrag3 : public SpatialForceTerm {
   double sweep(const SpatialModel& model, const Kinematics3& kin, double t, VecX* Q) const;
   Water3 water_;
   double cd_t_, cd_n_;
+  bool at_rest_;
 };
 
 }  // namespace spatial

@@ -25,7 +25,7 @@ double MorisonDrag3::sweep(const SpatialModel& model, const Kinematics3& kin, do
       const WetPart3 w = wetPart3(model.line(), b, i, p, water_);
       if (!(w.length > 0.0)) continue;
       const Vec3 v = b.velocity(w.s0, w.kappa);
-      Vec3 rel = v;
+      Vec3 rel = at_rest_ ? Vec3(Vec3::Zero()) : v;
       if (water_.moving()) {
         Vec3 vw, aw;
         water_.at(b.point(w.s0, w.kappa), t, vw, aw);
@@ -54,6 +54,7 @@ double MorisonDrag3::power(const SpatialModel& model, const Kinematics3& kin, do
 
 // -∂F/∂V' = k l [2 D_ξ |V'_ξ| e eᵀ + D_η (|V'_η| (I - e eᵀ) + V'_η V'_ηᵀ / |V'_η|)], mapped by the point's Jacobian.
 void MorisonDrag3::addStiffness(const SpatialModel& model, const Kinematics3& kin, double t, SpatialStiffness& S) const {
+  if (at_rest_) return;  // no dependence on the rates
   const double k = 0.5 * water_.spec().density * model.line().line().outer_diameter;
   for (int i = 0; i < model.bodies(); ++i)
     for (int p = 0; p < 2; ++p) {

@@ -1,0 +1,28 @@
+// Static equilibrium in 3D by dynamic relaxation, for what the planar statics cannot solve in one vertical
+// plane (a current across it, a profile that veers with depth). From a guess at rest (the planar statics in
+// a nearby plane), the scene's line in still water with its steady current, plus mass-proportional damping
+// Q = -α M q' (every mode then decays at least at α/2, the lowest critically), is stepped by the structured
+// generalized_alpha with ρ∞ = 0 (the stiff modes die in a step) until the accelerations at rest
+// (restAcceleration, the builder's own check) are below the bound.
+#pragma once
+#include <string>
+
+#include "riser_sim/scene.h"
+#include "riser_sim/spatial/kinematics.h"
+
+namespace riser_sim {
+namespace spatial {
+
+struct Relaxed3 {
+  Kinematics3 kin;            // at rest
+  double acceleration = 0.0;  // largest at rest [m/s^2] (restAcceleration)
+  double time = 0.0;          // simulated [s]
+  int steps = 0;
+};
+
+// The scene's equilibrium near `guess` with A_0 at top; a pinned bottom is held where `guess` ends. Throws
+// std::runtime_error("initial: ...") when it does not meet `bound` [m/s^2] within its time budget.
+Relaxed3 relaxToRest(const Scene& scene, const Kinematics3& guess, const Vec3& top, double bound);
+
+}  // namespace spatial
+}  // namespace riser_sim

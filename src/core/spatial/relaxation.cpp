@@ -1,0 +1,136 @@
+#include "riser_sim/spatial/relaxation.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include "riser_sim/spatial/force_term.h"
+#include "riser_sim/spatial/forces/morison_drag.h"
+#include "riser_sim/spatial/run_builder.h"
+#include "riser_sim/spatial/simulator.h"
+
+namespace riser_sim {
+namespace spatial {
+
+namespace {
+
+// Q = -α ∂T/∂q' = -α M q': per part, the force -α m_p v_p at its centre and the couple -α J_p e' on e.
+class MassDamping : public SpatialForceTerm {
+ public:
+  explicit MassDamping(double alpha) : alpha_(alpha) {}
+  std::string name() const override { return "relaxation_damping"; }
+  void addForces(const SpatialModel& model, const Kinematics3& kin, double t, VecX& Q) const override {
+    sweep(model, kin, &Q);
+  }
+  double potentialEnergy(const SpatialModel&, const Kinematics3&) const override { return 0.0; }
+  double power(const SpatialModel& model, const Kinematics3& kin, double) const override {
+    return sweep(model, kin, nullptr);
+  }
+  void addStiffness(const SpatialModel& model, const Kinematics3& kin, double, SpatialStiffness& S) const override {
+    for (int i = 0; i < model.bodies(); ++i) {
+      const Rfe& r = model.rfe(i);
+      for (int p = 0; p < r.num_parts; ++p) {
+        const RigidPart& part = r.part[p];
+        Eigen::Matrix<double, 3, 7> J = Eigen::Matrix<double, 3, 7>::Zero();
+        J.block<3, 3>(0, kA).setIdentity();
+        J.col(kDelta3) = part.kappa * kin[i].e;
+        J.block<3, 3>(0, kE) = (part.s0 + part.kappa * kin[i].delta) * Mat3::Identity();
+        S.C_diag[i] += (alpha_ * part.mass) * J.transpose() * J;
+        S.C_diag[i].block<3, 3>(kE, kE) += (alpha_ * part.inertia) * Mat3::Identity();
+      }
+    }
+  }
+
+ private:
+  double sweep(const SpatialModel& model, const Kinematics3& kin, VecX* Q) const {
+    double pw = 0.0;
+    for (int i = 0; i < model.bodies(); ++i) {
+      const Rfe& r = model.rfe(i);
+      const BodyKinematics3& b = kin[i];
+      for (int p = 0; p < r.num_parts; ++p) {
+        const RigidPart& part = r.part[p];
+        const Vec3 v = b.velocity(part.s0, part.kappa);
+        const Vec3 F = -alpha_ * part.mass * v;
+        const Vec3 C = -alpha_ * part.inertia * b.e_dot;
+        if (Q) {
+          double* q = Q->data() + kDofPerBody3 * i;
+          addPointForce(b, part.s0, part.kappa, F, q);
+          for (int k = 0; k < 3; ++k) q[kE + k] += C[k];
+        }
+        pw += F.dot(v) + C.dot(b.e_dot);
+      }
+    }
+    return pw;
+  }
+  double alpha_;
+};
+
+std::string fmt(double v) {
+  std::ostringstream o;
+  o.precision(6);
+  o << v;
+  return o.str();
+}
+
+}  // namespace
+
+Relaxed3 relaxToRest(const Scene& scene, const Kinematics3& guess, const Vec3& top, double bound) {
+  const Scene still = stillWater(scene);
+  // The drag as the static load on the line held still (its damping would overdamp the slow modes).
+  Scene dragless = still;
+  dragless.hydro.drag_normal = dragless.hydro.drag_tangential = 0.0;
+  std::shared_ptr<SpatialModel> model = buildSpatialModel(dragless);
+  const HydroSpec& hs = still.hydro;
+  if (still.water.enabled && hs.enabled && (hs.drag_normal > 0.0 || hs.drag_tangential > 0.0))
+    model->addTerm(std::make_unique<MorisonDrag3>(Water3(still.water, model->gravity()), hs.drag_tangential,
+                                                  hs.drag_normal, true));
+  if (scene.bottom == BottomBoundary::kPinned) model->setBottom(BottomBoundary::kPinned, guess.back().end());
+  // The slowest mode of a hanging line is about its pendulum, ω1 ~ sqrt(g_wet / L) (g_wet: gravity less the
+  // buoyancy of the whole line; the current and the pins stiffen it). α = 2 ω1 damps it critically and every
+  // faster mode at α/2; a mode slower than the estimate would creep (at ω²/α), so ω1 errs low.
+  const Model& line = model->line();
+  const double lift = still.water.enabled ? still.water.density * line.line().externalArea() * scene.length : 0.0;
+  const double g_wet = scene.gravity * std::max(1.0 - lift / line.totalMass(), 0.05);
+  const double w1 = std::sqrt(std::max(g_wet, 1e-3) / scene.length);
+  model->addTerm(std::make_unique<MassDamping>(2.0 * w1));
+  IntegratorOptions io;
+  io.jacobian = JacobianKind::kStructured;
+  io.rho_inf = 0.0;
+  io.tolerance = scene.solver.tolerance;
+  SpatialSimulator sim(model, std::make_unique<FixedMotion3>(top), IntegratorKind::kGeneralizedAlpha, io,
+                       scene.solver.stabilization);
+  sim.reset(guess, 0.0);
+  Relaxed3 out;
+  int where = 0;
+  out.kin = guess;
+  out.acceleration = restAcceleration(still, guess, Vec3::Zero(), top, where);
+  double h = 0.2 / w1;  // 30 steps per time constant of the slowest mode
+  const double budget = 60.0 / w1;  // e^-60: from any guess the planar statics give
+  const int kCheck = 10;
+  while (!(out.acceleration <= 0.01 * bound)) {
+    if (out.time >= budget)
+      throw std::runtime_error("initial: the 3D equilibrium (dynamic relaxation from the planar statics) did not "
+                               "converge in " + fmt(out.time) + " s: acceleration at rest " + fmt(out.acceleration) +
+                               " m/s^2 at rfe " + std::to_string(where) + " (bound " + fmt(bound) +
+                               " m/s^2 from initial.tolerance)");
+    for (int k = 0; k < kCheck; ++k) {
+      if (!sim.step(h)) {  // Newton failed at this step: restart from the last state with half the step
+        if (h < 1e-4 / w1) throw std::runtime_error("initial: the 3D equilibrium (dynamic relaxation) failed: " +
+                                                    sim.integrator().failure());
+        h *= 0.5;
+        sim.reset(out.kin, sim.time());
+        break;
+      }
+      ++out.steps;
+    }
+    out.time = sim.time();
+    sim.kinematics(out.kin);
+    for (BodyKinematics3& b : out.kin) b.A_dot.setZero(), b.delta_dot = 0.0, b.e_dot.setZero();
+    out.acceleration = restAcceleration(still, out.kin, Vec3::Zero(), top, where);
+  }
+  return out;
+}
+
+}  // namespace spatial
+}  // namespace riser_sim
