@@ -58,6 +58,7 @@ add_library(riser_sim_core
   src/core/spatial/forces/buoyancy.cpp
   src/core/spatial/forces/morison_drag.cpp
   src/core/spatial/forces/froude_krylov.cpp
+  src/core/spatial/forces/seabed.cpp
 )
 target_include_directories(riser_sim_core PUBLIC include ${EIGEN3_INCLUDE_DIR})
 target_link_libraries(riser_sim_core PUBLIC yaml-cpp)

@@ -98,8 +98,9 @@ void parseHydrodynamics(const Section& root, Scene& s) {
 }
 
 void parseSeabed(const Section& root, Scene& s) {
-  const Section b = root.section(
-      "seabed", {"level", "stiffness_normal", "stiffness_tangential", "damping_normal", "damping_tangential"});
+  const Section b = root.section("seabed", {"level", "stiffness_normal", "stiffness_tangential", "damping_normal",
+                                            "damping_tangential", "friction_axial", "friction_lateral",
+                                            "friction_velocity"});
   s.seabed = SeabedSpec();
   s.seabed.enabled = root.has("seabed");
   if (!s.seabed.enabled) return;
@@ -109,8 +110,20 @@ void parseSeabed(const Section& root, Scene& s) {
   s.seabed.damping_normal = b.number("damping_normal", 0.0);
   s.seabed.damping_tangential = b.number("damping_tangential", 0.0);
   requirePositive(b.key("stiffness_normal"), s.seabed.stiffness_normal);
-  for (const char* k : {"stiffness_tangential", "damping_normal", "damping_tangential"})
+  for (const char* k : {"stiffness_tangential", "damping_normal", "damping_tangential", "friction_axial", "friction_lateral"})
     requireNonNegative(b.key(k), b.number(k, 0.0));
+  s.seabed.friction_axial = b.number("friction_axial", 0.0);
+  s.seabed.friction_lateral = b.number("friction_lateral", 0.0);
+  s.seabed.friction_velocity = b.number("friction_velocity", 0.01);
+  requirePositive(b.key("friction_velocity"), s.seabed.friction_velocity);
+  const bool planar = s.space == SpaceKind::kPlanar;
+  for (const char* k : {"friction_axial", "friction_lateral"})
+    if (planar && b.number(k, 0.0) > 0.0)
+      throw SceneError(b.key(k), "Coulomb friction is in the 3D core (set space: spatial); the planar seabed holds "
+                                 "the line with tangential springs anchored at touchdown (stiffness_tangential)");
+  if (!planar && s.seabed.stiffness_tangential > 0.0)
+    throw SceneError(b.key("stiffness_tangential"), "anchored tangential springs are planar only; the 3D seabed has "
+                                                    "Coulomb friction (friction_axial, friction_lateral)");
 }
 
 void parseInternalFluid(const Section& root, Scene& s) {

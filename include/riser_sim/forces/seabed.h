@@ -17,6 +17,9 @@ struct SeabedSpec {
   double stiffness_tangential = 0.0;  // C_E,x [N/m] per contact point
   double damping_normal = 0.0;        // [N s/m] per contact point
   double damping_tangential = 0.0;    // [N s/m] per contact point
+  // Coulomb friction (3D core only, spatial/forces/seabed.h): coefficients along the line's horizontal
+  // direction and across it, smoothed below the sliding speed friction_velocity [m/s].
+  double friction_axial = 0.0, friction_lateral = 0.0, friction_velocity = 0.01;
 };
 
 // x of every contact point j = 0..n+1 at touchdown; NaN while it is free.

@@ -25,8 +25,8 @@ namespace spatial {
 struct SceneIssue {
   std::string key, message;
 };
-// The first thing of a spatial scene the 3D core does not have yet (added mass, seabed, internal flow, the
-// chain formulations, dense Jacobians beyond kMaxDenseElements3).
+// The first thing of a spatial scene the 3D core does not have yet (added mass, internal flow, the chain
+// formulations, dense Jacobians beyond kMaxDenseElements3).
 std::optional<SceneIssue> unsupported(const Scene& scene);
 // Implicit schemes with solver.jacobian dense run a p x p Jacobian in 3D, p = 7(n + 1): n <= 570 keeps
 // p <= 4000 (the structured solves, auto, have no such limit).

@@ -14,6 +14,7 @@
 #include "riser_sim/spatial/forces/gravity.h"
 #include "riser_sim/spatial/forces/morison_drag.h"
 #include "riser_sim/spatial/relaxation.h"
+#include "riser_sim/spatial/forces/seabed.h"
 
 namespace riser_sim {
 namespace spatial {
@@ -45,7 +46,6 @@ std::optional<SceneIssue> unsupported(const Scene& s) {
   if (s.hydro.enabled && s.hydro.inertia_coefficient != 1.0)
     return SceneIssue{"hydrodynamics.inertia_coefficient",
                       "C_M != 1 (added mass) is " + yet + " (buoyancy, drag and the Froude-Krylov force with C_M = 1 are)"};
-  if (s.seabed.enabled) return SceneIssue{"seabed", yet + " (no seabed contact in the 3D core)"};
   const InternalFlowSpec& f = s.internal_fluid;
   if (f.density > 0.0 && (f.velocity != 0.0 || f.acceleration != 0.0))
     return SceneIssue{"internal_fluid", "a flow (velocity or acceleration != 0) is " + yet +
@@ -121,6 +121,7 @@ std::shared_ptr<SpatialModel> buildSpatialModel(const Scene& scene) {
       model->addTerm(std::make_unique<MorisonDrag3>(water, h.drag_tangential, h.drag_normal));
     if (h.enabled && water.moving()) model->addTerm(std::make_unique<FroudeKrylov3>(water));
   }
+  if (scene.seabed.enabled) model->addTerm(std::make_unique<Seabed3>(scene.seabed, model->gravity()));
   if (scene.torsion.enabled) {
     const TorsionSpec& t = scene.torsion;
     model->setTorsion(TorsionProperties{t.stiffness, t.polar_inertia, t.damping, t.end_polar_inertia});

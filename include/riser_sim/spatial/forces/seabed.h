@@ -1,0 +1,44 @@
+// Seabed in 3D: a level plane (height `level` along "up", against gravity) touched by the contact points, the
+// joints A_0..A_n and the end of rfe n (as the planar Seabed). Below it, per point:
+// - normal: F_n = max(C_n p - c_n v_up, 0) up (p the penetration; never pulls), V = ½ C_n p²;
+// - tangential damping -c_t v_h (v_h the velocity along the plane);
+// - Coulomb friction, smoothed: F_f = -F_n (μ_a v_a a + μ_l v_l l) / sqrt(v_a² + v_l² + v_s²), with a the line's
+//   direction projected on the plane (rfe j's, the end's rfe for the end), l = up × a, v_s the sliding speed
+//   below which it acts as a viscous stick (friction_velocity). Sliding along a: μ_a F_n; across: μ_l F_n.
+#pragma once
+#include "riser_sim/forces/seabed.h"
+#include "riser_sim/spatial/force_term.h"
+
+namespace riser_sim {
+namespace spatial {
+
+class Seabed3 : public SpatialForceTerm {
+ public:
+  Seabed3(const SeabedSpec& spec, const Vec3& gravity);
+  std::string name() const override { return "seabed"; }
+  void addForces(const SpatialModel& model, const Kinematics3& kin, double t, VecX& Q) const override;
+  double potentialEnergy(const SpatialModel& model, const Kinematics3& kin) const override;
+  double power(const SpatialModel& model, const Kinematics3& kin, double t) const override;
+  double addForcesAndPower(const SpatialModel& model, const Kinematics3& kin, double t, VecX& Q) const override;
+  // The normal spring and the dampers (the friction's slope F_n μ / sqrt(v² + v_s²) as a damper).
+  void addStiffness(const SpatialModel& model, const Kinematics3& kin, double t, SpatialStiffness& S) const override;
+  // Contact points below the level.
+  int contacts(const SpatialModel& model, const Kinematics3& kin) const;
+
+ private:
+  struct Contact {
+    int body;
+    double s0, kappa;
+    Vec3 p, v;
+  };
+  Contact contact(const SpatialModel& model, const Kinematics3& kin, int j) const;
+  double penetration(const Vec3& p) const { return spec_.level - up_.dot(p); }
+  // The contact force; conservative: the spring alone.
+  Vec3 force(const Contact& c, const Vec3& e, bool conservative) const;
+  double sweep(const SpatialModel& model, const Kinematics3& kin, VecX* Q) const;
+  SeabedSpec spec_;
+  Vec3 up_;
+};
+
+}  // namespace spatial
+}  // namespace riser_sim

@@ -1,0 +1,111 @@
+#include "riser_sim/spatial/forces/seabed.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace riser_sim {
+namespace spatial {
+
+namespace {
+// Velocity (and position) of the point (s0, κ) of b per q' (3x7): [I, κ e, s I].
+Eigen::Matrix<double, 3, 7> pointJacobian(const BodyKinematics3& b, double s0, double kappa) {
+  Eigen::Matrix<double, 3, 7> J = Eigen::Matrix<double, 3, 7>::Zero();
+  J.block<3, 3>(0, kA).setIdentity();
+  J.col(kDelta3) = kappa * b.e;
+  J.block<3, 3>(0, kE) = (s0 + kappa * b.delta) * Mat3::Identity();
+  return J;
+}
+}  // namespace
+
+Seabed3::Seabed3(const SeabedSpec& spec, const Vec3& gravity)
+    : spec_(spec), up_(gravity.norm() > 0.0 ? Vec3(-gravity.normalized()) : Vec3::UnitZ()) {}
+
+Seabed3::Contact Seabed3::contact(const SpatialModel& model, const Kinematics3& kin, int j) const {
+  const int n1 = model.bodies();
+  Contact c;
+  c.body = j < n1 ? j : n1 - 1;
+  c.s0 = j < n1 ? 0.0 : model.rfe(c.body).length;
+  c.kappa = j < n1 ? 0.0 : 1.0;
+  c.p = kin[c.body].point(c.s0, c.kappa);
+  c.v = kin[c.body].velocity(c.s0, c.kappa);
+  return c;
+}
+
+Vec3 Seabed3::force(const Contact& c, const Vec3& e, bool conservative) const {
+  const double pen = penetration(c.p);
+  if (conservative) return (spec_.stiffness_normal * pen) * up_;
+  const double vn = up_.dot(c.v);
+  const double fn = std::max(spec_.stiffness_normal * pen - spec_.damping_normal * vn, 0.0);
+  const Vec3 vh = c.v - vn * up_;
+  Vec3 F = fn * up_ - spec_.damping_tangential * vh;
+  if (fn > 0.0 && (spec_.friction_axial > 0.0 || spec_.friction_lateral > 0.0)) {
+    Vec3 a = e - up_.dot(e) * up_;
+    const double an = a.norm();
+    a = an > 1e-12 ? Vec3(a / an) : Vec3(up_.unitOrthogonal());  // an upright rfe: any direction
+    const Vec3 l = up_.cross(a);
+    const double va = vh.dot(a), vl = vh.dot(l);
+    const double vs = spec_.friction_velocity;
+    F -= (fn / std::sqrt(va * va + vl * vl + vs * vs)) * (spec_.friction_axial * va * a + spec_.friction_lateral * vl * l);
+  }
+  return F;
+}
+
+double Seabed3::sweep(const SpatialModel& model, const Kinematics3& kin, VecX* Q) const {
+  double pw = 0.0;
+  for (int j = 0; j <= model.bodies(); ++j) {
+    const Contact c = contact(model, kin, j);
+    if (!(penetration(c.p) > 0.0)) continue;
+    const Vec3 F = force(c, kin[c.body].e, false);
+    if (Q) addPointForce(kin[c.body], c.s0, c.kappa, F, Q->data() + kDofPerBody3 * c.body);
+    pw += (F - force(c, kin[c.body].e, true)).dot(c.v);  // all but the spring: dampers, friction, the no-pull clamp
+  }
+  return pw;
+}
+
+void Seabed3::addForces(const SpatialModel& model, const Kinematics3& kin, double, VecX& Q) const {
+  sweep(model, kin, &Q);
+}
+
+double Seabed3::addForcesAndPower(const SpatialModel& model, const Kinematics3& kin, double, VecX& Q) const {
+  return sweep(model, kin, &Q);
+}
+
+double Seabed3::power(const SpatialModel& model, const Kinematics3& kin, double) const {
+  return sweep(model, kin, nullptr);
+}
+
+double Seabed3::potentialEnergy(const SpatialModel& model, const Kinematics3& kin) const {
+  double v = 0.0;
+  for (int j = 0; j <= model.bodies(); ++j) {
+    const double pen = penetration(contact(model, kin, j).p);
+    if (pen > 0.0) v += 0.5 * spec_.stiffness_normal * pen * pen;
+  }
+  return v;
+}
+
+int Seabed3::contacts(const SpatialModel& model, const Kinematics3& kin) const {
+  int n = 0;
+  for (int j = 0; j <= model.bodies(); ++j) n += penetration(contact(model, kin, j).p) > 0.0;
+  return n;
+}
+
+void Seabed3::addStiffness(const SpatialModel& model, const Kinematics3& kin, double, SpatialStiffness& S) const {
+  const Mat3 UU = up_ * up_.transpose(), P = Mat3::Identity() - UU;
+  for (int j = 0; j <= model.bodies(); ++j) {
+    const Contact c = contact(model, kin, j);
+    const double pen = penetration(c.p);
+    if (!(pen > 0.0)) continue;
+    const double fn = std::max(spec_.stiffness_normal * pen - spec_.damping_normal * up_.dot(c.v), 0.0);
+    const double mu = std::max(spec_.friction_axial, spec_.friction_lateral);
+    const Vec3 vh = P * c.v;
+    const double slope = fn * mu / std::sqrt(vh.squaredNorm() + spec_.friction_velocity * spec_.friction_velocity);
+    const Mat3 K = spec_.stiffness_normal * UU;
+    const Mat3 C = spec_.damping_normal * UU + (spec_.damping_tangential + slope) * P;
+    const Eigen::Matrix<double, 3, 7> J = pointJacobian(kin[c.body], c.s0, c.kappa);
+    S.K_diag[c.body] += J.transpose() * K * J;
+    S.C_diag[c.body] += J.transpose() * C * J;
+  }
+}
+
+}  // namespace spatial
+}  // namespace riser_sim
