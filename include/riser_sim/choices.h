@@ -18,6 +18,7 @@ enum class InitialKind { kHanging, kDisplaced, kBetweenPoints, kStraight };  // 
 enum class EndForceKind { kRelease, kHold };                           // initial.end_force
 enum class FlowModelKind { kPipeFlow, kPaper };                        // internal_fluid.model
 enum class SpaceKind { kPlanar, kSpatial };                            // space
+enum class WaveKind { kRegular, kJonswap };                            // environment.waves.type
 
 template <class E>
 struct Choices;  // static constexpr std::array<std::pair<E, const char*>, N> names
@@ -68,6 +69,12 @@ template <>
 struct Choices<FlowModelKind> {
   static constexpr std::array<std::pair<FlowModelKind, const char*>, 2> names{
       {{FlowModelKind::kPipeFlow, "pipe_flow"}, {FlowModelKind::kPaper, "paper"}}};
+};
+
+template <>
+struct Choices<WaveKind> {
+  static constexpr std::array<std::pair<WaveKind, const char*>, 2> names{
+      {{WaveKind::kRegular, "regular"}, {WaveKind::kJonswap, "jonswap"}}};
 };
 
 template <>

@@ -1,8 +1,10 @@
 // Sea state: water density and free surface, current (uniform or depth profile, optionally
-// accelerating) and regular linear (Airy) waves with finite-depth kinematics.
+// accelerating) and linear waves with finite-depth kinematics: regular (Airy) or irregular long-crested
+// (a sum of Airy components from a JONSWAP spectrum, random phases from a seed).
 #pragma once
 #include <vector>
 
+#include "riser_sim/choices.h"
 #include "riser_sim/types.h"
 
 namespace riser_sim {
@@ -21,6 +23,7 @@ struct CurrentSpec {
 };
 
 struct WaveSpec {
+  WaveKind type = WaveKind::kRegular;  // regular (Airy) or irregular long-crested (JONSWAP)
   double height = 0.0;     // H, crest to trough [m]; 0 = no waves
   double period = 10.0;    // T [s]
   double phase = 0.0;      // [rad]
@@ -28,6 +31,12 @@ struct WaveSpec {
   double heading = 0.0;    // azimuth of +direction from +x towards +y [rad] (3D only; planar: 0)
   double depth = 1000.0;   // water depth for the dispersion relation [m]
   double ramp = 0.0;       // amplitude ramped from 0 at t = 0 to full at t = ramp, ½(1 - cos πt/ramp) [s]; 0 = none
+  // jonswap: significant height Hs [m] (0 = no waves), peak period Tp [s], peak enhancement γ, the number of
+  // components on [0.5, 3] ω_p (equal bins) and the seed of their random phases (the same seed, the same sea).
+  double significant_height = 0.0, peak_period = 10.0, gamma = 3.3;
+  int components = 100;
+  unsigned seed = 1;
+  bool active() const { return type == WaveKind::kRegular ? height > 0.0 : significant_height > 0.0; }
 };
 
 struct WaterSpec {
@@ -45,7 +54,17 @@ class WaterKinematics {
   bool moving() const { return moving_; }
   // Water particle velocity and acceleration at point p [m] and time t [s] (zero above the surface).
   void at(const Vec2& p, double t, Vec2& velocity, Vec2& acceleration) const;
-  double waveNumber() const { return k_; }  // from ω² = g k tanh(k h)
+  double waveNumber() const { return comp_.empty() ? 0.0 : comp_.front().k; }  // regular: from ω² = g k tanh(k h)
+  // Surface elevation above the mean level [m] at horizontal position x and time t (ramp included).
+  double elevation(double x, double t) const;
+  // The wave components: amplitude [m], ω [rad/s], k [1/m], phase [rad] (one for regular waves).
+  struct Component {
+    double a, omega, k, phase, decay;  // decay: 1 - e^{-2kh}
+  };
+  const std::vector<Component>& components() const { return comp_; }
+  // The JONSWAP spectral density S(ω) [m² s/rad] of a sea with Hs, Tp, γ, before the normalisation to Hs
+  // (the Pierson-Moskowitz shape with α = 1; WaterKinematics scales the components to m0 = Hs²/16).
+  static double jonswapShape(double omega, double omega_p, double gamma);
   // The steady part at time t: no waves, the current frozen at its velocity at t (what the statics see).
   WaterKinematics steady(double t) const;
   // Wave amplitude factor at t (0 before, 1 after the ramp) and its rate [1/s] in *rate.
@@ -53,9 +72,9 @@ class WaterKinematics {
 
  private:
   // cosh(k(z+h))/sinh(kh) and sinh(k(z+h))/sinh(kh) at z below the surface, finite for any k h.
-  void depthRatios(double z, double& c, double& s) const;
+  void depthRatios(const Component& c, double z, double& ch, double& sh) const;
   WaterSpec spec_;
-  double omega_ = 0.0, k_ = 0.0;
+  std::vector<Component> comp_;
   bool moving_ = false;
 };
 

@@ -3,6 +3,7 @@
 // (docs/scene_keys.md). A 2-vector keeps its planar meaning [x, z_up]; a 3-vector is [x, y, z].
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "scene_section.h"
 
@@ -45,14 +46,35 @@ void parseCurrent(const Section& env, Scene& s) {
 }
 
 void parseWaves(const Section& env, Scene& s) {
-  const Section w = env.section("waves", {"height", "period", "phase", "direction", "heading", "depth", "ramp"});
+  const Section w = env.section("waves", {"type", "height", "period", "phase", "direction", "heading", "depth", "ramp",
+                                          "significant_height", "peak_period", "gamma", "components", "seed"});
   WaveSpec& wave = s.water.waves;
   wave = WaveSpec();
+  wave.type = w.choice("type", WaveKind::kRegular);
+  const bool regular = wave.type == WaveKind::kRegular;
+  // The other type's keys are refused, not ignored.
+  for (const char* k : regular ? std::vector<const char*>{"significant_height", "peak_period", "gamma", "components", "seed"}
+                               : std::vector<const char*>{"height", "period", "phase"})
+    if (w.has(k))
+      throw SceneError(w.key(k), std::string("belongs to waves of type ") + (regular ? "jonswap" : "regular") +
+                                     ", not '" + name(wave.type) + "'");
   wave.height = w.number("height", 0.0);
   requireNonNegative(w.key("height"), wave.height);
   wave.period = w.has("height") ? w.number("period") : w.number("period", 10.0);
   requirePositive(w.key("period"), wave.period);
   wave.phase = w.number("phase", 0.0);
+  wave.significant_height = w.number("significant_height", 0.0);
+  requireNonNegative(w.key("significant_height"), wave.significant_height);
+  wave.peak_period = w.has("significant_height") ? w.number("peak_period") : w.number("peak_period", 10.0);
+  requirePositive(w.key("peak_period"), wave.peak_period);
+  wave.gamma = w.number("gamma", 3.3);
+  if (!(wave.gamma >= 1.0 && wave.gamma <= 20.0)) throw SceneError(w.key("gamma"), "must be in [1, 20], got " + formatNumber(wave.gamma));
+  wave.components = w.has("components") ? w.integer("components") : 100;
+  if (wave.components < 1 || wave.components > 2000)
+    throw SceneError(w.key("components"), "must be in [1, 2000], got " + std::to_string(wave.components));
+  const int seed = w.has("seed") ? w.integer("seed") : 1;
+  if (seed < 0) throw SceneError(w.key("seed"), "must be >= 0, got " + std::to_string(seed));
+  wave.seed = static_cast<unsigned>(seed);
   wave.direction = w.number("direction", 1.0);
   if (wave.direction != 1.0 && wave.direction != -1.0) throw SceneError(w.key("direction"), "must be 1 or -1");
   wave.heading = w.number("heading", 0.0) * kDegToRad;

@@ -173,6 +173,7 @@ CurrentSpec planarCurrent(const CurrentSpec& c, const Vec2& u, double& across) {
 Scene stillWater(const Scene& scene) {
   Scene s = scene;
   s.water.waves.height = 0.0;
+  s.water.waves.significant_height = 0.0;
   return s;
 }
 

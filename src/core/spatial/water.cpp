@@ -13,7 +13,7 @@ WaterSpec wavesOnly(const WaterSpec& spec) {
   WaterSpec w = spec;
   w.current = CurrentSpec();
   w.surface = 0.0;
-  if (w.waves.height > 0.0) w.waves.heading = 0.0;
+  w.waves.heading = 0.0;
   return w;
 }
 
@@ -26,8 +26,8 @@ Water3::Water3(const WaterSpec& spec, const Vec3& gravity)
       up_(gravity.norm() > 0.0 ? Vec3(-gravity.normalized()) : Vec3::UnitZ()),
       waves_(wavesOnly(spec), gravity.norm()) {
   const CurrentSpec& c = spec.current;
-  moving_ = c.velocity3.norm() > 0.0 || c.acceleration3.norm() > 0.0 || !c.profile.empty() || spec.waves.height > 0.0;
-  if (spec.waves.height > 0.0 && !vertical(gravity))
+  moving_ = c.velocity3.norm() > 0.0 || c.acceleration3.norm() > 0.0 || !c.profile.empty() || spec.waves.active();
+  if (spec.waves.active() && !vertical(gravity))
     throw std::invalid_argument("environment.waves: need gravity along -z (the waves' heading is horizontal)");
   if (!c.profile.empty() && gravity.norm() > 0.0 && !vertical(gravity))
     throw std::invalid_argument("environment.current.profile: needs gravity along -z (the profile is horizontal)");
@@ -37,6 +37,7 @@ Water3::Water3(const WaterSpec& spec, const Vec3& gravity)
 Water3 Water3::steady(double t) const {
   WaterSpec s = spec_;
   s.waves.height = 0.0;
+  s.waves.significant_height = 0.0;
   CurrentSpec& c = s.current;
   c.velocity3 += c.acceleration3 * t;
   c.velocity += c.acceleration * t;
@@ -72,7 +73,7 @@ void Water3::at(const Vec3& p, double t, Vec3& v, Vec3& a) const {
     v.x() = vx + c.acceleration3.x() * t;
     v.y() = vy + c.acceleration3.y() * t;
   }
-  if (spec_.waves.height > 0.0) {
+  if (spec_.waves.active()) {
     Vec2 vw, aw;
     waves_.at(Vec2(wave_dir_.dot(p), z), t, vw, aw);
     v += vw.x() * wave_dir_ + vw.y() * up_;
