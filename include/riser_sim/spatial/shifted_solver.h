@@ -51,7 +51,11 @@ class ShiftedSolver3 {
     Mat7 Kup;               // K(i, i+1) = K_sub[i+1]ᵀ + K_sup[i+1] (the right side's coupling to rfe i+1)
     Mat37 gE, pE, rE;       // Baumgarte law of E_i: g δa + p δv + r δq (g = B_E = ∂E/∂q)
     Vec7 gu, pu, ru;        // Baumgarte law of the unit length
-    Mat11 L, Y;             // block row's coupling to the block before; Y = D̃⁻¹ U to the block after
+    // The block row's coupling to x_v of the block before (rows λ_i, x_v,i; the unit-length row has none), and
+    // Y = D̃⁻¹ U, U the coupling to λ_{i+1}, x_v,i+1 of the block after (D̃⁻¹ U has no ν column): the nonzero
+    // parts only, to keep the per-rfe workspace small (n = 1000 runs from L3).
+    Eigen::Matrix<double, 10, 7> L;
+    Eigen::Matrix<double, 11, 10> Y;
     Mat11 lu;               // D̃ = P⁻¹ L U in place (partial pivoting: piv[k] is the row swapped with row k)
     int piv[11];
     Vec11 z;

@@ -193,9 +193,9 @@ void ShiftedSolver3::factor(double c) {
     if (i > 0) {
       const Body& P = body_[i - 1];
       // L: columns of x_v,i-1 only; row 10 (unit length) and column 10 of Y (ν) are zero.
-      B.L.block<3, 7>(0, 3) = -(P.gE + c * P.pE + c2 * P.rE);
-      B.L.block<7, 7>(3, 3) = c * S_.C_sub[i] + c2 * S_.K_sub[i];
-      D.topLeftCorner<10, 10>() -= B.L.block<10, 7>(0, 3).lazyProduct(P.Y.block<7, 10>(3, 0));
+      B.L.topRows<3>() = -(P.gE + c * P.pE + c2 * P.rE);
+      B.L.bottomRows<7>() = c * S_.C_sub[i] + c2 * S_.K_sub[i];
+      D.topLeftCorner<10, 10>() -= B.L.lazyProduct(P.Y.middleRows<7>(3));
     }
     luFactor(D, B.piv);
     if (i + 1 < blocks()) {
@@ -203,8 +203,7 @@ void ShiftedSolver3::factor(double c) {
       U.block<7, 3>(3, 0) = -B.gE.transpose();
       if (i + 1 < nb_) U.block<7, 7>(3, 3) = (c * S_.C_sub[i + 1]).transpose() + c2 * B.Kup;
       luSolveRows(D, B.piv, U);
-      B.Y.leftCols<10>() = U;
-      B.Y.col(10).setZero();
+      B.Y = U;
     }
   }
   if (pinned_) {  // E_n = p_b: rows 0..2; the rest of the block is padding (identity)
@@ -214,8 +213,8 @@ void ShiftedSolver3::factor(double c) {
     D.setIdentity();
     D.block<3, 3>(0, 0).setZero();
     B.L.setZero();
-    B.L.block<3, 7>(0, 3) = -(P.gE + c * P.pE + c2 * P.rE);
-    D.topLeftCorner<10, 10>() -= B.L.block<10, 7>(0, 3).lazyProduct(P.Y.block<7, 10>(3, 0));
+    B.L.topRows<3>() = -(P.gE + c * P.pE + c2 * P.rE);
+    D.topLeftCorner<10, 10>() -= B.L.lazyProduct(P.Y.middleRows<7>(3));
     luFactor(D, B.piv);
   }
   if (nt_ > 0) {  // spins: diagonal J_i + s (joints at i), off-diagonal -s between rows i, i+1 >= 1
@@ -257,11 +256,11 @@ void ShiftedSolver3::solve(const VecX& b, VecX& x) {
   Vec11 r;
   for (int i = 0; i < nblk; ++i) {
     assembleRhs(i, b, r);
-    if (i > 0) r.head<10>().noalias() -= body_[i].L.block<10, 7>(0, 3) * body_[i - 1].z.segment<7>(3);
+    if (i > 0) r.head<10>().noalias() -= body_[i].L * body_[i - 1].z.segment<7>(3);
     luSolve(body_[i].lu, body_[i].piv, r.data());
     body_[i].z = r;
   }
-  for (int i = nblk - 2; i >= 0; --i) body_[i].z.noalias() -= body_[i].Y.leftCols<10>() * body_[i + 1].z.head<10>();
+  for (int i = nblk - 2; i >= 0; --i) body_[i].z.noalias() -= body_[i].Y * body_[i + 1].z.head<10>();
   for (int i = 0; i < nb_; ++i) {
     const auto xv = body_[i].z.segment<7>(3);
     x.segment<7>(vo_ + kDofPerBody3 * i) = xv;
