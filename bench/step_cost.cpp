@@ -11,7 +11,15 @@
 // median of 3. The growth exponent is the log-log least-squares slope over the measured n.
 // Writes <out>/step_cost.csv.
 //
-//   riser_sim_bench_step_cost [--out DIR] [--root DIR] [--target S] [--max-n N] [--quick]
+// 3D against 2D (spatialRows, also alone with --spatial): the same planar line (100 m, axial and bending
+// springs with damping, an end mass, released 20 degrees off the vertical under a swaying top) stepped by
+// the planar Simulator and by the 3D SpatialSimulator (the line in the x-z plane), n = 10, 100, 300, 1000:
+// rk4 (2D absolute) at half the planar rk4 limit, and implicit midpoint with structured solves (2D
+// recursive) at h = 1e-3 s. The two are interleaved in blocks of steps (thread CPU time), medians over
+// the blocks, the ratio's spread over repeats; growth exponents over n = 100..1000.
+// Writes <out>/step_cost_3d.csv.
+//
+//   riser_sim_bench_step_cost [--out DIR] [--root DIR] [--target S] [--max-n N] [--quick] [--spatial]
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -21,8 +29,16 @@
 #include <string>
 #include <vector>
 
+#include "riser_sim/forces/axial_spring.h"
+#include "riser_sim/forces/bending_spring.h"
+#include "riser_sim/forces/gravity.h"
 #include "riser_sim/scene.h"
 #include "riser_sim/scene_yaml.h"
+#include "riser_sim/simulator.h"
+#include "riser_sim/spatial/forces/axial_spring.h"
+#include "riser_sim/spatial/forces/bending_spring.h"
+#include "riser_sim/spatial/forces/gravity.h"
+#include "riser_sim/spatial/simulator.h"
 
 namespace {
 
@@ -148,13 +164,168 @@ double slope(const std::vector<double>& x, const std::vector<double>& y) {
   return (m * sxy - sx * sy) / (m * sxx - sx * sx);
 }
 
+// ---- 3D against 2D on one planar line ----
+
+struct Line3 {
+  LineProperties props;
+  ModelOptions options;
+  double length = 100.0, end_mass = 500.0, g = 9.81;
+};
+
+Line3 line3() {
+  Line3 l;
+  l.props.mass_per_length = 10.0;
+  l.props.EA = 1e7;
+  l.props.EI = 1e4;
+  l.props.axial_damping = 1e4;
+  l.props.bending_damping = 100.0;
+  return l;
+}
+
+std::unique_ptr<TopMotion> sway() {
+  return std::make_unique<SinusoidMotion>(Vec2(-1.0, 0.0), Vec2(1.0, 0.0), 10.0, 0.0);
+}
+
+// Straight line from the top at 20 degrees from straight down, at rest.
+Kinematics released(const Model& m) {
+  Kinematics kin(m.bodies());
+  const double phi = -M_PI / 2 + 20.0 * M_PI / 180.0;
+  Vec2 A = Vec2::Zero();
+  for (int i = 0; i < m.bodies(); ++i) {
+    BodyKinematics& b = kin[i];
+    b.A = A;
+    b.phi = phi;
+    b.c = std::cos(phi);
+    b.s = std::sin(phi);
+    b.len = m.rfe(i).length;
+    A = b.end();
+  }
+  return kin;
+}
+
+struct Pair3 {
+  double us2 = 0.0, us3 = 0.0, ratio = 0.0, ratio_lo = 0.0, ratio_hi = 0.0, h = 0.0, newton2 = 0.0, newton3 = 0.0;
+  bool ok = false;
+  std::string why;
+};
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
+// One (n, integrator): planar Simulator and SpatialSimulator on the same line, blocks of steps interleaved.
+Pair3 timePair(int n, bool implicit, double target) {
+  Pair3 r;
+  const Line3 l = line3();
+  auto m2 = std::make_shared<Model>(l.length, n, l.props, l.options, l.end_mass, l.g);
+  m2->addTerm(std::make_unique<Gravity>());
+  m2->addTerm(std::make_unique<AxialSpring>());
+  m2->addTerm(std::make_unique<BendingSpring>());
+  auto m3 = std::make_shared<spatial::SpatialModel>(l.length, n, l.props, l.options, l.end_mass, spatial::Vec3(0, 0, -l.g));
+  m3->addTerm(std::make_unique<spatial::Gravity>());
+  m3->addTerm(std::make_unique<spatial::AxialSpring>());
+  m3->addTerm(std::make_unique<spatial::BendingSpring>());
+  const Kinematics kin0 = released(*m2);
+  SolverSettings st;
+  st.integrator = implicit ? IntegratorKind::kMidpoint : IntegratorKind::kRk4;
+  st.formulation = implicit ? FormulationKind::kRecursive : FormulationKind::kAbsolute;
+  st.jacobian = implicit ? JacobianKind::kStructured : JacobianKind::kAuto;
+  st.dt = 1e-3;
+  try {
+    if (!implicit) {
+      Simulator probe(m2, sway(), st);
+      probe.setInitialState(kin0, 0.0);
+      st.dt = 0.5 * probe.stableStepEstimate();
+    }
+    r.h = st.dt;
+    Simulator sim2(m2, sway(), st);
+    sim2.setInitialState(kin0, 0.0);
+    IntegratorOptions o;
+    o.jacobian = JacobianKind::kStructured;
+    spatial::SpatialSimulator sim3(m3, std::make_unique<spatial::PlanarMotion3>(sway()), st.integrator, o);
+    sim3.reset(spatial::fromPlanar(kin0), 0.0);
+    // Warm-up, then the block length from the cost of one step of each.
+    double c0 = threadCpu();
+    for (int k = 0; k < 3; ++k)
+      if (!sim2.step()) throw std::runtime_error("2D: " + sim2.divergenceReason());
+    const double w2 = (threadCpu() - c0) / 3;
+    c0 = threadCpu();
+    for (int k = 0; k < 3; ++k)
+      if (!sim3.step(st.dt)) throw std::runtime_error("3D: step failed");
+    const double w3 = (threadCpu() - c0) / 3;
+    const int blocks = 15;
+    const long per = std::max(3L, std::lround(target / blocks / (w2 + w3)));
+    std::vector<double> t2, t3, ratio;
+    const long newton2 = sim2.integrator().stats().newton, newton3 = sim3.integrator().stats().newton;
+    for (int b = 0; b < blocks; ++b) {
+      c0 = threadCpu();
+      for (long k = 0; k < per; ++k)
+        if (!sim2.step()) throw std::runtime_error("2D: " + sim2.divergenceReason());
+      const double c1 = threadCpu();
+      for (long k = 0; k < per; ++k)
+        if (!sim3.step(st.dt)) throw std::runtime_error("3D: step failed");
+      const double c2 = threadCpu();
+      t2.push_back((c1 - c0) / per);
+      t3.push_back((c2 - c1) / per);
+      ratio.push_back(t3.back() / t2.back());
+    }
+    if (!sim3.state().allFinite()) throw std::runtime_error("3D: state not finite");
+    const double steps = double(blocks * per);
+    r.newton2 = double(sim2.integrator().stats().newton - newton2) / steps;
+    r.newton3 = double(sim3.integrator().stats().newton - newton3) / steps;
+    r.us2 = 1e6 * median(t2);
+    r.us3 = 1e6 * median(t3);
+    r.ratio = r.us3 / r.us2;
+    std::sort(ratio.begin(), ratio.end());
+    r.ratio_lo = ratio[blocks / 4];
+    r.ratio_hi = ratio[(3 * blocks) / 4];
+    r.ok = true;
+  } catch (const std::exception& e) {
+    r.why = e.what();
+  }
+  return r;
+}
+
+void spatialRows(const std::string& out_dir, double target, int max_n, bool quick) {
+  std::vector<int> ns = {10, 100, 300, 1000};
+  if (quick) ns = {10, 100};
+  std::FILE* csv = std::fopen((out_dir + "/step_cost_3d.csv").c_str(), "w");
+  if (csv) std::fprintf(csv, "integrator,n,h,us_per_step_2d,us_per_step_3d,ratio,ratio_q1,ratio_q3,newton_2d,newton_3d\n");
+  std::printf("\n3D against 2D, the same planar line (thread CPU time per step, interleaved blocks, medians; ratio "
+              "3D/2D with its quartiles over the blocks):\n\n| integrator | n | h [s] | 2D [us] | 3D [us] | ratio | "
+              "ratio q1..q3 |\n|---|---|---|---|---|---|---|\n");
+  for (const bool implicit : {false, true}) {
+    const char* name = implicit ? "midpoint structured (2D recursive)" : "rk4 (2D absolute)";
+    std::vector<double> xs, y2, y3;
+    for (int n : ns) {
+      if (n > max_n) continue;
+      const Pair3 r = timePair(n, implicit, std::max(target, 0.5));
+      if (!r.ok) {
+        std::printf("| %s | %d | - | failed: %s | | | |\n", name, n, r.why.c_str());
+        continue;
+      }
+      std::printf("| %s | %d | %.3g | %.3g | %.3g | %.2f | %.2f..%.2f |\n", name, n, r.h, r.us2, r.us3, r.ratio,
+                  r.ratio_lo, r.ratio_hi);
+      std::fflush(stdout);
+      if (csv)
+        std::fprintf(csv, "%s,%d,%.6g,%.6g,%.6g,%.4g,%.4g,%.4g,%.3g,%.3g\n", implicit ? "midpoint" : "rk4", n, r.h,
+                     r.us2, r.us3, r.ratio, r.ratio_lo, r.ratio_hi, r.newton2, r.newton3);
+      if (n >= 100) xs.push_back(n + 1), y2.push_back(r.us2), y3.push_back(r.us3);
+    }
+    std::printf("| %s | exponent n = 100..1000 | | %.2f | %.2f | | |\n", name, slope(xs, y2), slope(xs, y3));
+  }
+  if (csv) std::fclose(csv);
+  std::printf("\nwrote %s/step_cost_3d.csv\n", out_dir.c_str());
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   std::string out_dir = "out/bench", root = ".";
   double target = 0.3;
   int max_n = 1000;
-  bool quick = false;
+  bool quick = false, spatial_only = false;
   for (int i = 1; i < argc; ++i) {
     const bool more = i + 1 < argc;
     if (!std::strcmp(argv[i], "--out") && more) out_dir = argv[++i];
@@ -162,15 +333,20 @@ int main(int argc, char** argv) {
     else if (!std::strcmp(argv[i], "--target") && more) target = std::atof(argv[++i]);
     else if (!std::strcmp(argv[i], "--max-n") && more) max_n = std::atoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--quick")) quick = true;
+    else if (!std::strcmp(argv[i], "--spatial")) spatial_only = true;
     else {
       std::fprintf(stderr, "usage: riser_sim_bench_step_cost [--out DIR] [--root DIR] [--target S] [--max-n N] "
-                           "[--quick]\n");
+                           "[--quick] [--spatial]\n");
       return std::strcmp(argv[i], "--help") ? 2 : 0;
     }
   }
   std::vector<int> ns = {10, 20, 40, 100, 200, 400, 1000};
   if (quick) ns = {10, 40, 100};
   std::filesystem::create_directories(out_dir);
+  if (spatial_only) {
+    spatialRows(out_dir, target, max_n, quick);
+    return 0;
+  }
   std::FILE* csv = std::fopen((out_dir + "/step_cost.csv").c_str(), "w");
   if (!csv) {
     std::fprintf(stderr, "cannot write into %s\n", out_dir.c_str());
@@ -246,5 +422,6 @@ int main(int argc, char** argv) {
   }
   std::fclose(csv);
   std::printf("\nwrote %s/step_cost.csv\n", out_dir.c_str());
+  spatialRows(out_dir, target, max_n, quick);
   return 0;
 }

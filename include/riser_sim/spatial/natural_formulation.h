@@ -47,8 +47,6 @@ class NaturalData {
   // inverse mass, the unit-length constraint eliminated; WE = W B_Eᵀ), and the 3x3 compliances of the
   // accelerations of A_i, E_i under those forces with their free accelerations aA, aE.
   struct Body {
-    Mat7 W;    // dense path only
-    Mat73 WE;  // dense path only
     Vec7 a;
     Mat3 AA, AE, EE;
     Vec3 aA, aE;
@@ -56,6 +54,8 @@ class NaturalData {
     // S, Sk_rho = S_k rho couple the prescribed n·e'' = bdd into the (A·n, Δ) rows.
     Vec3 n;
     double rho, a_aa, a_ad, a_dd, t_AA, t_Ae, t_ee, S, Sk_rho, bdd;
+    Mat7 W;    // dense path only (last: the closed form's fields stay together in memory)
+    Mat73 WE;  // dense path only
   };
   VecX Q, h;
   VecX acc;  // v' of this evaluation (7 per rfe)

@@ -18,7 +18,7 @@
 // coupling to e (the twist's forces on e, the gyroscopic term, θ' = ω - a·e') is left out of J. That makes
 // the solve approximate: Newton converges to the same step with more iterations (test_spatial_torsion).
 #pragma once
-#include <Eigen/LU>
+#include <Eigen/Core>
 #include <vector>
 
 #include "riser_sim/spatial/natural_formulation.h"
@@ -47,13 +47,17 @@ class ShiftedSolver3 {
 
  private:
   struct Body {
-    Mat7 M, K, C;           // with itself
-    Mat7 Ksub, Csub;        // rows of rfe i, columns of rfe i-1
-    Mat7 Ksup;              // rows of rfe i-1, columns of rfe i: K(i-1, i) = Ksubᵀ + Ksup
+    Mat7 M;                 // mass (K, C, K_sub, K_sup, C_sub live in S_: K(i, i), C(i, i), rows i / columns i-1)
+    Mat7 Kup;               // K(i, i+1) = K_sub[i+1]ᵀ + K_sup[i+1] (the right side's coupling to rfe i+1)
     Mat37 gE, pE, rE;       // Baumgarte law of E_i: g δa + p δv + r δq (g = B_E = ∂E/∂q)
     Vec7 gu, pu, ru;        // Baumgarte law of the unit length
-    Mat11 L, Y;             // block row's coupling to the block before; Y = D̃⁻¹ U to the block after
-    Eigen::PartialPivLU<Mat11> lu;
+    // The block row's coupling to x_v of the block before (rows λ_i, x_v,i; the unit-length row has none), and
+    // Y = D̃⁻¹ U, U the coupling to λ_{i+1}, x_v,i+1 of the block after (D̃⁻¹ U has no ν column): the nonzero
+    // parts only, to keep the per-rfe workspace small (n = 1000 runs from L3).
+    Eigen::Matrix<double, 10, 7> L;
+    Eigen::Matrix<double, 11, 10> Y;
+    Mat11 lu;               // D̃ = P⁻¹ L U in place (partial pivoting: piv[k] is the row swapped with row k)
+    int piv[11];
     Vec11 z;
   };
   void assembleRhs(int blk, const VecX& b, Vec11& r) const;

@@ -144,11 +144,15 @@ void NaturalFormulation::closedFormBody(int i, NaturalData& d) const {
   c.bdd = unitGamma(b) / c.rho;
   closedFormAcceleration(c, d.Q.segment<7>(kDofPerBody3 * i) - d.h.segment<7>(kDofPerBody3 * i), c.a.data());
   // Compliances p n nᵀ + q (I - n nᵀ): a unit force at E_i adds [F; ρ n·F; len F] to f, and E'' = A'' + ρ Δ'' n + len e''.
-  auto split = [&](double p, double q) { return Mat3(q * Mat3::Identity() + (p - q) * c.n * c.n.transpose()); };
   const double len = b.len, rho = c.rho;
-  c.AA = split(c.a_aa, c.t_AA);
-  c.AE = split(c.a_aa + rho * c.a_ad, c.t_AA + len * c.t_Ae);
-  c.EE = split(c.a_aa + 2.0 * rho * c.a_ad + rho * rho * c.a_dd, c.t_AA + 2.0 * len * c.t_Ae + len * len * c.t_ee);
+  const Mat3 N = c.n * c.n.transpose();
+  auto split = [&N](double p, double q, Mat3& out) {
+    out = (p - q) * N;
+    out.diagonal().array() += q;
+  };
+  split(c.a_aa, c.t_AA, c.AA);
+  split(c.a_aa + rho * c.a_ad, c.t_AA + len * c.t_Ae, c.AE);
+  split(c.a_aa + 2.0 * rho * c.a_ad + rho * rho * c.a_dd, c.t_AA + 2.0 * len * c.t_Ae + len * len * c.t_ee, c.EE);
   c.aA = c.a.segment<3>(kA);
   c.aE = c.a.segment<3>(kA) + c.a[kDelta3] * b.e + len * c.a.segment<3>(kE) + 2.0 * b.delta_dot * b.e_dot;
 }

@@ -18,6 +18,8 @@ class BendingSpring : public SpatialForceTerm {
   void addForces(const SpatialModel& model, const Kinematics3& kin, double t, VecX& Q) const override;
   double potentialEnergy(const SpatialModel& model, const Kinematics3& kin) const override;
   double power(const SpatialModel& model, const Kinematics3& kin, double t) const override;
+  // Forces and the dampers' power in one pass over the joints (one ω difference per joint).
+  double addForcesAndPower(const SpatialModel& model, const Kinematics3& kin, double t, VecX& Q) const override;
   void addStiffness(const SpatialModel& model, const Kinematics3& kin, double t, SpatialStiffness& S) const override;
   // Angle between two directions [rad] in [0, π] (any lengths).
   static double angle(const Vec3& a, const Vec3& b) { return std::atan2(a.cross(b).norm(), a.dot(b)); }

@@ -15,26 +15,38 @@ double BendingSpring::thetaOverSin(double theta) {
 }
 
 // V = ½ k θ²: Q_b = -k θ ∂θ/∂b = k (θ/sinθ) / (|a||b|) (a - (a·b) b/|b|²), Q_a likewise with a, b swapped.
-void BendingSpring::addForces(const SpatialModel& model, const Kinematics3& kin, double, VecX& Q) const {
+// With sinθ = |a×b| / (|a||b|) the factor is k θ / |a×b| (no sin, no square root) away from θ = 0; below
+// 1e-4 rad the series of θ/sinθ over |a||b|.
+void BendingSpring::addForces(const SpatialModel& model, const Kinematics3& kin, double t, VecX& Q) const {
+  addForcesAndPower(model, kin, t, Q);
+}
+
+double BendingSpring::addForcesAndPower(const SpatialModel& model, const Kinematics3& kin, double, VecX& Q) const {
   const double k = model.bendingStiffness(), c = model.bendingDamping();
+  double p = 0.0;
   for (int i = 1; i < model.bodies(); ++i) {
     const Vec3& a = kin[i - 1].e;
     const Vec3& b = kin[i].e;
     double* qa = Q.data() + kDofPerBody3 * (i - 1);
     double* qb = Q.data() + kDofPerBody3 * i;
-    const double theta = angle(a, b);
-    if (k != 0.0 && theta < M_PI - kFoldedTol) {
-      const double aa = a.squaredNorm(), bb = b.squaredNorm(), ab = a.dot(b);
-      const double f = k * thetaOverSin(theta) / std::sqrt(aa * bb);
-      const Vec3 Fa = f * (b - (ab / aa) * a), Fb = f * (a - (ab / bb) * b);
-      for (int j = 0; j < 3; ++j) qa[kE + j] += Fa[j], qb[kE + j] += Fb[j];
+    if (k != 0.0) {
+      const double ab = a.dot(b), s = a.cross(b).norm(), theta = std::atan2(s, ab);
+      if (theta < M_PI - kFoldedTol) {
+        const double aa = a.squaredNorm(), bb = b.squaredNorm();
+        const double f = theta < 1e-4 ? k * thetaOverSin(theta) / std::sqrt(aa * bb) : k * theta / s;
+        const Vec3 Fa = f * (b - (ab / aa) * a), Fb = f * (a - (ab / bb) * b);
+        for (int j = 0; j < 3; ++j) qa[kE + j] += Fa[j], qb[kE + j] += Fb[j];
+      }
     }
     if (c != 0.0) {
-      const Vec3 tau = -c * (kin[i].omega() - kin[i - 1].omega());  // on rfe i; -tau on rfe i-1
+      const Vec3 dw = kin[i].omega() - kin[i - 1].omega();
+      const Vec3 tau = -c * dw;  // on rfe i; -tau on rfe i-1
       addTorque(kin[i], tau, qb);
       addTorque(kin[i - 1], -tau, qa);
+      p -= c * dw.squaredNorm();
     }
   }
+  return p;
 }
 
 double BendingSpring::potentialEnergy(const SpatialModel& model, const Kinematics3& kin) const {
