@@ -1,6 +1,6 @@
 // riser_sim_bench_tradeoff: speed against accuracy. For each case (bench/tradeoff_cases.cpp:
 // the paper's Table 1 line elastic and inextensible, the 170 m J-lay elastic and inextensible, the 500 m
-// riser) it first computes the references, then sweeps integrator x formulation x n x h (or tolerance)
+// riser; and the 3D swing of tradeoff_spatial.h with its own table and tradeoff_spatial.csv) it first computes the references, then sweeps integrator x formulation x n x h (or tolerance)
 // and measures each run against them: the probe point's position at the end of the run, the histories
 // of the top tension and of the largest axial force every 0.1 s (tradeoff_history.h: RMS and max error
 // against the reference's), the energy-balance error, wall and thread-CPU time (median of 3 for runs
@@ -23,6 +23,7 @@
 
 #include "riser_sim/integrator.h"
 #include "tradeoff_run.h"
+#include "tradeoff_spatial.h"
 
 namespace {
 
@@ -188,6 +189,7 @@ int runBench(int argc, char** argv) {
       const bool help = !std::strcmp(argv[i], "--help") || !std::strcmp(argv[i], "-h");
       std::string names;
       for (const Case& c : allCases(root)) names += (names.empty() ? "" : ", ") + c.name;
+      names += ", spatial_swing (3D, n = 5, 10, 20)";
       std::fprintf(help ? stdout : stderr,
                    "usage: riser_sim_bench_tradeoff [--quick] [--out DIR] [--cases a,b] [--ns 10,20] [--max-run S] "
                    "[--root DIR]\n"
@@ -206,9 +208,20 @@ int runBench(int argc, char** argv) {
   std::vector<Case> cases;
   for (const Case& c : allCases(root))
     if (only.empty() || only.find("," + c.name + ",") != std::string::npos) cases.push_back(c);
-  if (cases.empty()) {
+  // The 3D case (tradeoff_spatial.h) has its own sweep and table, first.
+  const bool spatial = only.empty() || only.find(",spatial_swing,") != std::string::npos;
+  if (cases.empty() && !spatial) {
     std::fprintf(stderr, "no case selected (--cases)\n");
     return 2;
+  }
+  if (spatial) {
+    std::vector<int> ns3;
+    for (const int n : {5, 10, 20})
+      if ((ns.empty() || ns.find("," + std::to_string(n) + ",") != std::string::npos) && !(quick && n > 10))
+        ns3.push_back(n);
+    spatial3::sweep3(root, out_dir, ns3);
+    std::printf("\nwrote %s/tradeoff_spatial.csv\n", out_dir.c_str());
+    if (cases.empty()) return 0;
   }
 
   std::FILE* refs = std::fopen((out_dir + "/references.csv").c_str(), "w");

@@ -9,6 +9,9 @@
 // window (exponential, kWindow of simulated time) for a running node.
 #pragma once
 #include <cmath>
+#include <string>
+
+#include "riser_sim/choices.h"
 
 namespace riser_sim {
 
@@ -21,6 +24,10 @@ struct ForceNoise {
   double max_axial = 0.0;  // largest axial force along the line: noise RMS / its RMS
   double worst() const { return std::max(top, max_axial); }
 };
+
+// Empty, or why forces with noise e are not resolved at solver.dt dt [s] with this integrator (and
+// solver.rho_inf, for generalized_alpha) and what setting resolves them: the planar and the 3D runs' warning.
+std::string forceNoiseWarning(const ForceNoise& e, double dt, IntegratorKind integrator, double rho_inf);
 
 class ForceNoiseMonitor {
  public:

@@ -112,7 +112,6 @@ class Simulator : private OdeSystem {
   void solveShifted(const VecX& b, VecX& x) override { formulation_->solveShifted(b, x, *data_); }
   double potentialEnergy(const Kinematics& kin) const;
   void checkDivergence(bool stepped);
-  std::string safeStepAdvice() const;  // "a safe solver.dt is ..., or use ..." (explicit fixed-step schemes)
   void sampleForces();
   double axialForce(int i, const BodyKinematics& b, const Reactions& re) const;  // [N]
   void estimateHighestFrequency();

@@ -86,13 +86,9 @@ int main(int argc, char** argv) {
   }
   info("initial state (%s): %s; end force (%g, %g) N", name(scene.initial.type), statics.message.c_str(),
        statics.end_force.x(), statics.end_force.y());
-  if (sim->integrator().explicitFixedStep())
-    info("stability: highest frequency %g rad/s, %s stable for solver.dt <= ~%g s%s", sim->highestFrequency(),
-         name(scene.solver.integrator), sim->stableStepEstimate(),
-         sim->dt() > sim->stableStepEstimate() ? " -- solver.dt is above it, the run will likely diverge" : "");
-  else
-    info("stability: highest frequency %g rad/s (rk4 would need solver.dt <= ~%g s); %s has no such limit",
-         sim->highestFrequency(), sim->stableStepEstimate(), name(scene.solver.integrator));
+  info("%s", stabilityMessage(sim->integrator().explicitFixedStep(), name(scene.solver.integrator),
+                              sim->highestFrequency(), sim->stableStepEstimate(), sim->dt())
+                 .c_str());
 
   OutputFile csv;  // every row batch is checked: a full disk stops the run with exit code 4
   if (!opt.csv.empty()) {
@@ -111,8 +107,6 @@ int main(int argc, char** argv) {
       *sim, total_steps, every, csv, [&] { return takeSample(*sim, opt.probe_rfes); },
       [](const Sample& s) { return allFinite(s); }, [](std::FILE* f, const Sample& s) { writeCsvRow(f, s); }, last,
       time);
-  const bool written = csv.close();  // flush and close before reporting
-  const std::string write_error = csv.error();
 
   const double wall_s = time.wall_s, cpu_s = time.cpu_s;
   const double sim_s = sim->time();
@@ -122,20 +116,8 @@ int main(int argc, char** argv) {
   // energy that the line never had, and its forces with it. Never "ok": status "warning" with the reason
   // in the summary and on stderr, exit 0 (the user chose the step; the run finished).
   // Forces with step-to-step noise above kForceNoiseWarning (force_noise.h) are not resolved either.
-  std::string warning = diverged.empty() ? energyWarning(last.energy_drift) : "";
-  if (diverged.empty()) {
-    const std::string forces = sim->forceWarning(sim->forceNoise().total());
-    if (!forces.empty()) warning += (warning.empty() ? "" : "; ") + forces;
-  }
-  RunEnd end;
-  end.diverged = diverged;
-  end.write_error = write_error;
-  end.warning = warning;
-  end.written = written;
-  end.csv = !opt.csv.empty();
-  end.sim_s = sim_s;
-  end.steps = sim->steps();
-  end.total_steps = total_steps;
+  const RunEnd end = runEnd(*sim, total_steps, diverged, last.energy_drift, csv, !opt.csv.empty());
+  const std::string& warning = end.warning;
   int rc = kExitOk;
   const Integrator::Stats stats = sim->integrator().stats();  // what the steps cost
   if (opt.summary) {

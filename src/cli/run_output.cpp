@@ -70,6 +70,19 @@ void writeCsvRow(std::FILE* f, const Sample& s) {
   std::fputc('\n', f);
 }
 
+std::string stabilityMessage(bool explicit_fixed_step, const std::string& scheme, double omega_max,
+                             double stable_dt, double dt) {
+  char buf[320];
+  if (explicit_fixed_step)
+    std::snprintf(buf, sizeof(buf), "stability: highest frequency %g rad/s, %s stable for solver.dt <= ~%g s%s",
+                  omega_max, scheme.c_str(), stable_dt,
+                  dt > stable_dt ? " -- solver.dt is above it, the run will likely diverge" : "");
+  else
+    std::snprintf(buf, sizeof(buf), "stability: highest frequency %g rad/s (rk4 would need solver.dt <= ~%g s); %s has no such limit",
+                  omega_max, stable_dt, scheme.c_str());
+  return buf;
+}
+
 std::string energyWarning(double drift) {
   if (!(std::abs(drift) > kEnergyDriftWarning)) return "";
   char buf[320];

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "output_file.h"
 #include "riser_sim/simulator.h"
 
 namespace riser_sim {
@@ -47,6 +48,12 @@ long outputStride(double output_dt, double dt, long total_steps);
 // means and what to do), "" when it is within it.
 std::string energyWarning(double drift);
 
+// The "stability: ..." line of a run, planar or spatial: the highest frequency [rad/s] and the estimated
+// limit [s] of the explicit fixed-step scheme (with a note when solver.dt is above it), or rk4's for
+// reference when the scheme has no such limit.
+std::string stabilityMessage(bool explicit_fixed_step, const std::string& scheme, double omega_max,
+                             double stable_dt, double dt);
+
 class JsonLine;
 
 // How a CLI run (planar or spatial) ended, for its summary status, its exit code and its messages.
@@ -57,6 +64,28 @@ struct RunEnd {
   double sim_s = 0.0;
   long steps = 0, total_steps = 0;
 };
+// The end of a run after its stepping, planar (Simulator) or spatial (SpatialRun): Run has time(), steps(),
+// forceNoise() and forceWarning(). Closes (flushes) the CSV and reads whether it was written completely;
+// a run that did not diverge warns when its energy balance is off by energy_drift (energyWarning) or its
+// forces are noisy (Run::forceWarning), both joined by "; ".
+template <class Run>
+RunEnd runEnd(const Run& run, long total_steps, const std::string& diverged, double energy_drift, OutputFile& csv,
+              bool csv_asked) {
+  RunEnd e;
+  e.written = csv.close();  // flush and close before reporting
+  e.write_error = csv.error();
+  e.diverged = diverged;
+  if (diverged.empty()) {
+    e.warning = energyWarning(energy_drift);
+    const std::string forces = run.forceWarning(run.forceNoise().total());
+    if (!forces.empty()) e.warning += (e.warning.empty() ? "" : "; ") + forces;
+  }
+  e.csv = csv_asked;
+  e.sim_s = run.time();
+  e.steps = run.steps();
+  e.total_steps = total_steps;
+  return e;
+}
 // "diverged", "write_failed", "warning" or "ok".
 const char* runStatus(const RunEnd& e);
 // Prints the summary j (when given) with the end's keys, the failure or warning messages, and returns the

@@ -82,7 +82,9 @@ int runSpatial(const Scene& scene, const CliOptions& opt) {
   info("initial state (%s): %s; %s; end force (%g, %g, %g) N; largest acceleration at rest %g m/s^2 (bound %g)",
        name(scene.initial.type), init.about.c_str(), init.statics.message.c_str(), init.end_force.x(),
        init.end_force.y(), init.end_force.z(), init.max_acceleration, init.acceleration_bound);
-  info("stability: no step-size estimate in 3D yet; the run stops naming solver.dt if it diverges");
+  info("%s", stabilityMessage(run->explicitFixedStep(), name(scene.solver.integrator), run->highestFrequency(),
+                              run->stableStepEstimate(), run->dt())
+                 .c_str());
 
   OutputFile csv;
   if (!opt.csv.empty()) {
@@ -99,22 +101,13 @@ int runSpatial(const Scene& scene, const CliOptions& opt) {
       *run, total_steps, every, csv, [&] { return spatialSample(*run, opt.probe_rfes); },
       [](const std::vector<double>& s) { return finite(s); },
       [](std::FILE* f, const std::vector<double>& s) { writeRow(f, s); }, last, time);
-  const bool written = csv.close();
-  const std::string write_error = csv.error();
 
   const double wall_s = time.wall_s, cpu_s = time.cpu_s;
   const double sim_s = run->time();
   const double rtf = wall_s > 0.0 ? sim_s / wall_s : NAN;
-  const std::string warning = diverged.empty() ? energyWarning(last[kDrift]) : "";  // as the planar run
-  RunEnd end;
-  end.diverged = diverged;
-  end.write_error = write_error;
-  end.warning = warning;
-  end.written = written;
-  end.csv = !opt.csv.empty();
-  end.sim_s = sim_s;
-  end.steps = run->steps();
-  end.total_steps = total_steps;
+  // The energy balance and the forces' noise are judged as the planar run's (main.cpp).
+  const RunEnd end = runEnd(*run, total_steps, diverged, last[kDrift], csv, !opt.csv.empty());
+  const std::string& warning = end.warning;
   int rc = kExitOk;
   const Integrator::Stats stats = run->simulator().integrator().stats();
   if (opt.summary) {
@@ -153,6 +146,8 @@ int runSpatial(const Scene& scene, const CliOptions& opt) {
         .add("tension_max", last[kTensionMax])
         .add("max_constraint_error", run->maxConstraintError())
         .add("energy_drift", last[kDrift])
+        .add("force_noise_top", run->forceNoise().total().top)
+        .add("force_noise_max_axial", run->forceNoise().total().max_axial)
         .add("energy", last[kEnergy])
         .add("work", last[kWork])
         .add("energy_scale", run->energyScale())
@@ -160,6 +155,8 @@ int runSpatial(const Scene& scene, const CliOptions& opt) {
         .add("space", "spatial")
         .add("n", scene.elements)
         .add("dt", dt)
+        .add("stable_dt_estimate", run->stableStepEstimate())
+        .add("omega_max", run->highestFrequency())
         .add("integrator", name(scene.solver.integrator))
         .add("formulation", "natural")
         .add("statics_iterations", init.statics.iterations)

@@ -1,6 +1,7 @@
 #include "riser_sim/force_noise.h"
 
 #include <algorithm>
+#include <sstream>
 
 namespace riser_sim {
 
@@ -31,6 +32,22 @@ ForceNoise ForceNoiseMonitor::estimate(const Sums& s) {
   // √(Σd²/6) / √(ΣT²): the count cancels. A force that is zero throughout has no relative noise.
   const auto rel = [](double d2, double t2) { return t2 > 0.0 ? std::sqrt(d2 / (6.0 * t2)) : 0.0; };
   return {rel(s.d2_top, s.t2_top), rel(s.d2_ax, s.t2_ax)};
+}
+
+std::string forceNoiseWarning(const ForceNoise& e, double dt, IntegratorKind integrator, double rho_inf) {
+  if (!(e.worst() > kForceNoiseWarning)) return "";
+  std::ostringstream why;
+  why.precision(2);
+  why << "forces not resolved: step-to-step noise of " << 100.0 * e.top << " % in the top tension and "
+      << 100.0 * e.max_axial << " % in the largest axial force (bound " << 100.0 * kForceNoiseWarning
+      << " %): modes faster than solver.dt " << dt << " s ring in them undamped; ";
+  if (integrator == IntegratorKind::kGeneralizedAlpha)
+    why << "lower solver.rho_inf (now " << rho_inf << "; 0 damps what the step does not resolve in one step)"
+        << " or a smaller solver.dt";
+  else
+    why << "use solver.integrator " << name(IntegratorKind::kGeneralizedAlpha)
+        << " (damps what the step does not resolve) or a smaller solver.dt";
+  return why.str();
 }
 
 }  // namespace riser_sim

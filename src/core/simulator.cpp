@@ -229,51 +229,18 @@ void Simulator::checkDivergence(bool stepped) {
   // dopri5's step size underflow is a tolerance problem: its own advice, no smaller output step.
   if (integrator_->failure().find("loosen solver.tolerance") == std::string::npos)
     why << "; reduce solver.dt (now " << settings_.dt << " s)";
-  if (integrator_->explicitFixedStep() && omega_max_ > 0.0) {
-    const double limit_h = stableStepEstimate();
-    if (settings_.dt > 0.9 * limit_h)
-      why << "; it is at or above " << integrator_->name() << "'s stability limit h ~ " << limit_h
-          << " s (highest frequency " << omega_max_ << " rad/s): " << safeStepAdvice();
-    else
-      why << " (" << integrator_->name() << "'s stability limit estimated at the initial state, h ~ " << limit_h
-          << " s, is not exceeded: the line's highest frequency can grow with its tension during the run (a "
-             "swing, a snap), or the input jumps; try solver.dt " << 0.5 * settings_.dt
-          << " s, or solver.integrator dopri5 (adaptive) or midpoint (implicit))";
-  }
+  if (integrator_->explicitFixedStep() && omega_max_ > 0.0)
+    why << divergenceStabilityNote(integrator_->name(), settings_.dt, stableStepEstimate(), omega_max_);
   reason_ = why.str();
 }
 
-std::string Simulator::safeStepAdvice() const {
-  std::ostringstream advice;
-  advice << "a safe solver.dt is " << 0.8 * stableStepEstimate() << " s, or use solver.integrator "
-         << name(IntegratorKind::kGeneralizedAlpha) << " / " << name(IntegratorKind::kMidpoint) << " (implicit) or "
-         << name(IntegratorKind::kDopri5) << " (adaptive)";
-  return advice.str();
-}
-
 std::string Simulator::stepAboveLimit() const {
-  if (!integrator_->explicitFixedStep() || !(settings_.dt > stableStepEstimate())) return "";
-  std::ostringstream why;
-  why << "solver.dt " << settings_.dt << " s is above " << integrator_->name() << "'s stability limit ~"
-      << stableStepEstimate() << " s (highest frequency " << omega_max_ << " rad/s, damping included): "
-      << safeStepAdvice();
-  return why.str();
+  if (!integrator_->explicitFixedStep()) return "";
+  return stepAboveLimitMessage(integrator_->name(), settings_.dt, stableStepEstimate(), omega_max_);
 }
 
 std::string Simulator::forceWarning(const ForceNoise& e) const {
-  if (!(e.worst() > kForceNoiseWarning)) return "";
-  std::ostringstream why;
-  why.precision(2);
-  why << "forces not resolved: step-to-step noise of " << 100.0 * e.top << " % in the top tension and "
-      << 100.0 * e.max_axial << " % in the largest axial force (bound " << 100.0 * kForceNoiseWarning
-      << " %): modes faster than solver.dt " << settings_.dt << " s ring in them undamped; ";
-  if (settings_.integrator == IntegratorKind::kGeneralizedAlpha)
-    why << "lower solver.rho_inf (now " << settings_.rho_inf << "; 0 damps what the step does not resolve in one step)"
-        << " or a smaller solver.dt";
-  else
-    why << "use solver.integrator " << name(IntegratorKind::kGeneralizedAlpha)
-        << " (damps what the step does not resolve) or a smaller solver.dt";
-  return why.str();
+  return forceNoiseWarning(e, settings_.dt, settings_.integrator, settings_.rho_inf);
 }
 
 double Simulator::constraintError() const { return formulation_->constraintError(y_, top_->at(t_)); }

@@ -173,7 +173,13 @@ TEST(CliSpatialEnds, DrivenBottomFollowsItsCircle) {
     const CliRun r = runCli("--scene " + scene + " --duration 8 --output-dt 0.1 --summary --quiet --csv " + csv + set);
     ASSERT_EQ(r.code, 0) << r.err;
     auto j = summary(r);
-    EXPECT_EQ(j["status"], "ok");
+    // Midpoint at 2 ms leaves the axial modes (~2e3 rad/s, hω ~ 4) that the start excites ringing: the
+    // largest axial force has 15 % step-to-step noise (the CSV's tension_max at every step gives the same),
+    // which the 3D force-noise monitor reports; the energy balance is not in the warning.
+    if (integrator == "rk4")
+      EXPECT_EQ(j["status"], "ok");
+    else
+      EXPECT_TRUE(j["status"] == "ok" || j["warning"].rfind("forces not resolved", 0) == 0) << r.out;
     const Table t = readTable(csv);
     ASSERT_EQ(t.rows.size(), 81u);
     const double mgl = num(j, "energy_scale"), w = 2.0 * M_PI / 8.0;

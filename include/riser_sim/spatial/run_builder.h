@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "riser_sim/force_noise.h"
 #include "riser_sim/scene.h"
 #include "riser_sim/spatial/forces/flex_joint.h"
 #include "riser_sim/spatial/simulator.h"
@@ -133,6 +134,19 @@ class SpatialRun {
   double maxBottomMoment() const { return max_moment_[1]; }
   const LineOutputs3& outputs();
 
+  // Stability of the explicit schemes, estimated at the initial state (SpatialSimulator::estimateStability,
+  // docs/spatial.md "Stability"): ω_max [rad/s] and the largest stable step of solver.integrator when it is
+  // an explicit fixed-step scheme (rk4's otherwise, for reference) [s].
+  double highestFrequency() const { return sim_->highestFrequency(); }
+  double stableStepEstimate() const { return sim_->stableStepEstimate(); }
+  bool explicitFixedStep() const { return sim_->integrator().explicitFixedStep(); }
+  // Empty, or why solver.dt is above the explicit scheme's estimated limit, with a safe step.
+  std::string stepAboveLimit() const;
+  // Step-to-step noise in the top tension and the largest axial force (force_noise.h), as the planar
+  // Simulator::forceNoise(); forceWarning(): empty, or why they are not resolved and what resolves them.
+  const ForceNoiseMonitor& forceNoise() const { return noise_; }
+  std::string forceWarning(const ForceNoise& e) const;
+
   const SpatialModel& model() const { return *model_; }
   const InitialState3& initial() const { return initial_; }
   bool bottomMoves() const { return model_->bottomMoves(); }
@@ -142,11 +156,15 @@ class SpatialRun {
 
  private:
   void trackMoments();
+  void sampleForces();
   std::shared_ptr<SpatialModel> model_;
   InitialState3 initial_;
   const FlexJoint* top_joint_ = nullptr;
   const FlexJoint* bottom_joint_ = nullptr;
   std::unique_ptr<SpatialSimulator> sim_;
+  IntegratorKind integrator_kind_;
+  double rho_inf_;
+  ForceNoiseMonitor noise_;
   double dt_, max_gap_, e0_ = 0.0, energy_scale_ = 1.0, max_constraint_error_ = 0.0;
   long steps_ = 0;
   std::string reason_;

@@ -7,6 +7,7 @@
 // default) solves with the formulation's O(n) block-tridiagonal KKT factorisation (shifted_solver.h),
 // relinearised every step; "dense" uses their finite-difference Jacobian (O(p²) per solve, O(p³) per refresh).
 #pragma once
+#include <cmath>
 #include <memory>
 
 #include "riser_sim/choices.h"
@@ -56,6 +57,23 @@ class SpatialSimulator : private OdeSystem {
   double directorError() const { return formulation_.directorError(y_); }
   // One evaluation at the current state: its data (reactions.top, reactions.bottom, joint forces).
   const NaturalData& evaluate();
+  // The last evaluation made (of the last step's last stage, or of evaluate()). stepEndEvaluated(): the
+  // last step's last evaluation was at its end time (rk4's k4, the implicit schemes' end evaluation,
+  // dopri5's FSAL stage), so its reactions and kin are the step's end forces and state (before the
+  // projection's round-off-sized move, or after it when the twist charts moved).
+  const NaturalData& lastEvaluation() const { return *data_; }
+  bool stepEndEvaluated() const { return end_evaluated_; }
+
+  // Stability of explicit schemes (docs/spatial.md, "Stability"), as the planar Simulator: at the current
+  // state, the highest natural frequency ω_max [rad/s] of the linearised line (Ritz values of ∂v'/∂q by
+  // forward differences: every term, the twist with torsion on, the flex joints, the end mass and the
+  // Baumgarte-held joints count) and the largest stable step of the explicit scheme (rk4 for the others)
+  // from the Ritz values of the whole Jacobian, damping included. O(n) per probe, ~140 evaluations:
+  // SpatialRun calls it once at the initial state. stableStepEstimate(): that step times
+  // kStabilityFactor3 (a share kept for the motion raising the tension during the run, measured).
+  void estimateStability();
+  double highestFrequency() const { return omega_max_; }
+  double stableStepEstimate() const;
 
  private:
   void rhs(double t, const VecX& y, VecX& dy) override;
@@ -74,6 +92,9 @@ class SpatialSimulator : private OdeSystem {
   Kinematics3 kin_;
   double t_ = 0.0;
   double projection_tol_ = 0.0;
+  bool end_evaluated_ = false;
+  double omega_max_ = 0.0;
+  double stable_step_ = INFINITY;  // raw: min(bound / ω_max, the damped step)
 };
 
 }  // namespace spatial

@@ -13,8 +13,9 @@
 #include "riser_sim/spatial/forces/froude_krylov.h"
 #include "riser_sim/spatial/forces/gravity.h"
 #include "riser_sim/spatial/forces/morison_drag.h"
-#include "riser_sim/spatial/relaxation.h"
 #include "riser_sim/spatial/forces/seabed.h"
+#include "riser_sim/spatial/relaxation.h"
+#include "riser_sim/stability_estimate.h"
 
 namespace riser_sim {
 namespace spatial {
@@ -33,6 +34,11 @@ std::string fmt(double v) {
   o.precision(6);
   o << v;
   return o.str();
+}
+
+// Axial force in rfe r [N]: its spring (extensible), else the tension at A_i from the joint reaction.
+double axialForce(const Rfe& r, const BodyKinematics3& b, const Vec3& joint_reaction, bool extensible) {
+  return extensible ? r.axial_stiffness * b.delta + r.axial_damping * b.delta_dot : joint_reaction.dot(b.e);
 }
 
 bool implicitScheme(IntegratorKind k) {
@@ -301,7 +307,7 @@ InitialState3 solveInitialState3(const Scene& scene, const Vec3& top) {
 }
 
 SpatialRun::SpatialRun(const Scene& scene)
-    : dt_(scene.solver.dt), max_gap_(scene.solver.max_constraint_error * scene.length / scene.elements) {
+    : integrator_kind_(scene.solver.integrator), rho_inf_(scene.solver.rho_inf), dt_(scene.solver.dt), max_gap_(scene.solver.max_constraint_error * scene.length / scene.elements) {
   if (scene.space != SpaceKind::kSpatial) throw std::invalid_argument("space: SpatialRun needs space: spatial");
   if (const auto issue = unsupported(scene)) throw std::invalid_argument(issue->key + ": " + issue->message);
   model_ = buildSpatialModel(scene);
@@ -346,6 +352,7 @@ SpatialRun::SpatialRun(const Scene& scene)
   sim_ = std::make_unique<SpatialSimulator>(model_, std::move(motion), scene.solver.integrator, io,
                                             scene.solver.stabilization);
   sim_->reset(initial_.kin, 0.0);
+  sim_->estimateStability();
   const int nb = model_->bodies();
   out_.points.resize(nb + 1);
   out_.springs.resize(nb);
@@ -409,6 +416,7 @@ bool SpatialRun::step() {
   }
   if (stepped && finite && err <= max_gap_ && fast < 0) {
     trackMoments();
+    sampleForces();
     return true;
   }
   std::ostringstream why;
@@ -425,8 +433,33 @@ bool SpatialRun::step() {
     why << "joint constraint error " << err << " m exceeds " << max_gap_ << " m (solver.max_constraint_error x d) at t = "
         << time() << " s";
   if (failure.find("loosen solver.tolerance") == std::string::npos) why << "; reduce solver.dt (now " << dt_ << " s)";
+  if (explicitFixedStep() && highestFrequency() > 0.0)  // as the planar Simulator
+    why << divergenceStabilityNote(sim_->integrator().name(), dt_, stableStepEstimate(), highestFrequency());
   reason_ = why.str();
   return false;
+}
+
+// The forces of the step's last evaluation when it was made at the step's end time (as the planar
+// Simulator::sampleForces: no extra evaluation; the projection after the step moves the state by its
+// round-off-sized drift only).
+void SpatialRun::sampleForces() {
+  if (!sim_->stepEndEvaluated()) return;
+  const NaturalData& d = sim_->lastEvaluation();
+  const bool axial = model_->options().axial_flexibility;
+  double tmax = 0.0;
+  for (int i = 0; i < model_->bodies(); ++i) {
+    tmax = std::max(tmax, axialForce(model_->rfe(i), d.kin[i], d.reactions.joint[i], axial));
+  }
+  noise_.add(d.reactions.top.norm(), tmax, dt_);
+}
+
+std::string SpatialRun::stepAboveLimit() const {
+  if (!explicitFixedStep()) return "";
+  return stepAboveLimitMessage(sim_->integrator().name(), dt_, stableStepEstimate(), highestFrequency());
+}
+
+std::string SpatialRun::forceWarning(const ForceNoise& e) const {
+  return forceNoiseWarning(e, dt_, integrator_kind_, rho_inf_);
 }
 
 double SpatialRun::energyDrift() {
@@ -444,8 +477,7 @@ const LineOutputs3& SpatialRun::outputs() {
     const Rfe& r = model_->rfe(i);
     out_.points[i] = b.A;
     out_.springs[i] = b.A + r.length1 * b.e;
-    out_.axial_force[i] = axial ? r.axial_stiffness * b.delta + r.axial_damping * b.delta_dot
-                                : d.reactions.joint[i].dot(b.e);  // tension at A_i from the joint reaction
+    out_.axial_force[i] = axialForce(r, b, d.reactions.joint[i], axial);
     tmax = std::max(tmax, out_.axial_force[i]);
   }
   out_.points[nb] = d.kin[nb - 1].end();

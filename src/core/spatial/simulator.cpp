@@ -1,11 +1,22 @@
 #include "riser_sim/spatial/simulator.h"
 
 #include "riser_sim/spatial/force_term.h"
+#include "riser_sim/stability_estimate.h"
 
+#include <limits>
 #include <stdexcept>
 
 namespace riser_sim {
 namespace spatial {
+
+namespace {
+// Share of the raw explicit limit kept (stableStepEstimate). rk4's largest stable step measured by
+// bisection (to 0.4 %) against the raw estimate: 0.99x on spatial_swing (20 s, inextensible, the swing
+// raises the tension), 1.07x on spatial_tether (20 s, pinned, flex joints), 0.99x on a 10-rfe extensible
+// steel line and on a torsion line with a flex joint (3 s each) (docs/spatial.md, "Stability"). 0.9 leaves
+// 10 % for tensions that grow beyond those runs' (the planar inextensible line needed 15 %).
+constexpr double kStabilityFactor3 = 0.9;
+}  // namespace
 
 SpatialSimulator::SpatialSimulator(std::shared_ptr<const SpatialModel> model, std::unique_ptr<TopMotion3> top,
                                    IntegratorKind kind, const IntegratorOptions& options, double stabilization)
@@ -54,6 +65,7 @@ void SpatialSimulator::linearize(double t, const VecX& y) {
 bool SpatialSimulator::step(double h) {
   const bool ok = integrator_->step(*this, t_, y_, h);
   t_ += h;
+  end_evaluated_ = data_->t == t_;  // before the charts move (rechartTwist marks the evaluation stale)
   // Back onto |e| = 1, e·e' = 0 (the Baumgarte terms hold the drift within the step).
   if (projection_tol_ <= 0.0 || formulation_.manifoldError(y_, h) > projection_tol_) {
     formulation_.project(y_);
@@ -83,6 +95,20 @@ const NaturalData& SpatialSimulator::evaluate() {
   rhs(t_, y_, dy_);
   return *data_;
 }
+
+void SpatialSimulator::estimateStability() {
+  const Rk4 rk4;  // the reference scheme for the implicit and adaptive ones
+  const Integrator& scheme = integrator_->explicitFixedStep() ? *integrator_ : static_cast<const Integrator&>(rk4);
+  const LinearisedSpectrum s = linearisedSpectrum(
+      formulation_.positionSize(), y_, [&](const VecX& y, VecX& dy) { rhs(t_, y, dy); },
+      [&](Complex z) { return scheme.stabilityFunction(z); });
+  omega_max_ = s.omega_max;
+  const double undamped = omega_max_ > 0.0 ? scheme.stabilityBound() / omega_max_ : std::numeric_limits<double>::infinity();
+  stable_step_ = std::min(undamped, s.damped_step);
+  rhs(t_, y_, dy_);  // leave data_'s evaluation at the state
+}
+
+double SpatialSimulator::stableStepEstimate() const { return kStabilityFactor3 * stable_step_; }
 
 }  // namespace spatial
 }  // namespace riser_sim
