@@ -143,9 +143,6 @@ void parseSeabed(const Section& root, Scene& s) {
     if (planar && b.number(k, 0.0) > 0.0)
       throw SceneError(b.key(k), "Coulomb friction is in the 3D core (set space: spatial); the planar seabed holds "
                                  "the line with tangential springs anchored at touchdown (stiffness_tangential)");
-  if (!planar && s.seabed.stiffness_tangential > 0.0)
-    throw SceneError(b.key("stiffness_tangential"), "anchored tangential springs are planar only; the 3D seabed has "
-                                                    "Coulomb friction (friction_axial, friction_lateral)");
 }
 
 void parseInternalFluid(const Section& root, Scene& s) {

@@ -61,7 +61,7 @@ TEST(CliSpatial, PlanarScenesThroughTheSpatialPath) {
     if (r3.code == 2) {
       ++refused;
       bool named = false;
-      for (const char* section : {"hydrodynamics.inertia_coefficient", "seabed", "internal_fluid"})
+      for (const char* section : {"hydrodynamics.inertia_coefficient", "seabed.stiffness_tangential", "internal_fluid"})
         if (r3.err.find(std::string("riser_sim_cli: error: ") + section + ": ") != std::string::npos &&
             text.find(std::string(section).substr(std::string(section).rfind('.') + 1) + ":") != std::string::npos)
           named = true;

@@ -52,6 +52,9 @@ std::optional<SceneIssue> unsupported(const Scene& s) {
   if (s.hydro.enabled && s.hydro.inertia_coefficient != 1.0)
     return SceneIssue{"hydrodynamics.inertia_coefficient",
                       "C_M != 1 (added mass) is " + yet + " (buoyancy, drag and the Froude-Krylov force with C_M = 1 are)"};
+  if (s.seabed.enabled && s.seabed.stiffness_tangential > 0.0)
+    return SceneIssue{"seabed.stiffness_tangential", "anchored tangential springs are " + yet +
+                                                         " (the 3D seabed has Coulomb friction: friction_axial, friction_lateral)"};
   const InternalFlowSpec& f = s.internal_fluid;
   if (f.density > 0.0 && (f.velocity != 0.0 || f.acceleration != 0.0))
     return SceneIssue{"internal_fluid", "a flow (velocity or acceleration != 0) is " + yet +
