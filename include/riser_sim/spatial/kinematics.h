@@ -44,6 +44,14 @@ inline void addPointForce(const BodyKinematics3& b, double s0, double kappa, con
   for (int k = 0; k < 3; ++k) q[kA + k] += F[k], q[kE + k] += s * F[k];
   q[kDelta3] += kappa * b.e.dot(F);
 }
+// Velocity of the point (s0, κ) of b per q' (3x7), also its position per q: [I, κ e, (s0 + κΔ) I].
+inline Eigen::Matrix<double, 3, kDofPerBody3> pointJacobian(const BodyKinematics3& b, double s0, double kappa) {
+  Eigen::Matrix<double, 3, kDofPerBody3> J = Eigen::Matrix<double, 3, kDofPerBody3>::Zero();
+  J.block<3, 3>(0, kA).setIdentity();
+  J.col(kDelta3) = kappa * b.e;
+  J.block<3, 3>(0, kE) = (s0 + kappa * b.delta) * Mat3::Identity();
+  return J;
+}
 // Adds the generalised force of a torque tau [N m] on rfe i: Q_e = tau × e (virtual power tau·ω).
 inline void addTorque(const BodyKinematics3& b, const Vec3& tau, double* q) {
   const Vec3 qe = tau.cross(b.e);

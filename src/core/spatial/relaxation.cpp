@@ -32,10 +32,7 @@ class MassDamping : public SpatialForceTerm {
       const Rfe& r = model.rfe(i);
       for (int p = 0; p < r.num_parts; ++p) {
         const RigidPart& part = r.part[p];
-        Eigen::Matrix<double, 3, 7> J = Eigen::Matrix<double, 3, 7>::Zero();
-        J.block<3, 3>(0, kA).setIdentity();
-        J.col(kDelta3) = part.kappa * kin[i].e;
-        J.block<3, 3>(0, kE) = (part.s0 + part.kappa * kin[i].delta) * Mat3::Identity();
+        const Eigen::Matrix<double, 3, 7> J = pointJacobian(kin[i], part.s0, part.kappa);
         S.C_diag[i] += (alpha_ * part.mass) * J.transpose() * J;
         S.C_diag[i].block<3, 3>(kE, kE) += (alpha_ * part.inertia) * Mat3::Identity();
       }

@@ -24,6 +24,8 @@ class MorisonDrag3 : public SpatialForceTerm {
   void addStiffness(const SpatialModel& model, const Kinematics3& kin, double t, SpatialStiffness& S) const override;
 
  private:
+  // V' of the wet part's centroid: its velocity (none when held at rest) less the water's.
+  Vec3 relativeVelocity(const BodyKinematics3& b, const WetPart3& w, double t) const;
   // Adds the forces to *Q (when given); returns their power [W].
   double sweep(const SpatialModel& model, const Kinematics3& kin, double t, VecX* Q) const;
   Water3 water_;

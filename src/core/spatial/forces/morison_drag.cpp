@@ -5,16 +5,15 @@
 namespace riser_sim {
 namespace spatial {
 
-namespace {
-// Velocity of the point (s0, κ) of b per q' (3x7): [I, κ e, s I].
-Eigen::Matrix<double, 3, 7> pointJacobian(const BodyKinematics3& b, double s0, double kappa) {
-  Eigen::Matrix<double, 3, 7> J = Eigen::Matrix<double, 3, 7>::Zero();
-  J.block<3, 3>(0, kA).setIdentity();
-  J.col(kDelta3) = kappa * b.e;
-  J.block<3, 3>(0, kE) = (s0 + kappa * b.delta) * Mat3::Identity();
-  return J;
+Vec3 MorisonDrag3::relativeVelocity(const BodyKinematics3& b, const WetPart3& w, double t) const {
+  Vec3 rel = at_rest_ ? Vec3(Vec3::Zero()) : b.velocity(w.s0, w.kappa);
+  if (water_.moving()) {
+    Vec3 vw, aw;
+    water_.at(b.point(w.s0, w.kappa), t, vw, aw);
+    rel -= vw;
+  }
+  return rel;
 }
-}  // namespace
 
 double MorisonDrag3::sweep(const SpatialModel& model, const Kinematics3& kin, double t, VecX* Q) const {
   const double k = 0.5 * water_.spec().density * model.line().line().outer_diameter;
@@ -24,13 +23,7 @@ double MorisonDrag3::sweep(const SpatialModel& model, const Kinematics3& kin, do
       const BodyKinematics3& b = kin[i];
       const WetPart3 w = wetPart3(model.line(), b, i, p, water_);
       if (!(w.length > 0.0)) continue;
-      const Vec3 v = b.velocity(w.s0, w.kappa);
-      Vec3 rel = at_rest_ ? Vec3(Vec3::Zero()) : v;
-      if (water_.moving()) {
-        Vec3 vw, aw;
-        water_.at(b.point(w.s0, w.kappa), t, vw, aw);
-        rel -= vw;
-      }
+      const Vec3 v = b.velocity(w.s0, w.kappa), rel = relativeVelocity(b, w, t);
       const double vt = b.e.dot(rel);
       const Vec3 vn = rel - vt * b.e;
       const Vec3 F = -(k * w.length) * (cd_t_ * std::abs(vt) * vt * b.e + cd_n_ * vn.norm() * vn);
@@ -61,12 +54,7 @@ void MorisonDrag3::addStiffness(const SpatialModel& model, const Kinematics3& ki
       const BodyKinematics3& b = kin[i];
       const WetPart3 w = wetPart3(model.line(), b, i, p, water_);
       if (!(w.length > 0.0)) continue;
-      Vec3 rel = b.velocity(w.s0, w.kappa);
-      if (water_.moving()) {
-        Vec3 vw, aw;
-        water_.at(b.point(w.s0, w.kappa), t, vw, aw);
-        rel -= vw;
-      }
+      const Vec3 rel = relativeVelocity(b, w, t);
       const double vt = b.e.dot(rel);
       const Vec3 vn = rel - vt * b.e;
       const double un = vn.norm();

@@ -6,17 +6,6 @@
 namespace riser_sim {
 namespace spatial {
 
-namespace {
-// Velocity (and position) of the point (s0, κ) of b per q' (3x7): [I, κ e, s I].
-Eigen::Matrix<double, 3, 7> pointJacobian(const BodyKinematics3& b, double s0, double kappa) {
-  Eigen::Matrix<double, 3, 7> J = Eigen::Matrix<double, 3, 7>::Zero();
-  J.block<3, 3>(0, kA).setIdentity();
-  J.col(kDelta3) = kappa * b.e;
-  J.block<3, 3>(0, kE) = (s0 + kappa * b.delta) * Mat3::Identity();
-  return J;
-}
-}  // namespace
-
 Seabed3::Seabed3(const SeabedSpec& spec, const Vec3& gravity)
     : spec_(spec), up_(gravity.norm() > 0.0 ? Vec3(-gravity.normalized()) : Vec3::UnitZ()) {}
 
