@@ -65,6 +65,12 @@ if(CATKIN_ENABLE_TESTING)
   file(WRITE ${CMAKE_CURRENT_BINARY_DIR}/riser_sim_test_pch.cpp "")
   add_library(riser_sim_test_pch OBJECT ${CMAKE_CURRENT_BINARY_DIR}/riser_sim_test_pch.cpp)
   target_link_libraries(riser_sim_test_pch PRIVATE riser_sim_core gtest_main)
+  # The gtest target catkin_add_gtest links each test to (and so its -DGTEST_HAS_PTHREAD=1): gcc ignores a PCH
+  # built with other macros (-Winvalid-pch: "not used because ... defined"), and every test file then
+  # parsed Eigen and gtest again.
+  if(TARGET GTest::gtest)
+    target_link_libraries(riser_sim_test_pch PRIVATE GTest::gtest)
+  endif()
   target_compile_definitions(riser_sim_test_pch PRIVATE RISER_SIM_SOURCE_DIR="${CMAKE_CURRENT_SOURCE_DIR}")
   target_precompile_headers(riser_sim_test_pch PRIVATE <Eigen/Dense> <gtest/gtest.h> <algorithm> <cmath>
     <cstdio> <functional> <map> <memory> <random> <sstream> <string> <vector>)
