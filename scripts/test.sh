@@ -13,7 +13,7 @@ skip=""
 RISER_SIM_SKIP_TESTS="$skip" "$root/scripts/build.sh" -j2 all tests || { echo "0 passed, 1 failed"; exit 1; }
 phase "catkin build"
 cd "$ws"
-# The sanitizer (and fuzzer) builds (~10 min of CPU) compile at the lowest priority while the tests below
+# The sanitizer (and fuzzer) builds (~14 min of CPU) compile at the lowest priority while the tests below
 # run: the rostests mostly wait on real time. Their steps further down then find them built.
 prebuild_pid=""
 if [ "${RISER_SIM_SANITIZE:-1}" != 0 ] || [ "${RISER_SIM_FUZZ_SECONDS:-0}" != 0 ]; then
