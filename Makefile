@@ -18,7 +18,7 @@ check: deps
 	@scripts/check.sh $(CHECK_ARGS)
 
 # Every test: gtests, rostests, the core's gtests under sanitizers (docs/hardening.md). The fuzzer's seeds and
-# regressions replay as gtests; RISER_SIM_FUZZ_SECONDS=30 make test adds a fuzz run (after make fuzz-deps).
+# regressions replay as gtests; RISER_SIM_FUZZ_SECONDS=30 make test adds a fuzz run.
 test: deps
 	@scripts/test.sh
 
@@ -35,8 +35,8 @@ fuzz: fuzz-deps
 fuzz-replay: fuzz-deps
 	@$(MAKE) --no-print-directory -f test/fuzz/Makefile replay
 
-fuzz-deps:
-	@RISER_SIM_FUZZ_DEPS=1 scripts/install_deps.sh
+# clang-14 and its sanitizer/libFuzzer runtime are part of deps (the sanitizer build of make test uses them).
+fuzz-deps: deps
 
 sim: build
 	@$(SETUP); bench/paper_table1.py --sim

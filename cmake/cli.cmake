@@ -11,6 +11,7 @@ add_executable(riser_sim_cli
 )
 target_link_libraries(riser_sim_cli riser_sim_core)
 target_compile_options(riser_sim_cli PRIVATE ${RISER_SIM_OPT})  # cmake/core.cmake
+target_precompile_headers(riser_sim_cli PRIVATE ${RISER_SIM_PCH_HEADERS})  # cmake/core.cmake: Eigen, std
 set_target_properties(riser_sim_cli PROPERTIES
   RUNTIME_OUTPUT_DIRECTORY ${CATKIN_DEVEL_PREFIX}/${CATKIN_PACKAGE_BIN_DESTINATION})
 install(TARGETS riser_sim_cli RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})

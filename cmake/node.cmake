@@ -19,6 +19,8 @@ add_library(riser_sim_ros
 target_include_directories(riser_sim_ros PUBLIC include ${catkin_INCLUDE_DIRS})
 target_link_libraries(riser_sim_ros riser_sim_core ${catkin_LIBRARIES})
 add_dependencies(riser_sim_ros ${PROJECT_NAME}_generate_messages_cpp ${catkin_EXPORTED_TARGETS})
+# roscpp's headers and Eigen parsed once for the node's files (cmake/core.cmake).
+target_precompile_headers(riser_sim_ros PRIVATE <ros/ros.h> ${RISER_SIM_PCH_HEADERS})
 
 add_executable(riser_sim_node src/node/main.cpp)
 target_link_libraries(riser_sim_node riser_sim_ros)

@@ -7,10 +7,11 @@ PKGS=(build-essential cmake catkin ros-core-dev libroscpp-dev librostest-dev pyt
   libeigen3-dev libyaml-cpp-dev libgtest-dev googletest python3-rosbag python3-matplotlib python3-numpy
   python3-yaml python3-geometry-msgs python3-visualization-msgs python3-tf2-msgs python3-diagnostic-msgs
   python3-rostopic python3-rosservice python3-rosmaster python3-roslaunch
-  libnodeletlib-dev libnodelet-dev libnodeletlib-tools pluginlib-dev libclass-loader-dev)
+  libnodeletlib-dev libnodelet-dev libnodeletlib-tools pluginlib-dev libclass-loader-dev
+  clang-14 libclang-rt-14-dev)
+# clang-14 compiles the sanitizer build of make test (scripts/test_sanitize.sh) and the scene fuzzer (make
+# fuzz); its ASan/UBSan/libFuzzer runtime is libclang-rt-14-dev, only recommended by clang-14.
 if [ "${RISER_SIM_GUI_DEPS:-0}" = 1 ]; then PKGS+=(rviz xvfb xauth ffmpeg); fi
-# The scene fuzzer (libFuzzer: clang + its runtime, ~400 MB installed): make fuzz, make fuzz-replay.
-if [ "${RISER_SIM_FUZZ_DEPS:-0}" = 1 ]; then PKGS+=(clang-14 libclang-rt-14-dev); fi
 missing=()
 for p in "${PKGS[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

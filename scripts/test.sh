@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Builds and runs every test (gtest + rostest, the core's gtests under sanitizers; RISER_SIM_FUZZ_SECONDS=N
-# adds an N s scene fuzz run, which needs clang: make fuzz-deps);
+# adds an N s scene fuzz run with clang-14);
 # exits non-zero on any failure and ends with "N passed, N failed".
 set -uo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -13,7 +13,7 @@ skip=""
 RISER_SIM_SKIP_TESTS="$skip" "$root/scripts/build.sh" -j2 all tests || { echo "0 passed, 1 failed"; exit 1; }
 phase "catkin build"
 cd "$ws"
-# The sanitizer (and fuzzer) builds (~10 min of CPU) compile at the lowest priority while the tests below
+# The sanitizer (and fuzzer) builds (~14 min of CPU) compile at the lowest priority while the tests below
 # run: the rostests mostly wait on real time. Their steps further down then find them built.
 prebuild_pid=""
 if [ "${RISER_SIM_SANITIZE:-1}" != 0 ] || [ "${RISER_SIM_FUZZ_SECONDS:-0}" != 0 ]; then
@@ -42,8 +42,8 @@ if [ "${RISER_SIM_SANITIZE:-1}" != 0 ]; then
   echo "sanitizers: $(tail -n 1 "$ws/test_sanitize.log") (see $ws/test_sanitize.log)"
   phase "sanitizer tests"
 fi
-# Optional libFuzzer run on the scene loader (docs/hardening.md): builds out/fuzz/fuzz_scene (clang-14: make
-# fuzz-deps) and fuzzes from the seeds and regressions for RISER_SIM_FUZZ_SECONDS (default 0: skipped; the
+# Optional libFuzzer run on the scene loader (docs/hardening.md): builds out/fuzz/fuzz_scene (clang-14)
+# and fuzzes from the seeds and regressions for RISER_SIM_FUZZ_SECONDS (default 0: skipped; the
 # seeds and regressions replay as gtests anyway) with a fixed seed, so a failure reproduces. One test case.
 rc_fuzz=0
 fuzz_s=${RISER_SIM_FUZZ_SECONDS:-0}

@@ -1,8 +1,11 @@
 #!/usr/bin/env bash
-# The core's and the CLI's gtests under AddressSanitizer + UndefinedBehaviorSanitizer (gcc, any finding
+# The core's and the CLI's gtests under AddressSanitizer + UndefinedBehaviorSanitizer (clang-14, any finding
 # aborts), built without catkin (RISER_SIM_CORE_ONLY) in its own directory. Eigen's and libstdc++'s
 # bounds assertions are on too (no NDEBUG, _GLIBCXX_ASSERTIONS). -O1 (RISER_SIM_SANITIZE_OPT): compiles ~1/3
 # faster than -O2 and the tests ran no slower.
+# Compiler: clang++-14 (scripts/install_deps.sh installs it and its sanitizer runtime, libclang-rt-14-dev):
+# under ASan it compiles the core in less CPU than gcc (docs/hardening.md). Without a clang that can link a
+# sanitized program, g++ (with a message). RISER_SIM_SANITIZE_CXX names the compiler (e.g. g++).
 #   scripts/test_sanitize.sh [RESULTS_DIR]
 # Writes one JUnit XML per test binary to RESULTS_DIR (sanitize-<test>.xml; a binary stopped by a
 # sanitizer gets a failing one), prints "N passed, N failed" and exits non-zero on any failure.
@@ -18,13 +21,27 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 ws=${RISER_SIM_WS:-$root/.ws}
 build=${RISER_SIM_SANITIZE_BUILD:-$ws/sanitize}
 results=${1:-$build/test_results}
+mkdir -p "$(dirname "$build")"
+cxx=""
+for c in ${RISER_SIM_SANITIZE_CXX:-clang++-14 clang++ g++}; do
+  command -v "$c" >/dev/null 2>&1 || continue
+  echo 'int main() { return 0; }' | "$c" -x c++ -fsanitize=address,undefined - -o "$build.probe" >/dev/null 2>&1 &&
+    { cxx=$c; break; }
+done
+rm -f "$build.probe"
+[ -n "$cxx" ] || { echo "sanitize: no compiler links -fsanitize=address,undefined"; echo "0 passed, 1 failed"; exit 1; }
+[[ "$cxx" == clang* ]] || echo "sanitize: using $cxx (no clang with its sanitizer runtime: make deps installs clang-14 libclang-rt-14-dev)"
+# A build directory configured with another compiler starts again (CMake cannot switch it in place).
+[ -f "$build/CMakeCache.txt" ] && [ "$(cat "$build/.riser_sim_cxx" 2>/dev/null)" != "$cxx" ] && rm -rf "$build"
+mkdir -p "$build" && echo "$cxx" >"$build/.riser_sim_cxx"
+# -g1: line tables, enough for the sanitizers' stack traces (clang's -g1 is -gline-tables-only).
 flags="${RISER_SIM_SANITIZE_OPT:--O1} -g1 -fno-omit-frame-pointer -D_GLIBCXX_ASSERTIONS"
 flags+=" -fsanitize=address,undefined -fno-sanitize-recover=all"
 
 default_tests=$(grep -v '^#' "$root/scripts/sanitize_tests.txt" | tr '\n' ' ')
 tests=${RISER_SIM_SANITIZE_TESTS:-$default_tests}
 [ "$tests" = all ] && tests=""
-cmake -S "$root" -B "$build" -DRISER_SIM_CORE_ONLY=ON -DCMAKE_BUILD_TYPE=Sanitize -DRISER_SIM_TESTS="${tests// /;}" \
+cmake -S "$root" -B "$build" -DCMAKE_CXX_COMPILER="$cxx" -DRISER_SIM_CORE_ONLY=ON -DCMAKE_BUILD_TYPE=Sanitize -DRISER_SIM_TESTS="${tests// /;}" \
   -DCMAKE_CXX_FLAGS_SANITIZE="$flags" -DCMAKE_EXE_LINKER_FLAGS_SANITIZE="-fsanitize=address,undefined" \
   >"$build.cmake.log" 2>&1 || { cat "$build.cmake.log"; echo "0 passed, 1 failed"; exit 1; }
 cmake --build "$build" -j2 >"$build.build.log" 2>&1 || {
@@ -52,8 +69,10 @@ long+=":CliSpatialEnds.FlexJointTopMomentBalancesTheWeight:CliSpatialEnds.Pinned
 default_filter="-$long"
 [ -n "$tests" ] && default_filter="*"
 export GTEST_FILTER=${RISER_SIM_SANITIZE_FILTER:-$default_filter}
-export ASAN_OPTIONS="detect_leaks=1:halt_on_error=1:strict_string_checks=1"
-export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+# allow_addr2line: clang's runtime symbolizes with llvm-symbolizer (package llvm-14, not installed by
+# install_deps.sh), else with binutils' addr2line only when allowed.
+export ASAN_OPTIONS="detect_leaks=1:halt_on_error=1:strict_string_checks=1:allow_addr2line=1"
+export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1:allow_addr2line=1"
 export root build results
 
 # One test binary. A sanitizer stops it before (or after) gtest writes its XML: a failed run without a

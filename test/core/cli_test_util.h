@@ -19,6 +19,16 @@
 #error "RISER_SIM_CLI_BINARY must be defined (cmake/cli.cmake)"
 #endif
 
+// RISER_SIM_ASAN: built with AddressSanitizer. gcc defines __SANITIZE_ADDRESS__; clang-14 (the sanitizer
+// build's compiler, scripts/test_sanitize.sh) does not, it has __has_feature(address_sanitizer).
+#if defined(__SANITIZE_ADDRESS__)
+#define RISER_SIM_ASAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define RISER_SIM_ASAN 1
+#endif
+#endif
+
 namespace cli_test {
 
 inline const std::string kScenes = std::string(RISER_SIM_SOURCE_DIR) + "/config/scenes/";

@@ -53,7 +53,7 @@ TEST(Cli, UnwritableOutputPathFails) {
 // (virtual, 1 GiB; not under ASan, which reserves terabytes) and `timeout` keep a regression from taking
 // the machine with it. The fixed loader reads 1 MiB in ~10 ms.
 TEST(Cli, EndlessSceneFailsAtTheSizeLimit) {
-#if defined(__SANITIZE_ADDRESS__)
+#if defined(RISER_SIM_ASAN)
   const std::string prefix = "timeout 60 ";
 #else
   const std::string prefix = "ulimit -v 1048576; timeout 60 ";
