@@ -8,8 +8,13 @@
 // linearised on the increment, g δa + p δv + r δq = 0 (g = ∂c/∂q; for A-type rows p = 2ωg, r = ω²g and the
 // row is (1 + ωc)² g x_v = g b_v - ω² c g b_q, as the planar chain's pinned end). Rows: the top, the joints,
 // a pinned end (3 each) and per rfe the unit-length ½(e·e - 1) = 0.
-// Unknowns are ordered rfe by rfe, [λ_i (3), x_v,i (7), ν_i (1)] (+ the pinned end's λ_n), so the matrix is
-// block-tridiagonal with 11x11 blocks: block LU (Thomas) with partial pivoting inside each block. For the
+// The system is solved by a backward sweep from the bottom, as the planar chain solver's Riccati sweep: the
+// rfes below rfe i act on its momentum rows as an affine function of x_v,i (S_{i+1} x_v,i + s_{i+1}). Per rfe
+// the joint row gives x_A,i from x_v,i-1, the A momentum rows give λ_i, and (Δ, e) with the unit-length
+// multiplier ν_i solve a 5x5 system (LU with partial pivoting), so x_v,i = Φ_i x_v,i-1 + f_i; a forward pass
+// applies Φ. The matrices need not be symmetric (damping couplings, Baumgarte rows against Gᵀ columns). A
+// pinned end's multiplier λ_n is carried through the sweep linearly (the sensitivities ∂x_v,i/∂λ_n) and fixed
+// by its 3x3 row at the end. For the
 // shipped terms K and C are the exact linearisation (test_spatial_shifted: the solve matches a dense
 // finite-difference one to its accuracy); a term that leaves its part out only slows Newton. Workspaces
 // are sized in the constructor; factor() and solve() allocate nothing.
