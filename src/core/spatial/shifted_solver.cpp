@@ -178,6 +178,11 @@ void ShiftedSolver3::applyPhi(int i, const In& v, Out& out) const {
   out.template bottomRows<4>().noalias() = -body_[i].RN.template topRows<4>() * v;
 }
 
+namespace {
+// Only the e-e block of a 7x7 coupling is nonzero.
+bool eeOnly(const Mat7& X) { return X.topRows<4>().isZero(0.0) && X.bottomLeftCorner<3, 4>().isZero(0.0); }
+}  // namespace
+
 // Backward sweep from the free (or pinned) end. The rfes below i act on rfe i's momentum rows as
 // -g_iᵀ λ_{i+1} + Up_i x_{i+1} = S_{i+1} x_i + s_{i+1}. Per rfe, with W = H_i + S_{i+1}: the joint row gives
 // x_A,i = (ρ_i + Γ_{i-1} x_{i-1}) / s, the Δ-e rows and the unit-length row a 5x5 system R for (u_i, ν_i), so
@@ -206,20 +211,25 @@ void ShiftedSolver3::factor(double c) {
     B.R(4, 4) = 0.0;
     luFactor<5>(B.R, B.piv);
     Eigen::Matrix<double, 3, 7> Lam;
+    bool ee = false;
     if (i > 0) {
+      const Body& P = body_[i - 1];
       const Mat7 Lo = c * S_.C_sub[i] + c2 * S_.K_sub[i];
-      N.topRows<4>().noalias() = (1.0 / s) * (B.W.block<4, 3>(kDelta3, kA) * body_[i - 1].Gam);
-      N.topRows<4>() += Lo.bottomRows<4>();
+      // The shipped terms couple neighbours in e-e only (bending): skip the zero blocks then (exact).
+      ee = eeOnly(Lo) && eeOnly(P.Up);
+      N.topRows<4>().noalias() = (1.0 / s) * (B.W.block<4, 3>(kDelta3, kA) * P.Gam);
+      if (ee) N.block<3, 3>(1, kE) += Lo.block<3, 3>(kE, kE);
+      else N.topRows<4>() += Lo.bottomRows<4>();
       N.row(4).setZero();
       luSolveCols<5, 7>(B.R, B.piv, N);
       B.RN = N;
-      Phi.topRows<3>() = (1.0 / s) * body_[i - 1].Gam;
+      Phi.topRows<3>() = (1.0 / s) * P.Gam;
       Phi.bottomRows<4>() = -N.topRows<4>();
       Lam.noalias() = -(B.W.topRows<3>() * Phi);
-      Lam -= Lo.topRows<3>();
-      const Body& P = body_[i - 1];
+      if (!ee) Lam -= Lo.topRows<3>();
       Snext.noalias() = -(P.gE.transpose() * Lam);
-      Snext.noalias() += P.Up * Phi;
+      if (ee) Snext.bottomRows<3>().noalias() += P.Up.block<3, 3>(kE, kE) * Phi.bottomRows<3>();
+      else Snext.noalias() += P.Up * Phi;
     }
     if (pinned_) {  // f_i's and s_i's dependence on μ
       RT.topRows<4>() = -T.bottomRows<4>();
@@ -232,7 +242,8 @@ void ShiftedSolver3::factor(double c) {
         Tl.noalias() -= B.W.topRows<3>() * B.Xmu;
         const Body& P = body_[i - 1];
         T.noalias() = -(P.gE.transpose() * Tl);
-        T.noalias() += P.Up * B.Xmu;
+        if (ee) T.bottomRows<3>().noalias() += P.Up.block<3, 3>(kE, kE) * B.Xmu.bottomRows<3>();
+        else T.noalias() += P.Up * B.Xmu;
       }
     }
   }
