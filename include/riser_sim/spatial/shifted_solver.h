@@ -8,8 +8,13 @@
 // linearised on the increment, g δa + p δv + r δq = 0 (g = ∂c/∂q; for A-type rows p = 2ωg, r = ω²g and the
 // row is (1 + ωc)² g x_v = g b_v - ω² c g b_q, as the planar chain's pinned end). Rows: the top, the joints,
 // a pinned end (3 each) and per rfe the unit-length ½(e·e - 1) = 0.
-// Unknowns are ordered rfe by rfe, [λ_i (3), x_v,i (7), ν_i (1)] (+ the pinned end's λ_n), so the matrix is
-// block-tridiagonal with 11x11 blocks: block LU (Thomas) with partial pivoting inside each block. For the
+// The system is solved by a backward sweep from the bottom, as the planar chain solver's Riccati sweep: the
+// rfes below rfe i act on its momentum rows as an affine function of x_v,i (S_{i+1} x_v,i + s_{i+1}). Per rfe
+// the joint row gives x_A,i from x_v,i-1, the A momentum rows give λ_i, and (Δ, e) with the unit-length
+// multiplier ν_i solve a 5x5 system (LU with partial pivoting), so x_v,i = Φ_i x_v,i-1 + f_i; a forward pass
+// applies Φ. The matrices need not be symmetric (damping couplings, Baumgarte rows against Gᵀ columns). A
+// pinned end's multiplier λ_n is carried through the sweep linearly (the sensitivities ∂x_v,i/∂λ_n) and fixed
+// by its 3x3 row at the end. For the
 // shipped terms K and C are the exact linearisation (test_spatial_shifted: the solve matches a dense
 // finite-difference one to its accuracy); a term that leaves its part out only slows Newton. Workspaces
 // are sized in the constructor; factor() and solve() allocate nothing.
@@ -44,6 +49,9 @@ class ShiftedSolver3 {
   using Mat11 = Eigen::Matrix<double, 11, 11>;
   using Vec11 = Eigen::Matrix<double, 11, 1>;
   using Mat37 = Eigen::Matrix<double, 3, 7>;
+  using Mat5 = Eigen::Matrix<double, 5, 5>;
+  using Mat57 = Eigen::Matrix<double, 5, 7>;
+  using Mat73 = Eigen::Matrix<double, 7, 3>;
 
  private:
   struct Body {
@@ -51,17 +59,22 @@ class ShiftedSolver3 {
     Mat7 Kup;               // K(i, i+1) = K_sub[i+1]ᵀ + K_sup[i+1] (the right side's coupling to rfe i+1)
     Mat37 gE, pE, rE;       // Baumgarte law of E_i: g δa + p δv + r δq (g = B_E = ∂E/∂q)
     Vec7 gu, pu, ru;        // Baumgarte law of the unit length
-    // The block row's coupling to x_v of the block before (rows λ_i, x_v,i; the unit-length row has none), and
-    // Y = D̃⁻¹ U, U the coupling to λ_{i+1}, x_v,i+1 of the block after (D̃⁻¹ U has no ν column): the nonzero
-    // parts only, to keep the per-rfe workspace small (n = 1000 runs from L3).
-    Eigen::Matrix<double, 10, 7> L;
-    Eigen::Matrix<double, 11, 10> Y;
-    Mat11 lu;               // D̃ = P⁻¹ L U in place (partial pivoting: piv[k] is the row swapped with row k)
-    int piv[11];
-    Vec11 z;
+    // Sweep (factor): Γ = g + c p + c² r of E_i; W = M + cC + c²K + S_{i+1} (the rfes below, as seen by x_i);
+    // R = [W_uu g_u; γ_uᵀ 0] (u = Δ, e; LU with partial pivoting), RN = R⁻¹ N (x_i's dependence on x_{i-1});
+    // Up = the coupling to x_{i+1}; Xmu = ∂x_i/∂λ_n (pinned end).
+    Mat37 Gam;
+    Mat7 W, Up;
+    Mat5 R;
+    int piv[5];
+    Mat57 RN;
+    Mat73 Xmu;
+    Vec7 x;                 // solve: x_i's constant part (backward), then x_v,i (forward)
   };
   void assembleRhs(int blk, const VecX& b, Vec11& r) const;
   int blocks() const { return nb_ + (pinned_ ? 1 : 0); }
+  // Φ_i v: x_i's dependence on x_{i-1} ([Γ_{i-1} / s; -RN_u]).
+  template <typename In, typename Out>
+  void applyPhi(int i, const In& v, Out& out) const;
 
   const SpatialModel& model_;
   const double omega_;
@@ -71,7 +84,8 @@ class ShiftedSolver3 {
   AlignedVector<Body> body_;  // nb_ + 1 (the last: the pinned end's block)
   SpatialStiffness S_;
   std::vector<double> t_diag_, t_mul_;  // torsion: the Thomas factor's pivots and multipliers
-  double c_ = 0.0;
+  Mat3 Sm_inv_ = Mat3::Zero();           // pinned: (Γ_{n-1} ∂x_{n-1}/∂λ_n)⁻¹
+  double c_ = 0.0, s_ = 1.0;
   bool linearized_ = false, factored_ = false;
 };
 

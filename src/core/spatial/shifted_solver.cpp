@@ -9,59 +9,51 @@ namespace riser_sim {
 namespace spatial {
 
 namespace {
-using Mat11 = ShiftedSolver3::Mat11;
-
-// LU with partial pivoting of an 11x11 block in place (unit lower L below the diagonal, U on and above;
-// row k was swapped with piv[k] at step k), on fixed-size column-major loops (Eigen's PartialPivLU goes
-// through its blocked dynamic-size kernels at this size).
-void luFactor(Mat11& A, int* piv) {
+// LU with partial pivoting of an N x N block in place (unit lower L below the diagonal, U on and above;
+// row k was swapped with piv[k] at step k), on fixed-size column-major loops.
+template <int N>
+void luFactor(Eigen::Matrix<double, N, N>& A, int* piv) {
   double* a = A.data();
-  for (int k = 0; k < 11; ++k) {
+  for (int k = 0; k < N; ++k) {
     int p = k;
-    double best = std::abs(a[k + 11 * k]);
-    for (int i = k + 1; i < 11; ++i)
-      if (std::abs(a[i + 11 * k]) > best) best = std::abs(a[i + 11 * k]), p = i;
+    double best = std::abs(a[k + N * k]);
+    for (int i = k + 1; i < N; ++i)
+      if (std::abs(a[i + N * k]) > best) best = std::abs(a[i + N * k]), p = i;
     piv[k] = p;
     if (p != k)
-      for (int j = 0; j < 11; ++j) std::swap(a[k + 11 * j], a[p + 11 * j]);
-    const double inv = 1.0 / a[k + 11 * k];
-    for (int i = k + 1; i < 11; ++i) a[i + 11 * k] *= inv;
-    for (int j = k + 1; j < 11; ++j) {
-      const double akj = a[k + 11 * j];
+      for (int j = 0; j < N; ++j) std::swap(a[k + N * j], a[p + N * j]);
+    const double inv = 1.0 / a[k + N * k];
+    for (int i = k + 1; i < N; ++i) a[i + N * k] *= inv;
+    for (int j = k + 1; j < N; ++j) {
+      const double akj = a[k + N * j];
       if (akj == 0.0) continue;
-      for (int i = k + 1; i < 11; ++i) a[i + 11 * j] -= a[i + 11 * k] * akj;
+      for (int i = k + 1; i < N; ++i) a[i + N * j] -= a[i + N * k] * akj;
     }
   }
 }
 
 // b <- A⁻¹ b with luFactor's A, piv.
-void luSolve(const Mat11& A, const int* piv, double* b) {
+template <int N>
+void luSolve(const Eigen::Matrix<double, N, N>& A, const int* piv, double* b) {
   const double* a = A.data();
-  for (int k = 0; k < 11; ++k)
+  for (int k = 0; k < N; ++k)
     if (piv[k] != k) std::swap(b[k], b[piv[k]]);
-  for (int k = 0; k < 11; ++k) {
+  for (int k = 0; k < N; ++k) {
     const double bk = b[k];
     if (bk == 0.0) continue;
-    for (int i = k + 1; i < 11; ++i) b[i] -= a[i + 11 * k] * bk;
+    for (int i = k + 1; i < N; ++i) b[i] -= a[i + N * k] * bk;
   }
-  for (int k = 10; k >= 0; --k) {
-    b[k] /= a[k + 11 * k];
+  for (int k = N - 1; k >= 0; --k) {
+    b[k] /= a[k + N * k];
     const double bk = b[k];
-    for (int i = 0; i < k; ++i) b[i] -= a[i + 11 * k] * bk;
+    for (int i = 0; i < k; ++i) b[i] -= a[i + N * k] * bk;
   }
 }
 
-// X <- A⁻¹ X for 10 right sides at once, X row-major: every row operation runs over the 10 columns.
-using Rows11x10 = Eigen::Matrix<double, 11, 10, Eigen::RowMajor>;
-void luSolveRows(const Mat11& A, const int* piv, Rows11x10& X) {
-  for (int k = 0; k < 11; ++k)
-    if (piv[k] != k) X.row(k).swap(X.row(piv[k]));
-  for (int k = 0; k < 11; ++k)
-    for (int i = k + 1; i < 11; ++i) X.row(i) -= A(i, k) * X.row(k);
-  for (int k = 10; k >= 0; --k) {
-    X.row(k) *= 1.0 / A(k, k);
-    for (int i = 0; i < k; ++i) X.row(i) -= A(i, k) * X.row(k);
-  }
+// X <- A⁻¹ X, column by column (X column-major).
+template <int N, int K>
+void luSolveCols(const Eigen::Matrix<double, N, N>& A, const int* piv, Eigen::Matrix<double, N, K>& X) {
+  for (int j = 0; j < K; ++j) luSolve<N>(A, piv, X.col(j).data());
 }
 }  // namespace
 
@@ -78,11 +70,14 @@ ShiftedSolver3::ShiftedSolver3(const SpatialModel& model, double stabilization)
     for (Mat7* m : {&B.M, &B.Kup}) m->setZero();
     for (Mat37* m : {&B.gE, &B.pE, &B.rE}) m->setZero();
     for (Vec7* v : {&B.gu, &B.pu, &B.ru}) v->setZero();
-    B.L.setZero();
-    B.Y.setZero();
-    B.z.setZero();
-    B.lu.setIdentity();
-    for (int k = 0; k < 11; ++k) B.piv[k] = k;
+    B.Gam.setZero();
+    B.W.setZero();
+    B.Up.setZero();
+    B.R.setIdentity();
+    for (int k = 0; k < 5; ++k) B.piv[k] = k;
+    B.RN.setZero();
+    B.Xmu.setZero();
+    B.x.setZero();
   }
   S_.resize(nb_);
   t_diag_.assign(nt_, 1.0);
@@ -177,45 +172,88 @@ void ShiftedSolver3::setLinearization(const NaturalData& d, const Eigen::Ref<con
   factored_ = false;
 }
 
+template <typename In, typename Out>
+void ShiftedSolver3::applyPhi(int i, const In& v, Out& out) const {
+  out.template topRows<3>().noalias() = (1.0 / s_) * (body_[i - 1].Gam * v);
+  out.template bottomRows<4>().noalias() = -body_[i].RN.template topRows<4>() * v;
+}
+
+namespace {
+// Only the e-e block of a 7x7 coupling is nonzero.
+bool eeOnly(const Mat7& X) { return X.topRows<4>().isZero(0.0) && X.bottomLeftCorner<3, 4>().isZero(0.0); }
+}  // namespace
+
+// Backward sweep from the free (or pinned) end. The rfes below i act on rfe i's momentum rows as
+// -g_iᵀ λ_{i+1} + Up_i x_{i+1} = S_{i+1} x_i + s_{i+1}. Per rfe, with W = H_i + S_{i+1}: the joint row gives
+// x_A,i = (ρ_i + Γ_{i-1} x_{i-1}) / s, the Δ-e rows and the unit-length row a 5x5 system R for (u_i, ν_i), so
+// x_i = Φ_i x_{i-1} + f_i, and the A rows give λ_i = -(W_A Φ_i + Lo_A) x_{i-1} + ℓ_i, hence S_i. A pinned end's
+// λ_n = μ rides along linearly (T: s_{i+1}'s dependence on μ) and is fixed by its row after the forward pass.
 void ShiftedSolver3::factor(double c) {
   const double s = (1.0 + omega_ * c) * (1.0 + omega_ * c), c2 = c * c;
-  const Mat3 I3 = Mat3::Identity();
-  Rows11x10 U;
+  s_ = s;
   for (int i = 0; i < nb_; ++i) {
     Body& B = body_[i];
-    Mat11& D = B.lu;
-    D.setZero();
-    D.block<3, 3>(0, 3 + kA) = s * I3;  // A_i's row (top or joint), g = [I 0 0]
-    D.block<3, 3>(3 + kA, 0) = I3;
-    D.block<7, 7>(3, 3) = B.M + c * S_.C_diag[i] + c2 * S_.K_diag[i];
-    D.block<7, 1>(3, 10) = B.gu;
-    D.block<1, 7>(10, 3) = (B.gu + c * B.pu + c2 * B.ru).transpose();
+    B.Gam = B.gE + c * B.pE + c2 * B.rE;
+    if (i + 1 < nb_) B.Up = (c * S_.C_sub[i + 1]).transpose() + c2 * B.Kup;
+  }
+  Mat7 Snext = Mat7::Zero();
+  Mat73 T = Mat73::Zero();
+  if (pinned_) T = -body_[nb_ - 1].gE.transpose();
+  Mat57 N;
+  Mat7 Phi;
+  Eigen::Matrix<double, 5, 3> RT;
+  for (int i = nb_ - 1; i >= 0; --i) {
+    Body& B = body_[i];
+    B.W = B.M + c * S_.C_diag[i] + c2 * S_.K_diag[i] + Snext;
+    B.R.topLeftCorner<4, 4>() = B.W.block<4, 4>(kDelta3, kDelta3);
+    B.R.block<4, 1>(0, 4) = B.gu.segment<4>(kDelta3);
+    B.R.block<1, 4>(4, 0) = (B.gu + c * B.pu + c2 * B.ru).segment<4>(kDelta3).transpose();
+    B.R(4, 4) = 0.0;
+    luFactor<5>(B.R, B.piv);
+    Eigen::Matrix<double, 3, 7> Lam;
+    bool ee = false;
     if (i > 0) {
       const Body& P = body_[i - 1];
-      // L: columns of x_v,i-1 only; row 10 (unit length) and column 10 of Y (ν) are zero.
-      B.L.topRows<3>() = -(P.gE + c * P.pE + c2 * P.rE);
-      B.L.bottomRows<7>() = c * S_.C_sub[i] + c2 * S_.K_sub[i];
-      D.topLeftCorner<10, 10>() -= B.L.lazyProduct(P.Y.middleRows<7>(3));
+      const Mat7 Lo = c * S_.C_sub[i] + c2 * S_.K_sub[i];
+      // The shipped terms couple neighbours in e-e only (bending): skip the zero blocks then (exact).
+      ee = eeOnly(Lo) && eeOnly(P.Up);
+      N.topRows<4>().noalias() = (1.0 / s) * (B.W.block<4, 3>(kDelta3, kA) * P.Gam);
+      if (ee) N.block<3, 3>(1, kE) += Lo.block<3, 3>(kE, kE);
+      else N.topRows<4>() += Lo.bottomRows<4>();
+      N.row(4).setZero();
+      luSolveCols<5, 7>(B.R, B.piv, N);
+      B.RN = N;
+      Phi.topRows<3>() = (1.0 / s) * P.Gam;
+      Phi.bottomRows<4>() = -N.topRows<4>();
+      Lam.noalias() = -(B.W.topRows<3>() * Phi);
+      if (!ee) Lam -= Lo.topRows<3>();
+      Snext.noalias() = -(P.gE.transpose() * Lam);
+      if (ee) Snext.bottomRows<3>().noalias() += P.Up.block<3, 3>(kE, kE) * Phi.bottomRows<3>();
+      else Snext.noalias() += P.Up * Phi;
     }
-    luFactor(D, B.piv);
-    if (i + 1 < blocks()) {
-      U.setZero();
-      U.block<7, 3>(3, 0) = -B.gE.transpose();
-      if (i + 1 < nb_) U.block<7, 7>(3, 3) = (c * S_.C_sub[i + 1]).transpose() + c2 * B.Kup;
-      luSolveRows(D, B.piv, U);
-      B.Y = U;
+    if (pinned_) {  // f_i's and s_i's dependence on μ
+      RT.topRows<4>() = -T.bottomRows<4>();
+      RT.row(4).setZero();
+      luSolveCols<5, 3>(B.R, B.piv, RT);
+      B.Xmu.topRows<3>().setZero();
+      B.Xmu.bottomRows<4>() = RT.topRows<4>();
+      if (i > 0) {
+        Eigen::Matrix<double, 3, 3> Tl = -T.topRows<3>();
+        Tl.noalias() -= B.W.topRows<3>() * B.Xmu;
+        const Body& P = body_[i - 1];
+        T.noalias() = -(P.gE.transpose() * Tl);
+        if (ee) T.bottomRows<3>().noalias() += P.Up.block<3, 3>(kE, kE) * B.Xmu.bottomRows<3>();
+        else T.noalias() += P.Up * B.Xmu;
+      }
     }
   }
-  if (pinned_) {  // E_n = p_b: rows 0..2; the rest of the block is padding (identity)
-    Body& B = body_[nb_];
-    const Body& P = body_[nb_ - 1];
-    Mat11& D = B.lu;
-    D.setIdentity();
-    D.block<3, 3>(0, 0).setZero();
-    B.L.setZero();
-    B.L.topRows<3>() = -(P.gE + c * P.pE + c2 * P.rE);
-    D.topLeftCorner<10, 10>() -= B.L.lazyProduct(P.Y.middleRows<7>(3));
-    luFactor(D, B.piv);
+  if (pinned_) {  // ∂x_i/∂μ forward, then the end row's Schur complement
+    Mat73 X;
+    for (int i = 1; i < nb_; ++i) {
+      applyPhi(i, body_[i - 1].Xmu, X);
+      body_[i].Xmu += X;
+    }
+    Sm_inv_ = (body_[nb_ - 1].Gam * body_[nb_ - 1].Xmu).inverse();
   }
   if (nt_ > 0) {  // spins: diagonal J_i + s (joints at i), off-diagonal -s between rows i, i+1 >= 1
     const double s = c * twistDamping(model_) + c * c * twistStiffness(model_);
@@ -252,17 +290,40 @@ void ShiftedSolver3::assembleRhs(int blk, const VecX& b, Vec11& r) const {
 }
 
 void ShiftedSolver3::solve(const VecX& b, VecX& x) {
-  const int nblk = blocks();
   Vec11 r;
-  for (int i = 0; i < nblk; ++i) {
+  Vec7 snext = Vec7::Zero(), phi;
+  Eigen::Matrix<double, 5, 1> y;
+  for (int i = nb_ - 1; i >= 0; --i) {  // backward: f_i (x_i's constant part), s_i
+    Body& B = body_[i];
     assembleRhs(i, b, r);
-    if (i > 0) r.head<10>().noalias() -= body_[i].L * body_[i - 1].z.segment<7>(3);
-    luSolve(body_[i].lu, body_[i].piv, r.data());
-    body_[i].z = r;
+    phi = r.segment<7>(3) - snext;
+    const Vec3 a = (1.0 / s_) * r.head<3>();
+    y.head<4>() = phi.segment<4>(kDelta3);
+    y.head<4>().noalias() -= B.W.block<4, 3>(kDelta3, kA) * a;
+    y[4] = r[10];
+    luSolve<5>(B.R, B.piv, y.data());
+    B.x.head<3>() = a;
+    B.x.tail<4>() = y.head<4>();
+    if (i > 0) {
+      Vec3 l = phi.head<3>();
+      l.noalias() -= B.W.topRows<3>() * B.x;
+      const Body& P = body_[i - 1];
+      snext.noalias() = -(P.gE.transpose() * l);
+      snext.noalias() += P.Up * B.x;
+    }
   }
-  for (int i = nblk - 2; i >= 0; --i) body_[i].z.noalias() -= body_[i].Y * body_[i + 1].z.head<10>();
+  Vec7 px;
+  for (int i = 1; i < nb_; ++i) {  // forward: x_i = Φ_i x_{i-1} + f_i
+    applyPhi(i, body_[i - 1].x, px);
+    body_[i].x += px;
+  }
+  if (pinned_) {
+    assembleRhs(nb_, b, r);
+    const Vec3 mu = -(Sm_inv_ * (r.head<3>() + body_[nb_ - 1].Gam * body_[nb_ - 1].x));
+    for (int i = 0; i < nb_; ++i) body_[i].x.noalias() += body_[i].Xmu * mu;
+  }
   for (int i = 0; i < nb_; ++i) {
-    const auto xv = body_[i].z.segment<7>(3);
+    const Vec7& xv = body_[i].x;
     x.segment<7>(vo_ + kDofPerBody3 * i) = xv;
     x.segment<7>(kDofPerBody3 * i) = b.segment<7>(kDofPerBody3 * i) + c_ * xv;
   }
