@@ -102,8 +102,8 @@ Relaxed3 relaxToRest(const Scene& scene, const Kinematics3& guess, const Vec3& t
   int where = 0;
   out.kin = guess;
   out.acceleration = restAcceleration(still, guess, Vec3::Zero(), top, where);
-  double h = 0.2 / w1;  // 30 steps per time constant of the slowest mode
-  const double budget = 60.0 / w1;  // e^-60: from any guess the planar statics give
+  double h = 0.2 / w1;  // 5 steps per time constant 1/ω1 of the slowest mode (ρ∞ = 0 damps the rest)
+  const double budget = 60.0 / w1;  // 60 time constants: e^-60 of any start the planar statics give
   const int kCheck = 10;
   while (!(out.acceleration <= 0.01 * bound)) {
     if (out.time >= budget)
