@@ -1,5 +1,6 @@
 #include "riser_sim/model.h"
 
+#include <cmath>
 #include <stdexcept>
 
 #include "riser_sim/force_term.h"
@@ -26,6 +27,8 @@ Model::Model(double length, int segments, const LineProperties& props, const Mod
     s += r.length;
     const double mpl = props.mass_per_length + props.content_mass_per_length;
     const double m1 = mpl * r.length1, m2 = mpl * r.length2;
+    if (props.axial_damping_ratio > 0.0)  // the element's halves, without the end mass: the line's own mode
+      r.axial_damping += 2.0 * props.axial_damping_ratio * std::sqrt(r.axial_stiffness * m1 * m2 / (m1 + m2));
     // Thin-rod parts: centre of part (1) at l1/2; part (2) at l1 + Δ + l2/2 (paper eq. 16).
     r.part[0] = RigidPart{m1, m1 * r.length1 * r.length1 / 12.0, 0.5 * r.length1, 0.0};
     r.part[1] = RigidPart{m2, m2 * r.length2 * r.length2 / 12.0, r.length1 + 0.5 * r.length2, 1.0};

@@ -113,8 +113,8 @@ void parseLine(const Section& root, Scene& s) {
                                                   "and the cross-section properties)");
   const Section line = root.section(
       "line", {"length", "elements", "outer_diameter", "inner_diameter", "youngs_modulus", "density", "EA", "EI",
-               "mass_per_length", "end_mass", "bending", "axial_flexibility", "axial_damping", "bending_damping",
-               "torsion"});
+               "mass_per_length", "end_mass", "bending", "axial_flexibility", "axial_damping", "axial_damping_ratio",
+               "bending_damping", "torsion"});
   s.length = line.number("length");
   requirePositive(line.key("length"), s.length);
   s.elements = line.integer("elements");
@@ -129,6 +129,13 @@ void parseLine(const Section& root, Scene& s) {
   parseCrossSection(line, s);
   s.line.axial_damping = line.number("axial_damping", 0.0);
   requireNonNegative(line.key("axial_damping"), s.line.axial_damping);
+  s.line.axial_damping_ratio = line.number("axial_damping_ratio", 0.0);
+  if (!(s.line.axial_damping_ratio >= 0.0 && s.line.axial_damping_ratio <= 1.0))
+    throw SceneError(line.key("axial_damping_ratio"), "must be in [0, 1] (a fraction of critical, not percent), got " +
+                                                           formatNumber(s.line.axial_damping_ratio));
+  if (line.has("axial_damping") && line.has("axial_damping_ratio"))
+    throw SceneError(line.key("axial_damping_ratio"), "give the axial damping either as a coefficient (axial_damping) "
+                                                      "or as a ratio, not both");
   s.line.bending_damping = line.number("bending_damping", 0.0);
   requireNonNegative(line.key("bending_damping"), s.line.bending_damping);
   s.end_mass = line.number("end_mass", 0.0);
