@@ -75,7 +75,7 @@ struct InitialState3 {
   double acceleration_bound = 0.0;
 };
 
-// The scene without its waves: what the statics and the equilibrium check see (the current stays, steady at t = 0).
+// The initial state (initial_state.cpp). The scene without its waves: what the statics and the equilibrium check see (the current stays, steady at t = 0).
 Scene stillWater(const Scene& scene);
 // Largest |acceleration| [m/s^2] of A_0..A_n and of the end of the 3D model of the scene in the state kin
 // at rest (velocities ignored), with end_force on the end (free bottom) or the end pinned where kin puts it;

@@ -1,0 +1,199 @@
+// The 3D initial state (run_builder.h): the planar statics in a vertical plane, rotated into 3D and checked
+// against the 3D model at rest; a current across that plane is relaxed in 3D (relaxation.h).
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include "riser_sim/spatial/forces/end_load.h"
+#include "riser_sim/spatial/natural_formulation.h"
+#include "riser_sim/spatial/relaxation.h"
+#include "riser_sim/spatial/run_builder.h"
+#include "riser_sim/statics.h"
+
+namespace riser_sim {
+namespace spatial {
+
+namespace {
+
+// Planarity of the statics' data in its plane, relative to the sizes involved (round-off of the rotation).
+constexpr double kPlanarTolerance = 1e-12;
+
+std::string fmt(double v) {
+  std::ostringstream o;
+  o.precision(6);
+  o << v;
+  return o.str();
+}
+
+// Rotation about z taking +x to the horizontal unit vector u: the planar (x, y_up) -> u x + y_up z.
+Mat3 yaw(const Vec2& u) {
+  Mat3 R;
+  R << u.x(), -u.y(), 0.0, u.y(), u.x(), 0.0, 0.0, 0.0, 1.0;
+  return R;
+}
+
+// The current's horizontal direction (uniform, or the first non-zero point of the profile); zero if none.
+Vec2 currentDirection(const CurrentSpec& c) {
+  if (!c.profile.empty()) {
+    for (const CurrentSpec::Point& p : c.profile)
+      if (Vec2(p.vx, p.vy).norm() > 0.0) return Vec2(p.vx, p.vy).normalized();
+    return Vec2::Zero();
+  }
+  const Vec2 h = c.velocity3.head<2>();
+  return h.norm() > 0.0 ? Vec2(h.normalized()) : Vec2::Zero();
+}
+
+// The current in the vertical plane along u (x along u, y_up = z), for the planar statics; `across` gets its
+// largest horizontal component normal to that plane beyond round-off (kPlanarTolerance of the speeds) [m/s].
+CurrentSpec planarCurrent(const CurrentSpec& c, const Vec2& u, double& across) {
+  const Vec2 nrm(-u.y(), u.x());
+  CurrentSpec p = c;
+  p.velocity = Vec2(c.velocity3.head<2>().dot(u), c.velocity3.z());
+  p.acceleration = Vec2(c.acceleration3.head<2>().dot(u), c.acceleration3.z());
+  across = std::max(std::abs(c.velocity3.head<2>().dot(nrm)), std::abs(c.acceleration3.head<2>().dot(nrm)));
+  double speed = std::max(c.velocity3.norm(), c.acceleration3.norm());
+  for (CurrentSpec::Point& q : p.profile) {
+    const Vec2 v(q.vx, q.vy);
+    across = std::max(across, std::abs(v.dot(nrm)));
+    speed = std::max(speed, v.norm());
+    q.vx = v.dot(u), q.vy = 0.0;
+  }
+  if (across <= kPlanarTolerance * speed) across = 0.0;
+  return p;
+}
+
+}  // namespace
+
+Scene stillWater(const Scene& scene) {
+  Scene s = scene;
+  s.water.waves.height = 0.0;
+  s.water.waves.significant_height = 0.0;
+  return s;
+}
+
+double restAcceleration(const Scene& scene, const Kinematics3& kin, const Vec3& end_force, const Vec3& top,
+                        int& where) {
+  std::shared_ptr<SpatialModel> model = buildSpatialModel(stillWater(scene));
+  if (scene.bottom == BottomBoundary::kPinned) model->setBottom(BottomBoundary::kPinned, kin.back().end());
+  if (end_force.squaredNorm() > 0.0 && scene.bottom != BottomBoundary::kPinned)
+    model->addTerm(std::make_unique<EndLoad3>(end_force));
+  const NaturalFormulation f(*model, scene.solver.stabilization);
+  auto data = f.makeData();
+  const int nq = f.positionSize();  // the velocities' offset (torsion adds θ to q)
+  VecX y = VecX::Zero(2 * nq), dy = VecX::Zero(2 * nq);
+  f.packState(kin, y);
+  f.initTwist(y, *data);  // untwisted: no twist forces
+  f.derivative(0.0, y, PointMotion3{top, Vec3::Zero(), Vec3::Zero()}, dy, *data);
+  double amax = 0.0;
+  where = 0;
+  for (int i = 0; i < model->bodies(); ++i) {
+    const double* u = dy.data() + nq + kDofPerBody3 * i;
+    const Vec3 aA(u[kA], u[kA + 1], u[kA + 2]), ee(u[kE], u[kE + 1], u[kE + 2]);
+    const Vec3 aE = aA + u[kDelta3] * kin[i].e + kin[i].len * ee;
+    const double a = std::max(aA.norm(), aE.norm());
+    if (!(a <= amax)) amax = a, where = i;  // a NaN wins
+  }
+  return amax;
+}
+
+InitialState3 solveInitialState3(const Scene& scene, const Vec3& top) {
+  InitialState3 init;
+  const InitialKind kind = scene.initial.type;
+  // The vertical plane of the problem: through the top, along the horizontal unit vector u.
+  Vec2 u(1.0, 0.0);
+  const Vec2 bottom_h = scene.bottom_point3.head<2>() - top.head<2>();
+  if (kind == InitialKind::kStraight) u = Vec2(std::cos(scene.initial.heading), std::sin(scene.initial.heading));
+  if (kind == InitialKind::kDisplaced && scene.initial.end_offset.norm() > 0.0) u = scene.initial.end_offset.normalized();
+  if (kind == InitialKind::kBetweenPoints && bottom_h.norm() > 0.0) u = bottom_h.normalized();
+  // A line hanging free in a current leans downstream: its plane is the current's (the statics see it steady).
+  const Vec2 cur = scene.water.enabled ? currentDirection(scene.water.current) : Vec2::Zero();
+  const bool free_hang = kind == InitialKind::kHanging || (kind == InitialKind::kDisplaced && scene.initial.end_offset.norm() == 0.0);
+  if (free_hang && cur.norm() > 0.0) u = cur;
+  const Mat3 R = yaw(u);
+  const Vec3 origin(top.x(), top.y(), 0.0);
+  const Vec3 normal(-u.y(), u.x(), 0.0);  // of the plane
+  init.plane_direction = Vec3(u.x(), u.y(), 0.0);
+
+  // The planar scene in that plane: x along u from the top, y_up = z.
+  Scene ps = scene;
+  ps.space = SpaceKind::kPlanar;
+  ps.top = TopMotionSpec();
+  ps.top.position = Vec2(0.0, top.z());
+  ps.initial.end_dx = scene.initial.end_offset.norm();
+  ps.bottom_point = Vec2(bottom_h.norm(), scene.bottom_point3.z());
+  double current_across = 0.0;
+  ps.water.current = planarCurrent(scene.water.current, u, current_across);
+  ps.water.waves = WaveSpec();  // the statics never see the waves
+  const std::shared_ptr<Model> planar = buildModel(ps);
+
+  if (kind == InitialKind::kStraight) {
+    init.kin = fromPlanar(straightLine(*planar, ps.top.position, scene.initial.angle), R, origin);
+    init.equilibrium = false;
+    init.about = "straight line (not an equilibrium)";
+    init.statics.converged = true;
+    init.statics.message = init.about;
+    return init;
+  }
+
+  // The problem is planar in that plane: gravity vertical, the top, the anchor and the end force in it.
+  const double L = scene.length;
+  const auto offPlane = [&](const Vec3& p) { return std::abs(normal.dot(p - origin)); };
+  std::string check;
+  if (buildSpatialModel(scene)->gravity().head<2>().norm() != 0.0) check = "gravity is not vertical";
+  if (check.empty() && kind == InitialKind::kBetweenPoints &&
+      offPlane(scene.bottom_point3) > kPlanarTolerance * std::max(L, (scene.bottom_point3 - top).norm()))
+    check = "bottom.position is " + fmt(offPlane(scene.bottom_point3)) + " m off the plane";
+  // A current across the plane (or veering with depth): the planar statics with its projection give the guess
+  // that the 3D relaxation starts from (relaxation.h). An end held by a force (displaced) is not relaxed.
+  const bool relax = scene.water.enabled && current_across > 0.0;
+  if (check.empty() && relax && kind == InitialKind::kDisplaced)
+    check = "the current has " + fmt(current_across) + " m/s across the plane (environment.current; a displaced "
+            "end is solved in its plane only)";
+
+  const StaticsProblem problem = staticsProblem(ps);
+  if (check.empty()) {
+    init.statics = solveStatics(*planar, problem, 0.0);
+    if (!init.statics.converged) throw std::runtime_error("initial: " + init.statics.message);
+    init.kin = fromPlanar(init.statics.kin, R, origin);
+    init.end_force = planarPoint(init.statics.end_force, R);
+    if (std::abs(normal.dot(init.end_force)) > kPlanarTolerance * init.end_force.norm())
+      check = "the end force points " + fmt(normal.dot(init.end_force)) + " N out of the plane";
+    for (size_t i = 0; i < init.kin.size() && check.empty(); ++i)
+      if (offPlane(init.kin[i].end()) > kPlanarTolerance * L)
+        check = "rfe " + std::to_string(i) + " ends " + fmt(offPlane(init.kin[i].end())) + " m off the plane";
+  }
+  if (!check.empty())
+    throw std::runtime_error("initial: the statics are solved in the vertical plane through the top along (" +
+                             fmt(u.x()) + ", " + fmt(u.y()) + "), but the problem is not planar there: " + check);
+  init.about = std::string(name(kind)) + " equilibrium (planar statics in the vertical plane along (" + fmt(u.x()) +
+               ", " + fmt(u.y()) + "), rotated into 3D)";
+
+  // The rotated state must be an equilibrium of the 3D model: its accelerations at rest ~0. The statics
+  // leave a residual force up to initial.tolerance x the weight W on a coordinate; on the lightest rfe
+  // (mass m_min) that is an acceleration of tolerance W / m_min. The bound allows 100x that (the residual
+  // spreads over the force, Δ and moment equations of an rfe), plus 1e-9 g of round-off.
+  const Model& line = *planar;
+  double m_min = INFINITY;
+  for (int i = 0; i < line.bodies(); ++i) m_min = std::min(m_min, line.rfe(i).mass);
+  const double W = line.totalMass() * scene.gravity;
+  init.acceleration_bound = 100.0 * scene.initial.tolerance * W / m_min + 1e-9 * std::max(scene.gravity, 1.0);
+  if (relax) {
+    const Relaxed3 r = relaxToRest(scene, init.kin, top, init.acceleration_bound);
+    init.kin = r.kin;
+    init.about = std::string(name(kind)) + " equilibrium in the current across the plane along (" + fmt(u.x()) + ", " +
+                 fmt(u.y()) + "): the planar statics with the current projected, relaxed in 3D (" + fmt(r.time) +
+                 " s, " + std::to_string(r.steps) + " steps)";
+  }
+  int where = 0;
+  init.max_acceleration = restAcceleration(scene, init.kin, init.end_force, top, where);
+  if (!(init.max_acceleration <= init.acceleration_bound))
+    throw std::runtime_error("initial: the " + std::string(name(kind)) + " equilibrium rotated into 3D is not an "
+                             "equilibrium of the 3D model: acceleration " + fmt(init.max_acceleration) +
+                             " m/s^2 at rest at rfe " + std::to_string(where) + " (bound " +
+                             fmt(init.acceleration_bound) + " m/s^2 from initial.tolerance)");
+  return init;
+}
+
+}  // namespace spatial
+}  // namespace riser_sim
