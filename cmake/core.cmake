@@ -55,10 +55,12 @@ add_library(riser_sim_core
   src/core/spatial/forces/bending_spring.cpp
   src/core/spatial/forces/flex_joint.cpp
   src/core/spatial/water.cpp
+  src/core/spatial/added_mass.cpp
   src/core/spatial/relaxation.cpp
   src/core/spatial/forces/buoyancy.cpp
   src/core/spatial/forces/morison_drag.cpp
   src/core/spatial/forces/froude_krylov.cpp
+  src/core/spatial/forces/added_mass.cpp
   src/core/spatial/forces/seabed.cpp
 )
 target_include_directories(riser_sim_core PUBLIC include ${EIGEN3_INCLUDE_DIR})

@@ -73,7 +73,8 @@ struct HydroSpec {
   bool enabled = false;
   double drag_tangential = 0.0;      // D_ξ
   double drag_normal = 0.0;          // D_η
-  double inertia_coefficient = 1.0;  // C_M (added mass C_M - 1)
+  double inertia_coefficient = 1.0;  // C_M (added mass C_M - 1 across the line)
+  double axial_added_mass = 0.0;     // C_a,t along the line (Froude-Krylov along it: 1 + C_a,t)
 };
 
 struct Scene {

@@ -28,8 +28,8 @@ std::shared_ptr<Model> buildModel(const Scene& scene) {
     const HydroSpec& h = scene.hydro;
     if (h.enabled && (h.drag_normal > 0.0 || h.drag_tangential > 0.0))
       model->addTerm(std::make_unique<MorisonDrag>(water, h.drag_tangential, h.drag_normal));
-    if (h.enabled && (h.inertia_coefficient != 1.0 || water.moving()))
-      model->addTerm(std::make_unique<HydroInertia>(water, h.inertia_coefficient));
+    if (h.enabled && (h.inertia_coefficient != 1.0 || h.axial_added_mass != 0.0 || water.moving()))
+      model->addTerm(std::make_unique<HydroInertia>(water, h.inertia_coefficient, h.axial_added_mass));
   }
   if (scene.seabed.enabled) model->addTerm(std::make_unique<Seabed>(scene.seabed));
   const InternalFlowSpec& f = scene.internal_fluid;

@@ -107,7 +107,8 @@ void parseEnvironment(const Section& root, Scene& s) {
 }
 
 void parseHydrodynamics(const Section& root, Scene& s) {
-  const Section h = root.section("hydrodynamics", {"drag_tangential", "drag_normal", "inertia_coefficient"});
+  const Section h =
+      root.section("hydrodynamics", {"drag_tangential", "drag_normal", "inertia_coefficient", "axial_added_mass"});
   s.hydro = HydroSpec();
   s.hydro.enabled = root.has("hydrodynamics");
   s.hydro.drag_tangential = h.number("drag_tangential", 0.0);
@@ -117,6 +118,8 @@ void parseHydrodynamics(const Section& root, Scene& s) {
   requireNonNegative(h.key("drag_normal"), s.hydro.drag_normal);
   if (!(s.hydro.inertia_coefficient >= 1.0))
     throw SceneError(h.key("inertia_coefficient"), "C_M must be >= 1 (added mass C_M - 1 >= 0)");
+  s.hydro.axial_added_mass = h.number("axial_added_mass", 0.0);
+  requireNonNegative(h.key("axial_added_mass"), s.hydro.axial_added_mass);
 }
 
 void parseSeabed(const Section& root, Scene& s) {

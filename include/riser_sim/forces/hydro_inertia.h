@@ -1,7 +1,7 @@
-// Morison inertia (paper eq. 13, 15) on the normal direction of each submerged part:
-// dF = [C_M ρ_w A_w a_w,η - (C_M - 1) ρ_w A_w a_η] n dξ. The added mass (C_M - 1) ρ_w A_w enters the
-// mass matrix (implicit, not lagged); the Froude-Krylov part C_M ρ_w A_w a_w,η is an applied force.
-// Tangential added mass is zero (slender cylinder).
+// Morison inertia (paper eq. 13, 15) on each submerged part, across and along it (the paper's normal part and
+// the axial one, as peer codes): dF = [C_M ρ_w A_w a_w,η - (C_M - 1) ρ_w A_w a_η] n dξ
+// + [(1 + C_a,t) ρ_w A_w a_w,ξ - C_a,t ρ_w A_w a_ξ] e dξ. The added masses (C_M - 1, C_a,t) ρ_w A_w enter the
+// mass matrix (implicit, not lagged); the Froude-Krylov parts are applied forces.
 #pragma once
 #include "riser_sim/force_term.h"
 #include "riser_sim/water.h"
@@ -10,14 +10,15 @@ namespace riser_sim {
 
 class HydroInertia : public ForceTerm {
  public:
-  HydroInertia(const WaterKinematics& water, double inertia_coefficient)
-      : water_(water), cm_(inertia_coefficient) {}
+  // inertia_coefficient C_M (across the line), axial_added_mass C_a,t (along it).
+  HydroInertia(const WaterKinematics& water, double inertia_coefficient, double axial_added_mass = 0.0)
+      : water_(water), cm_(inertia_coefficient), ca_t_(axial_added_mass) {}
   std::string name() const override { return "hydro_inertia"; }
   std::unique_ptr<ForceTerm> steadyTerm(double t) const override {
-    return std::make_unique<HydroInertia>(water_.steady(t), cm_);
+    return std::make_unique<HydroInertia>(water_.steady(t), cm_, ca_t_);
   }
   void addForces(const Model& model, const TermData*, const Kinematics& kin, double t, VecX& Q) const override;
-  bool hasInertia() const override { return cm_ != 1.0; }
+  bool hasInertia() const override { return cm_ != 1.0 || ca_t_ != 0.0; }
   void addInertia(const Model& model, const Kinematics& kin, double t, AlignedVector<Mat4>& M,
                   VecX& h) const override;
   double power(const Model& model, const TermData*, const Kinematics& kin, double t) const override;
@@ -29,7 +30,7 @@ class HydroInertia : public ForceTerm {
   // Adds the Froude-Krylov forces to *Q (when Q is given); returns the term's power [W].
   double sweep(const Model& model, const Kinematics& kin, double t, VecX* Q) const;
   WaterKinematics water_;
-  double cm_;
+  double cm_, ca_t_;
 };
 
 }  // namespace riser_sim

@@ -3,7 +3,9 @@
 // balance is checkable. Terms are immutable parts of the SpatialModel.
 #pragma once
 #include <string>
+#include <vector>
 
+#include "riser_sim/spatial/added_mass.h"
 #include "riser_sim/spatial/model.h"
 #include "riser_sim/spatial/stiffness.h"
 
@@ -29,6 +31,12 @@ class SpatialForceTerm {
   // nothing; an omitted or approximate linearisation slows Newton, it does not change the converged step.
   virtual void addStiffness(const SpatialModel& /*model*/, const Kinematics3& /*kin*/, double /*t*/,
                             SpatialStiffness& /*S*/) const {}
+  // Hydrodynamic inertia: a term with hasInertia() adds per rfe the moments of its added mass (added_mass.h)
+  // for the state kin, and reports that mass's kinetic energy [J] (the line's kinetic energy includes it).
+  virtual bool hasInertia() const { return false; }
+  virtual void addInertia(const SpatialModel& /*model*/, const Kinematics3& /*kin*/,
+                          std::vector<AddedMass3>& /*per_rfe*/) const {}
+  virtual double kineticEnergy(const SpatialModel& /*model*/, const Kinematics3& /*kin*/) const { return 0.0; }
 };
 
 }  // namespace spatial

@@ -54,6 +54,7 @@ class IndependentData3 {
   VecX rhs, theta_dd;
   Eigen::LLT<MatX> llt;
   MatX Phi, X;  // pinned: ∂E_n'/∂θ' (3 x p) and M_θ⁻¹ Φᵀ
+  std::vector<AddedMass3> added;  // terms with inertia: per rfe (empty without)
 };
 
 class IndependentFormulation3 {

@@ -11,6 +11,7 @@
 #include <memory>
 #include <vector>
 
+#include "riser_sim/spatial/added_mass.h"
 #include "riser_sim/spatial/model.h"
 #include "riser_sim/spatial/top_motion.h"
 
@@ -67,6 +68,8 @@ class NaturalData {
   // evaluation and its [θ; ω].
   TwistData twist;
   VecX twist_y;
+  // Terms with inertia (added mass): their moments per rfe for this evaluation; empty without such terms.
+  std::vector<AddedMass3> added;
 };
 
 class ShiftedSolver3;  // shifted_solver.h

@@ -46,7 +46,7 @@ class SpatialSimulator : private OdeSystem {
   void kinematics(Kinematics3& kin) const { formulation_.kinematics(y_, kin); }
   // A_0..A_n and the end E_n [m] (n + 2 points; resized by the caller once).
   void positions(AlignedVector<Vec3>& p) const;
-  double kineticEnergy() const { return formulation_.kineticEnergy(y_); }
+  double kineticEnergy();  // [J], the added mass's included
   double potentialEnergy();
   double energy() { return kineticEnergy() + potentialEnergy(); }  // T + V [J]
   double work() const { return y_[y_.size() - 1]; }                 // W [J]

@@ -1,5 +1,6 @@
 #include "riser_sim/spatial/independent_formulation.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -66,6 +67,8 @@ IndependentData3::IndependentData3(const SpatialModel& model, int k) : kin(model
   theta_dd.setZero(p);
   Phi.setZero(3, p);
   X.setZero(p, 3);
+  for (const auto& term : model.terms())
+    if (term->hasInertia()) added.assign(nb, AddedMass3());
 }
 
 IndependentFormulation3::IndependentFormulation3(const SpatialModel& model, double stabilization)
@@ -144,6 +147,11 @@ void IndependentFormulation3::derivative(double t, const VecX& y, const SphereCh
   d.Q.setZero();
   d.term_power = 0.0;
   for (const auto& term : model_.terms()) d.term_power += term->addForcesAndPower(model_, d.kin, t, d.Q);
+  if (!d.added.empty()) {
+    std::fill(d.added.begin(), d.added.end(), AddedMass3());
+    for (const auto& term : model_.terms())
+      if (term->hasInertia()) term->addInertia(model_, d.kin, d.added);
+  }
 
   // Per rfe: G, the e'' bias of the gnomonic chart, C, the natural acceleration biases and f = Q - h - M7 b.
   Vec3 Ab = top.a;
@@ -174,13 +182,18 @@ void IndependentFormulation3::derivative(double t, const VecX& y, const SphereCh
     h.segment<3>(kA) = w2 * rf.mass_k * b.e_dot;
     h[kDelta3] = w2 * rf.mass_k * b.e.dot(b.e_dot);
     h.segment<3>(kE) = w2 * Sk * b.e_dot;
+    if (!d.added.empty()) {
+      addAddedMassBlock(d.added[i], b, true, M7);
+      addAddedVelocityTerms(d.added[i], b, h.data());
+    }
     d.f[i] = d.Q.segment<7>(kDofPerBody3 * i) - h - M7 * bias;
   }
   d.A_bias[nb] = Ab;  // E_n'' at θ'' = 0
 
-  // M_θ: (j, k) blocks C_jᵀ D_k for j < k, D_k = m_{>k} C_k + M7_k(A, Δe) L_k; diagonal
-  // m_{>k} C_kᵀ C_k + L_kᵀ M7_k(Δe, Δe) L_k. Right side C_jᵀ Σ_{i>j} f_i(A) + L_jᵀ f_j(Δe).
-  double m_after = 0.0;
+  // M_θ: (j, k) blocks C_jᵀ D_k for j < k, D_k = M_{>k} C_k + M7_k(A, Δe) L_k (M_{>k} = Σ_{i>k} M7_i(A, A):
+  // m_{>k} I without added mass); diagonal C_kᵀ M_{>k} C_k + L_kᵀ M7_k(Δe, Δe) L_k. Right side
+  // C_jᵀ Σ_{i>j} f_i(A) + L_jᵀ f_j(Δe).
+  Mat3 m_after = Mat3::Zero();
   Vec3 fA_after = Vec3::Zero();
   for (int kb = nb - 1; kb >= 0; --kb) {
     Eigen::Matrix<double, 4, 3> L = Eigen::Matrix<double, 4, 3>::Zero();
@@ -189,13 +202,13 @@ void IndependentFormulation3::derivative(double t, const VecX& y, const SphereCh
     const Mat7& M7 = d.M7[kb];
     const Mat3& C = d.C[kb];
     d.D[kb] = m_after * C + M7.block<3, 4>(kA, kDelta3) * L;
-    const Mat3 diag = m_after * C.transpose() * C + L.transpose() * M7.block<4, 4>(kDelta3, kDelta3) * L;
+    const Mat3 diag = C.transpose() * m_after * C + L.transpose() * M7.block<4, 4>(kDelta3, kDelta3) * L;
     const Vec3 r = C.transpose() * fA_after + L.transpose() * d.f[kb].segment<4>(kDelta3);
     for (int a = 0; a < k_; ++a) {
       d.rhs[k_ * kb + a] = r[c0 + a];
       for (int c = 0; c < k_; ++c) d.M(k_ * kb + a, k_ * kb + c) = diag(c0 + a, c0 + c);
     }
-    m_after += model_.rfe(kb).mass;
+    m_after += M7.block<3, 3>(kA, kA);
     fA_after += d.f[kb].segment<3>(kA);
     for (int a = 0; a < k_; ++a) d.Phi.col(k_ * kb + a) = C.col(c0 + a);  // E_n' = top' + Σ C_j θ'_j
   }
@@ -317,7 +330,9 @@ double IndependentSimulator3::constraintError() const {
 
 double IndependentSimulator3::kineticEnergy() const {
   kinematics(kin_);
-  return formulation_.kineticEnergy(kin_);
+  double T = formulation_.kineticEnergy(kin_);
+  for (const auto& term : model_->terms()) T += term->kineticEnergy(*model_, kin_);
+  return T;
 }
 
 double IndependentSimulator3::potentialEnergy() const {

@@ -2,6 +2,7 @@
 
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -30,6 +31,8 @@ NaturalData::NaturalData(const SpatialModel& model) : kin(model.bodies()) {
     twist.resize(nb);
     twist_y.setZero(2 * nb);
   }
+  for (const auto& term : model.terms())
+    if (term->hasInertia()) added.assign(nb, AddedMass3());
 }
 
 NaturalFormulation::NaturalFormulation(const SpatialModel& model, double stabilization, bool closed_form)
@@ -93,6 +96,7 @@ void NaturalFormulation::denseBody(int i, NaturalData& d) const {
   } else {
     M(kDelta3, kDelta3) = 1.0;
   }
+  if (!d.added.empty()) addAddedMassBlock(d.added[i], b, axial, M);
   NaturalData::Body& c = d.body[i];
   Mat7& W = c.W;
   W = M.llt().solve(Mat7::Identity());
@@ -123,24 +127,28 @@ void NaturalFormulation::closedFormBody(int i, NaturalData& d) const {
   const Rfe& r = model_.rfe(i);
   const BodyKinematics3& b = d.kin[i];
   NaturalData::Body& c = d.body[i];
+  // Along n (t) and across it (n): the rfe's own moments plus the added mass's (added_mass.h).
   const double m = r.mass, mk = r.mass_k, S = r.firstMoment(b.delta), I = r.inertiaAboutA(b.delta);
+  const AddedMass3 a = d.added.empty() ? AddedMass3() : d.added[i];
+  const double m_t = m + a.axial.m, mk_t = mk + a.axial.mk, S_t = S + a.axial.S;
+  const double m_n = m + a.normal.m, S_n = S + a.normal.S, I_n = I + a.normal.I;
   c.rho = b.e.norm();
   c.n = b.e / c.rho;
   if (model_.options().axial_flexibility) {
-    const double det = mk * c.rho * c.rho * (m - mk);
-    c.a_aa = mk * c.rho * c.rho / det;
-    c.a_ad = -mk * c.rho / det;
-    c.a_dd = m / det;
-    c.Sk_rho = r.firstMomentK(b.delta) * c.rho;
+    const double det = mk_t * c.rho * c.rho * (m_t - mk_t);
+    c.a_aa = mk_t * c.rho * c.rho / det;
+    c.a_ad = -mk_t * c.rho / det;
+    c.a_dd = m_t / det;
+    c.Sk_rho = (r.firstMomentK(b.delta) + a.axial.Sk) * c.rho;
   } else {
-    c.a_aa = 1.0 / m;
+    c.a_aa = 1.0 / m_t;
     c.a_ad = c.a_dd = c.Sk_rho = 0.0;
   }
-  const double det = m * I - S * S;
-  c.t_AA = I / det;
-  c.t_Ae = -S / det;
-  c.t_ee = m / det;
-  c.S = S;
+  const double det = m_n * I_n - S_n * S_n;
+  c.t_AA = I_n / det;
+  c.t_Ae = -S_n / det;
+  c.t_ee = m_n / det;
+  c.S = S_t;
   c.bdd = unitGamma(b) / c.rho;
   closedFormAcceleration(c, d.Q.segment<7>(kDofPerBody3 * i) - d.h.segment<7>(kDofPerBody3 * i), c.a.data());
   // Compliances p n nᵀ + q (I - n nᵀ): a unit force at E_i adds [F; ρ n·F; len F] to f, and E'' = A'' + ρ Δ'' n + len e''.
@@ -180,6 +188,11 @@ void NaturalFormulation::derivative(double t, const VecX& y, const PointMotion3&
   d.Q.setZero();
   d.term_power = 0.0;
   for (const auto& term : model_.terms()) d.term_power += term->addForcesAndPower(model_, d.kin, t, d.Q);
+  if (!d.added.empty()) {
+    std::fill(d.added.begin(), d.added.end(), AddedMass3());
+    for (const auto& term : model_.terms())
+      if (term->hasInertia()) term->addInertia(model_, d.kin, d.added);
+  }
   if (nt > 0) {
     d.twist_y.head(nt) = y.segment(nq, nt);
     d.twist_y.tail(nt) = y.segment(vo + nq, nt);
@@ -193,6 +206,7 @@ void NaturalFormulation::derivative(double t, const VecX& y, const PointMotion3&
     double* h = d.h.data() + kDofPerBody3 * i;
     for (int k = 0; k < 3; ++k) h[kA + k] = w * r.mass_k * b.e_dot[k], h[kE + k] = w * r.firstMomentK(b.delta) * b.e_dot[k];
     h[kDelta3] = w * r.mass_k * b.e.dot(b.e_dot);
+    if (!d.added.empty()) addAddedVelocityTerms(d.added[i], b, h);
     if (closed_form_)
       closedFormBody(i, d);
     else

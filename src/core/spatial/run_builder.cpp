@@ -9,6 +9,7 @@
 #include "riser_sim/spatial/forces/axial_spring.h"
 #include "riser_sim/spatial/forces/bending_spring.h"
 #include "riser_sim/spatial/forces/buoyancy.h"
+#include "riser_sim/spatial/forces/added_mass.h"
 #include "riser_sim/spatial/forces/end_load.h"
 #include "riser_sim/spatial/forces/froude_krylov.h"
 #include "riser_sim/spatial/forces/gravity.h"
@@ -46,9 +47,6 @@ bool implicitScheme(IntegratorKind k) {
 
 std::optional<SceneIssue> unsupported(const Scene& s) {
   const std::string yet = "not available with space: spatial yet";
-  if (s.hydro.enabled && s.hydro.inertia_coefficient != 1.0)
-    return SceneIssue{"hydrodynamics.inertia_coefficient",
-                      "C_M != 1 (added mass) is " + yet + " (buoyancy, drag and the Froude-Krylov force with C_M = 1 are)"};
   if (s.seabed.enabled && s.seabed.stiffness_tangential > 0.0)
     return SceneIssue{"seabed.stiffness_tangential", "anchored tangential springs are " + yet +
                                                          " (the 3D seabed has Coulomb friction: friction_axial, friction_lateral)"};
@@ -125,7 +123,10 @@ std::shared_ptr<SpatialModel> buildSpatialModel(const Scene& scene) {
     const HydroSpec& h = scene.hydro;
     if (h.enabled && (h.drag_normal > 0.0 || h.drag_tangential > 0.0))
       model->addTerm(std::make_unique<MorisonDrag3>(water, h.drag_tangential, h.drag_normal));
-    if (h.enabled && water.moving()) model->addTerm(std::make_unique<FroudeKrylov3>(water));
+    if (h.enabled && water.moving())
+      model->addTerm(std::make_unique<FroudeKrylov3>(water, h.inertia_coefficient, 1.0 + h.axial_added_mass));
+    if (h.enabled && (h.inertia_coefficient != 1.0 || h.axial_added_mass != 0.0))
+      model->addTerm(std::make_unique<AddedMassTerm>(water, h.inertia_coefficient - 1.0, h.axial_added_mass));
   }
   if (scene.seabed.enabled) model->addTerm(std::make_unique<Seabed3>(scene.seabed, model->gravity()));
   if (scene.torsion.enabled) {

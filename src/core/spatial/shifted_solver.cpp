@@ -112,15 +112,21 @@ void ShiftedSolver3::setLinearization(const NaturalData& d, const Eigen::Ref<con
     Mat7& C = S_.C_diag[i];
     // μ from the e rows: S A'' + S_k e Δ'' + I_A e'' + h_e = Q_e + len λ_{i+1} + μ e.
     const Vec3 he = d.h.segment<3>(kDofPerBody3 * i + kE), Qe = d.Q.segment<3>(kDofPerBody3 * i + kE);
-    const Vec3 res = S * Add + Sk * Ddd * b.e + I * edd + he - Qe - b.len * L;
+    Vec3 res = S * Add + Sk * Ddd * b.e + I * edd + he - Qe - b.len * L;
+    if (!d.added.empty()) {  // added mass: in M and in μ's e rows (its turning with e is left out of K)
+      Mat7 Ma = Mat7::Zero();
+      addAddedMassBlock(d.added[i], b, axial_, Ma);
+      M += Ma;
+      res += Ma.middleRows<3>(kE) * acc.segment<7>(kDofPerBody3 * i);
+    }
     const double mu = b.e.dot(res) / b.e.squaredNorm();
     K.block<3, 3>(kE, kE) -= mu * I3;
     if (axial_) {
-      M.block<3, 1>(kA, kDelta3) = mk * b.e;
-      M.block<1, 3>(kDelta3, kA) = mk * b.e.transpose();
-      M.block<3, 1>(kE, kDelta3) = Sk * b.e;
-      M.block<1, 3>(kDelta3, kE) = Sk * b.e.transpose();
-      M(kDelta3, kDelta3) = mk * b.e.squaredNorm();
+      M.block<3, 1>(kA, kDelta3) += mk * b.e;
+      M.block<1, 3>(kDelta3, kA) += mk * b.e.transpose();
+      M.block<3, 1>(kE, kDelta3) += Sk * b.e;
+      M.block<1, 3>(kDelta3, kE) += Sk * b.e.transpose();
+      M(kDelta3, kDelta3) += mk * b.e.squaredNorm();
       // ∂(M a)/∂q (dS/dΔ = dS_k/dΔ = m_k, dI_A/dΔ = 2 S_k).
       K.block<3, 3>(kA, kE) += mk * Ddd * I3;
       K.block<3, 1>(kA, kDelta3) += mk * edd;

@@ -84,6 +84,14 @@ void SpatialSimulator::positions(AlignedVector<Vec3>& p) const {
   p[nb] = formulation_.body(y_, nb - 1).end();
 }
 
+double SpatialSimulator::kineticEnergy() {
+  double T = formulation_.kineticEnergy(y_);
+  if (data_->added.empty()) return T;
+  formulation_.kinematics(y_, kin_);
+  for (const auto& term : model_->terms()) T += term->kineticEnergy(*model_, kin_);
+  return T;
+}
+
 double SpatialSimulator::potentialEnergy() {
   formulation_.kinematics(y_, kin_);
   double v = 0.0;

@@ -1,6 +1,7 @@
-// Froude-Krylov force in 3D with C_M = 1 (the planar HydroInertia without added mass, paper eq. 13):
-// dF = C_M ρ_w A_w a_w,η dξ on each submerged part's centroid, a_w,η = a_w - (e·a_w) e the water's
-// acceleration normal to the rfe. Built only where the water moves (waves, an accelerating current).
+// Froude-Krylov force in 3D (the planar HydroInertia's applied part, paper eq. 13 with the axial part):
+// dF = [C_M ρ_w A_w a_w,η + (1 + C_a,t) ρ_w A_w a_w,ξ] dξ on each submerged part's centroid, a_w,ξ = (e·a_w) e
+// the water's acceleration along the rfe and a_w,η = a_w - a_w,ξ across it. The added mass is AddedMassTerm.
+// Built only where the water moves (waves, an accelerating current).
 #pragma once
 #include "riser_sim/spatial/force_term.h"
 #include "riser_sim/spatial/water.h"
@@ -10,7 +11,9 @@ namespace spatial {
 
 class FroudeKrylov3 : public SpatialForceTerm {
  public:
-  explicit FroudeKrylov3(const Water3& water) : water_(water) {}
+  // cm_normal C_M, cm_axial 1 + C_a,t.
+  FroudeKrylov3(const Water3& water, double cm_normal, double cm_axial)
+      : water_(water), cm_n_(cm_normal), cm_t_(cm_axial) {}
   std::string name() const override { return "froude_krylov"; }
   void addForces(const SpatialModel& model, const Kinematics3& kin, double t, VecX& Q) const override;
   double potentialEnergy(const SpatialModel&, const Kinematics3&) const override { return 0.0; }  // power() only
@@ -20,6 +23,7 @@ class FroudeKrylov3 : public SpatialForceTerm {
  private:
   double sweep(const SpatialModel& model, const Kinematics3& kin, double t, VecX* Q) const;
   Water3 water_;
+  double cm_n_, cm_t_;
 };
 
 }  // namespace spatial

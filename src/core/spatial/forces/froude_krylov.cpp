@@ -14,7 +14,8 @@ double FroudeKrylov3::sweep(const SpatialModel& model, const Kinematics3& kin, d
       if (!(w.length > 0.0)) continue;
       Vec3 vw, aw;
       water_.at(b.point(w.s0, w.kappa), t, vw, aw);
-      const Vec3 F = (rhoA * w.length) * (aw - b.e.dot(aw) * b.e);
+      const Vec3 along = b.e.dot(aw) * b.e;
+      const Vec3 F = (rhoA * w.length) * (cm_n_ * (aw - along) + cm_t_ * along);
       if (Q) addPointForce(b, w.s0, w.kappa, F, Q->data() + kDofPerBody3 * i);
       pw += F.dot(b.velocity(w.s0, w.kappa));
     }
