@@ -125,7 +125,7 @@ void parseHydrodynamics(const Section& root, Scene& s) {
 void parseSeabed(const Section& root, Scene& s) {
   const Section b = root.section("seabed", {"level", "stiffness_normal", "stiffness_tangential", "damping_normal",
                                             "damping_tangential", "friction_axial", "friction_lateral",
-                                            "friction_velocity"});
+                                            "friction_velocity", "slope", "slope_heading"});
   s.seabed = SeabedSpec();
   s.seabed.enabled = root.has("seabed");
   if (!s.seabed.enabled) return;
@@ -146,6 +146,15 @@ void parseSeabed(const Section& root, Scene& s) {
     if (planar && b.number(k, 0.0) > 0.0)
       throw SceneError(b.key(k), "Coulomb friction is in the 3D core (set space: spatial); the planar seabed holds "
                                  "the line with tangential springs anchored at touchdown (stiffness_tangential)");
+  // A sloped plane [deg in the file]: slope in [0, 45), heading any.
+  const double slope = b.number("slope", 0.0);
+  if (!(slope >= 0.0 && slope < 45.0))
+    throw SceneError(b.key("slope"), "must be in [0, 45) deg, got " + formatNumber(slope));
+  s.seabed.slope = slope * kDegToRad;
+  s.seabed.slope_heading = b.number("slope_heading", 0.0) * kDegToRad;
+  if (planar && slope != 0.0)
+    throw SceneError(b.key("slope"), "a sloped seabed is in the 3D core (set space: spatial); the planar seabed is "
+                                     "level at seabed.level");
 }
 
 void parseInternalFluid(const Section& root, Scene& s) {

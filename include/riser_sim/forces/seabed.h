@@ -20,6 +20,9 @@ struct SeabedSpec {
   // Coulomb friction (3D core only, spatial/forces/seabed.h): coefficients along the line's horizontal
   // direction and across it, smoothed below the sliding speed friction_velocity [m/s].
   double friction_axial = 0.0, friction_lateral = 0.0, friction_velocity = 0.01;
+  // A sloped plane (3D core only): its angle to the horizontal and the azimuth of its steepest ascent from +x
+  // towards +y [rad]; `level` is then its height on the origin's vertical (docs/scene_keys.md).
+  double slope = 0.0, slope_heading = 0.0;
 };
 
 // x of every contact point j = 0..n+1 at touchdown; NaN while it is free.

@@ -1,5 +1,6 @@
 // The 3D initial state (run_builder.h): the planar statics in a vertical plane, rotated into 3D and checked
-// against the 3D model at rest; a current across that plane is relaxed in 3D (relaxation.h).
+// against the 3D model at rest; a current across that plane, or a sloped seabed under the line, is relaxed in 3D
+// (relaxation.h).
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -110,6 +111,17 @@ InitialState3 solveInitialState3(const Scene& scene, const Vec3& top) {
   const Vec2 cur = scene.water.enabled ? currentDirection(scene.water.current) : Vec2::Zero();
   const bool free_hang = kind == InitialKind::kHanging || (kind == InitialKind::kDisplaced && scene.initial.end_offset.norm() == 0.0);
   if (free_hang && cur.norm() > 0.0) u = cur;
+  // A sloped seabed: a free end lies down its fall line (the plane downhill, unless a current sets it); the guess
+  // is the planar statics on a level seabed at the slope's height on the top's vertical (the line's footprint
+  // downhill of it is above the slope), relaxed in 3D. Other ends are not solved on a slope.
+  const SeabedSpec& bed = scene.seabed;
+  const bool sloped = bed.enabled && bed.slope > 0.0;
+  const Vec2 uphill(std::cos(bed.slope_heading), std::sin(bed.slope_heading));
+  if (sloped && kind != InitialKind::kStraight && !free_hang)
+    throw std::runtime_error("initial: seabed.slope: the statics on a sloped seabed are solved for a free end only "
+                             "(initial.type hanging: the planar statics relaxed in 3D); initial.type " +
+                             std::string(name(kind)) + " is not (use a level seabed or initial.type straight)");
+  if (sloped && free_hang && cur.norm() == 0.0) u = -uphill;
   const Mat3 R = yaw(u);
   const Vec3 origin(top.x(), top.y(), 0.0);
   const Vec3 normal(-u.y(), u.x(), 0.0);  // of the plane
@@ -125,6 +137,8 @@ InitialState3 solveInitialState3(const Scene& scene, const Vec3& top) {
   double current_across = 0.0;
   ps.water.current = planarCurrent(scene.water.current, u, current_across);
   ps.water.waves = WaveSpec();  // the statics never see the waves
+  if (sloped) ps.seabed.level = bed.level + std::tan(bed.slope) * uphill.dot(top.head<2>());
+  ps.seabed.slope = ps.seabed.slope_heading = 0.0;
   const std::shared_ptr<Model> planar = buildModel(ps);
 
   if (kind == InitialKind::kStraight) {
@@ -178,15 +192,20 @@ InitialState3 solveInitialState3(const Scene& scene, const Vec3& top) {
   for (int i = 0; i < line.bodies(); ++i) m_min = std::min(m_min, line.rfe(i).mass);
   const double W = line.totalMass() * scene.gravity;
   init.acceleration_bound = 100.0 * scene.initial.tolerance * W / m_min + 1e-9 * std::max(scene.gravity, 1.0);
-  if (relax) {
-    const Relaxed3 r = relaxToRest(scene, init.kin, top, init.acceleration_bound);
-    init.kin = r.kin;
-    init.about = std::string(name(kind)) + " equilibrium in the current across the plane along (" + fmt(u.x()) + ", " +
-                 fmt(u.y()) + "): the planar statics with the current projected, relaxed in 3D (" + fmt(r.time) +
-                 " s, " + std::to_string(r.steps) + " steps)";
-  }
   int where = 0;
   init.max_acceleration = restAcceleration(scene, init.kin, init.end_force, top, where);
+  // On a slope: relaxed when the guess touches it (off the seabed it is the planar equilibrium).
+  const bool relax_slope = sloped && !(init.max_acceleration <= init.acceleration_bound);
+  if (relax || relax_slope) {
+    const Relaxed3 r = relaxToRest(scene, init.kin, top, init.acceleration_bound);
+    init.kin = r.kin;
+    init.about = std::string(name(kind)) + " equilibrium " +
+                 (relax ? "in the current across the plane" : "on the sloped seabed, in the plane") + " along (" +
+                 fmt(u.x()) + ", " + fmt(u.y()) + "): the planar statics" +
+                 (relax ? " with the current projected" : " on a level seabed") + ", relaxed in 3D (" + fmt(r.time) +
+                 " s, " + std::to_string(r.steps) + " steps)";
+    init.max_acceleration = restAcceleration(scene, init.kin, init.end_force, top, where);
+  }
   if (!(init.max_acceleration <= init.acceleration_bound))
     throw std::runtime_error("initial: the " + std::string(name(kind)) + " equilibrium rotated into 3D is not an "
                              "equilibrium of the 3D model: acceleration " + fmt(init.max_acceleration) +

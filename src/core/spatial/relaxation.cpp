@@ -77,6 +77,8 @@ Relaxed3 relaxToRest(const Scene& scene, const Kinematics3& guess, const Vec3& t
   // The drag as the static load on the line held still (its damping would overdamp the slow modes).
   Scene dragless = still;
   dragless.hydro.drag_normal = dragless.hydro.drag_tangential = 0.0;
+  // The seabed's friction and tangential damper vanish at rest; they would only slow the creep to it.
+  dragless.seabed.friction_axial = dragless.seabed.friction_lateral = dragless.seabed.damping_tangential = 0.0;
   std::shared_ptr<SpatialModel> model = buildSpatialModel(dragless);
   const HydroSpec& hs = still.hydro;
   if (still.water.enabled && hs.enabled && (hs.drag_normal > 0.0 || hs.drag_tangential > 0.0))

@@ -6,8 +6,22 @@
 namespace riser_sim {
 namespace spatial {
 
-Seabed3::Seabed3(const SeabedSpec& spec, const Vec3& gravity)
-    : spec_(spec), up_(gravity.norm() > 0.0 ? Vec3(-gravity.normalized()) : Vec3::UnitZ()) {}
+namespace {
+
+Vec3 upOf(const Vec3& gravity) { return gravity.norm() > 0.0 ? Vec3(-gravity.normalized()) : Vec3::UnitZ(); }
+
+}  // namespace
+
+Seabed3::Seabed3(const SeabedSpec& spec, const Vec3& gravity) : spec_(spec), n_(upOf(gravity)), offset_(spec.level) {
+  if (spec.slope == 0.0) return;  // level: n = up, the arithmetic of the level plane
+  const Vec3 up = n_;
+  // The heading's horizontal direction (normal to up; with gravity along -z, (cos, sin, 0)).
+  Vec3 h = Vec3(std::cos(spec.slope_heading), std::sin(spec.slope_heading), 0.0);
+  h -= up.dot(h) * up;
+  h = h.norm() > 1e-12 ? Vec3(h.normalized()) : Vec3(up.unitOrthogonal());
+  n_ = std::cos(spec.slope) * up - std::sin(spec.slope) * h;
+  offset_ = spec.level * n_.dot(up);
+}
 
 Seabed3::Contact Seabed3::contact(const SpatialModel& model, const Kinematics3& kin, int j) const {
   const int n1 = model.bodies();
@@ -22,16 +36,16 @@ Seabed3::Contact Seabed3::contact(const SpatialModel& model, const Kinematics3& 
 
 Vec3 Seabed3::force(const Contact& c, const Vec3& e, bool conservative) const {
   const double pen = penetration(c.p);
-  if (conservative) return (spec_.stiffness_normal * pen) * up_;
-  const double vn = up_.dot(c.v);
+  if (conservative) return (spec_.stiffness_normal * pen) * n_;
+  const double vn = n_.dot(c.v);
   const double fn = std::max(spec_.stiffness_normal * pen - spec_.damping_normal * vn, 0.0);
-  const Vec3 vh = c.v - vn * up_;
-  Vec3 F = fn * up_ - spec_.damping_tangential * vh;
+  const Vec3 vh = c.v - vn * n_;
+  Vec3 F = fn * n_ - spec_.damping_tangential * vh;
   if (fn > 0.0 && (spec_.friction_axial > 0.0 || spec_.friction_lateral > 0.0)) {
-    Vec3 a = e - up_.dot(e) * up_;
+    Vec3 a = e - n_.dot(e) * n_;
     const double an = a.norm();
-    a = an > 1e-12 ? Vec3(a / an) : Vec3(up_.unitOrthogonal());  // an upright rfe: any direction
-    const Vec3 l = up_.cross(a);
+    a = an > 1e-12 ? Vec3(a / an) : Vec3(n_.unitOrthogonal());  // an upright rfe: any direction
+    const Vec3 l = n_.cross(a);
     const double va = vh.dot(a), vl = vh.dot(l);
     const double vs = spec_.friction_velocity;
     F -= (fn / std::sqrt(va * va + vl * vl + vs * vs)) * (spec_.friction_axial * va * a + spec_.friction_lateral * vl * l);
@@ -79,12 +93,12 @@ int Seabed3::contacts(const SpatialModel& model, const Kinematics3& kin) const {
 }
 
 void Seabed3::addStiffness(const SpatialModel& model, const Kinematics3& kin, double, SpatialStiffness& S) const {
-  const Mat3 UU = up_ * up_.transpose(), P = Mat3::Identity() - UU;
+  const Mat3 UU = n_ * n_.transpose(), P = Mat3::Identity() - UU;
   for (int j = 0; j <= model.bodies(); ++j) {
     const Contact c = contact(model, kin, j);
     const double pen = penetration(c.p);
     if (!(pen > 0.0)) continue;
-    const double fn = std::max(spec_.stiffness_normal * pen - spec_.damping_normal * up_.dot(c.v), 0.0);
+    const double fn = std::max(spec_.stiffness_normal * pen - spec_.damping_normal * n_.dot(c.v), 0.0);
     const double mu = std::max(spec_.friction_axial, spec_.friction_lateral);
     const Vec3 vh = P * c.v;
     const double slope = fn * mu / std::sqrt(vh.squaredNorm() + spec_.friction_velocity * spec_.friction_velocity);
