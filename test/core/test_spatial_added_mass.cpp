@@ -179,8 +179,8 @@ TEST(SpatialAddedMass, IndependentFormulationAgrees) {
 // - axial modes: the straight line's axial motion carries each part's mass and its axial added mass, both
 //   proportional to the part's length, and the stiffness is the dry one (the added mass has no force): ω scales
 //   by sqrt(μ/(μ + C_a,t ρ A)) exactly (bound 1e-9, the eigen-solve's round-off);
-// - transverse modes: degenerate pairs at the planar modes with C_M (bound 1e-9 as the dry pairs,
-//   test_spatial_modal), and near the continuum's sqrt(μ/(μ + C_a,n ρ A)) (bound 1 %: the lumped added mass has
+// - transverse modes: degenerate pairs at the planar modes with C_M, the axial ones at the planar ones with C_a,t
+//   (bound 1e-9 as the dry pairs, test_spatial_modal), and near the continuum's sqrt(μ/(μ + C_a,n ρ A)) (bound 1 %: the lumped added mass has
 //   no rotary inertia, the structure's parts do).
 TEST(SpatialAddedMass, ModesUnderWater) {
   spatial_test::LineSpec s = spatial_test::flexibleLine();
@@ -222,18 +222,22 @@ TEST(SpatialAddedMass, ModesUnderWater) {
   }
   ModalOptions o;
   o.modes = 2 * m2->bodies();
-  std::vector<double> t2;
-  for (const auto& m : computeModes(*m2, kin2, Vec2::Zero(), o).modes)
-    if (m.character != "axial") t2.push_back(m.omega), t2.push_back(m.omega);
+  std::vector<double> t2, a2;
+  for (const auto& m : computeModes(*m2, kin2, Vec2::Zero(), o).modes) {
+    if (m.character == "axial") a2.push_back(m.omega);
+    else t2.push_back(m.omega), t2.push_back(m.omega);
+  }
   std::sort(t2.begin(), t2.end());
   ASSERT_EQ(t2.size(), tw.size());
+  ASSERT_EQ(a2.size(), aw.size());
   double pairs = 0.0;
   for (size_t k = 0; k < tw.size(); ++k) pairs = std::max(pairs, std::abs(tw[k] / t2[k] - 1.0));
+  for (size_t k = 0; k < aw.size(); ++k) pairs = std::max(pairs, std::abs(aw[k] / a2[k] - 1.0));  // the planar C_a,t
   EXPECT_LT(pairs, 1e-9);
   const double lowest = tw[0] / td[0] / std::sqrt(mu / (mu + kCaNormal * rhoA)) - 1.0;
   EXPECT_LT(std::abs(lowest), 0.01);
-  std::printf("[ measured ] modes under water: axial ω ratio vs sqrt(μ/(μ + C_a,t ρA)) %.1e; transverse vs planar "
-              "(pairs) %.1e; lowest transverse ratio vs the continuum's %.2e (ω %.4f wet, %.4f dry rad/s)\n", axial,
+  std::printf("[ measured ] modes under water: axial ω ratio vs sqrt(μ/(μ + C_a,t ρA)) %.1e; transverse (pairs) "
+              "and axial vs planar %.1e; lowest transverse ratio vs the continuum's %.2e (ω %.4f wet, %.4f dry rad/s)\n", axial,
               pairs, lowest, tw[0], td[0]);
 }
 

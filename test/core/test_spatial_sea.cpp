@@ -356,7 +356,8 @@ TEST(SpatialSea, VeeringAndCrossCurrentsRelaxedIn3D) {
   }
 }
 
-// No allocation per step with every sea term on (waves, a sheared current, drag, buoyancy, Froude-Krylov).
+// No allocation per step with every sea term on (waves, a sheared current, drag, buoyancy, Froude-Krylov, added
+// mass across and along).
 TEST(SpatialSea, NoAllocationPerStep) {
   const std::string sea = R"(space: spatial
 top:
@@ -368,7 +369,7 @@ environment:
   waves: {height: 2.0, period: 6.0, heading: 45.0}
 )";
   for (const char* integrator : {"rk4", "midpoint"}) {
-    Scene sc = seaScene(sea);
+    Scene sc = seaScene(sea, {"hydrodynamics.inertia_coefficient=2", "hydrodynamics.axial_added_mass=0.5"});
     sc.solver.integrator = *parseChoice<IntegratorKind>(integrator);
     SpatialRun run(sc);
     for (int k = 0; k < 3; ++k) ASSERT_TRUE(run.step()) << run.divergenceReason();
