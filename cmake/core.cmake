@@ -40,6 +40,7 @@ add_library(riser_sim_core
   src/core/scene_sea_sections.cpp
   src/core/scene_yaml.cpp
   src/core/spatial/run_builder.cpp
+  src/core/spatial/external_motion3.cpp
   src/core/spatial/initial_state.cpp
   src/core/spatial/forces/end_load.cpp
   src/core/spatial/model.cpp

@@ -6,6 +6,10 @@ add_library(riser_sim_ros
   src/node/tf_listener.cpp
   src/node/line_messages.cpp
   src/node/line_markers.cpp
+  src/node/line_messages3.cpp
+  src/node/line_run.cpp
+  src/node/planar_line_run.cpp
+  src/node/spatial_line_run.cpp
   src/node/timing_stats.cpp
   src/node/modes_service.cpp
   src/node/master_watch.cpp

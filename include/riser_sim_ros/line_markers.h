@@ -11,6 +11,7 @@
 #include "riser_sim/model.h"
 #include "riser_sim/outputs.h"
 #include "riser_sim/scene.h"
+#include "riser_sim/spatial/run_builder.h"
 #include "riser_sim_ros/node_params.h"
 
 namespace riser_sim_ros {
@@ -33,9 +34,14 @@ class LineMarkers {
   LineMarkers(const riser_sim::Model& model, const std::string& fixed_frame, const MarkerParams& params,
               const Surfaces& surfaces = {});
   void fill(const riser_sim::LineOutputs& out, const ros::Time& stamp);
+  // The 3D line (space: spatial): the same markers, in 3D.
+  void fill(const riser_sim::spatial::LineOutputs3& out, const ros::Time& stamp);
   visualization_msgs::MarkerArray msg;
 
  private:
+  // P(i) -> world point of vertex i = 0..n + 1 (A_0 .. A_n, end).
+  template <class P>
+  void fillWith(P world, const std::vector<double>& axial_force, double top_tension, const ros::Time& stamp);
   visualization_msgs::Marker& marker(int id) { return msg.markers[index_[id]]; }
   int index_[kSeabed + 1] = {-1, -1, -1, -1, -1, -1, -1, -1, -1, -1};
   double length_, text_height_;

@@ -8,8 +8,7 @@
 #include <diagnostic_msgs/DiagnosticArray.h>
 #include <ros/ros.h>
 
-#include "riser_sim/external_motion.h"
-#include "riser_sim/simulator.h"
+#include "riser_sim_ros/line_run.h"
 #include "riser_sim_ros/ros_clock.h"
 #include "riser_sim_ros/timing_stats.h"
 #include "riser_sim_ros/vessel_input.h"
@@ -25,8 +24,7 @@ std::string num(double v, const char* format = "%.6g");
 struct RunView {
   RunMode mode = RunMode::kWaiting;
   std::string reason;                              // why diverged / statics failed
-  riser_sim::Simulator* sim = nullptr;             // null before the first start (energy is computed lazily)
-  const riser_sim::ExternalMotion* motion = nullptr;
+  LineRun* line = nullptr;                         // null before the first start (energy is computed lazily)
   ros::Time last_pose;                             // ROS time the last valid pose arrived (zero: none)
 };
 

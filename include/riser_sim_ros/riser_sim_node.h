@@ -2,7 +2,8 @@
 // See docs/ros_interface.md for topics, frames, parameters and services.
 //
 // Composition: VesselInput (poses in -> SampleBuffer), RosClockWatch + LoopPacer (ROS time, wall
-// pacing), the run from riser_sim::buildRun, LineTopics (the data topics, each at its rate),
+// pacing), the run (LineRun: the planar core or, for space: spatial, the 3D one), LineTopics (the data
+// topics, each at its rate),
 // NodeDiagnostics (/diagnostics), ResetHandshake (~reset) and ModesServer (~modes).
 //
 // Threads: ROS callbacks (vessel input, ~reset, tf listener) only copy samples into a SampleBuffer; they
@@ -21,9 +22,8 @@
 #include <std_srvs/Trigger.h>
 #include <tf2_ros/buffer.h>
 
-#include "riser_sim/external_motion.h"
 #include "riser_sim/scene.h"
-#include "riser_sim/simulator.h"
+#include "riser_sim_ros/line_run.h"
 #include "riser_sim_ros/line_topics.h"
 #include "riser_sim_ros/modes_service.h"
 #include "riser_sim_ros/node_diagnostics.h"
@@ -60,6 +60,7 @@ class RiserSimNode {
   void fail(const std::string& why);
   bool onReset(std_srvs::Trigger::Request& req, std_srvs::Trigger::Response& res);
   double simTime(const ros::Time& t) const { return (t - origin_).toSec() - dropped_; }
+  bool spatial() const { return scene_.space == riser_sim::SpaceKind::kSpatial; }
 
   ros::NodeHandle nh_, pnh_;
   NodeParams params_;
@@ -76,9 +77,8 @@ class RiserSimNode {
   ResetHandshake reset_;
   ros::ServiceServer reset_srv_;
 
-  std::unique_ptr<riser_sim::Simulator> sim_;
-  riser_sim::ExternalMotion* motion_ = nullptr;  // owned by sim_
-  RunView run_;                    // mode, reason, sim_, motion_, last pose: what /diagnostics reports
+  std::unique_ptr<LineRun> line_;
+  RunView run_;                    // mode, reason, line_, last pose: what /diagnostics reports
   std::atomic<bool> stop_{false};
   ros::Time origin_;               // sim time t = (ROS time - origin_) - dropped_
   double dropped_ = 0.0;           // backlog dropped when the integration fell behind [s]

@@ -25,6 +25,7 @@ struct VesselSample {
   ros::Time stamp;               // header stamp of the pose
   ros::Time received;            // ROS time when it arrived
   Eigen::Vector3d hangoff = Eigen::Vector3d::Zero();  // hang-off point in fixed_frame [m]
+  Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();  // vessel frame -> fixed_frame
 };
 
 class SampleBuffer {
@@ -83,8 +84,9 @@ inline Eigen::Vector2d toPaper(const Eigen::Vector3d& w) { return Eigen::Vector2
 class VesselInput {
  public:
   // `name` (the riser's) starts each log line.
+  // planar: the riser lives in the x-z plane (warn when the hang-off leaves it); false for a 3D scene.
   VesselInput(ros::NodeHandle& nh, const NodeParams& params, tf2_ros::Buffer& tf, SampleBuffer& out,
-              const std::string& name);
+              const std::string& name, bool planar = true);
   // Topic (pose/odom) or "tf <fixed> <- <vessel>" the input listens to, for messages.
   const std::string& source() const { return source_; }
   long accepted() const { return accepted_; }
@@ -113,6 +115,7 @@ class VesselInput {
   ros::Time last_stamp_;
   std::string last_rejection_;
   std::atomic<long> accepted_{0}, rejected_{0};
+  bool planar_;
   WarnThrottle reject_warn_{2.0}, tf_warn_{5.0}, plane_warn_{5.0};
 };
 

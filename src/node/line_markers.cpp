@@ -113,58 +113,81 @@ LineMarkers::LineMarkers(const riser_sim::Model& model, const std::string& fixed
 }
 
 void LineMarkers::fill(const riser_sim::LineOutputs& out, const ros::Time& stamp) {
+  fillWith([&](int i) { return point(out.points[i].x(), out.points[i].y()); }, out.axial_force, out.top_tension, stamp);
+}
+
+void LineMarkers::fill(const riser_sim::spatial::LineOutputs3& out, const ros::Time& stamp) {
+  fillWith(
+      [&](int i) {
+        geometry_msgs::Point p;
+        p.x = out.points[i].x(), p.y = out.points[i].y(), p.z = out.points[i].z();
+        return p;
+      },
+      out.axial_force, out.top_tension, stamp);
+}
+
+template <class P>
+void LineMarkers::fillWith(P world, const std::vector<double>& axial_force, double top_tension, const ros::Time& stamp) {
   for (auto& m : msg.markers) m.header.stamp = stamp;
-  const int nb = static_cast<int>(out.axial_force.size());
-  double lo = out.axial_force[0], hi = out.axial_force[0];
-  for (double f : out.axial_force) lo = std::min(lo, f), hi = std::max(hi, f);
+  const int nb = static_cast<int>(axial_force.size());
+  double lo = axial_force[0], hi = axial_force[0];
+  for (double f : axial_force) lo = std::min(lo, f), hi = std::max(hi, f);
   const double eps = 1e-6 * std::max({std::abs(lo), std::abs(hi), 1.0});
   if (hi - lo < eps) lo -= eps, hi += eps;
 
   // Line: vertex i (A_i) takes the mean force of the rfes that meet there; the end point takes rfe n's.
   auto& line = marker(kLine);
-  double xmin = out.points[0].x(), xmax = xmin, zmin = out.points[0].y(), zmax = zmin;
+  const geometry_msgs::Point p0 = world(0);
+  double xmin = p0.x, xmax = xmin, ymin = p0.y, ymax = ymin, zmax = p0.z;
   for (int i = 0; i <= nb; ++i) {
-    const auto& p = out.points[i];
-    line.points[i] = point(p.x(), p.y());
-    xmin = std::min(xmin, p.x()), xmax = std::max(xmax, p.x());
-    zmin = std::min(zmin, p.y()), zmax = std::max(zmax, p.y());
-    const double f = i == 0 ? out.axial_force[0]
-                            : (i == nb ? out.axial_force[nb - 1] : 0.5 * (out.axial_force[i - 1] + out.axial_force[i]));
+    const geometry_msgs::Point p = world(i);
+    line.points[i] = p;
+    xmin = std::min(xmin, p.x), xmax = std::max(xmax, p.x);
+    ymin = std::min(ymin, p.y), ymax = std::max(ymax, p.y);
+    zmax = std::max(zmax, p.z);
+    const double f = i == 0 ? axial_force[0]
+                            : (i == nb ? axial_force[nb - 1] : 0.5 * (axial_force[i - 1] + axial_force[i]));
     line.colors[i] = tensionColour(f, lo, hi);
   }
   auto& nodes = marker(kNodes);
-  for (int i = 0; i < nb; ++i) nodes.points[i] = point(out.points[i].x(), out.points[i].y());
-  marker(kEndMass).pose.position = point(out.points[nb].x(), out.points[nb].y());
+  for (int i = 0; i < nb; ++i) nodes.points[i] = line.points[i];
+  marker(kEndMass).pose.position = line.points[nb];
 
   char buf[64];
   auto& top = marker(kTopText);
-  top.pose.position = point(out.points[0].x(), out.points[0].y() + 1.2 * text_height_);
-  formatKn(buf, sizeof(buf), "top tension ", out.top_tension);
+  top.pose.position = p0;
+  top.pose.position.z += 1.2 * text_height_;
+  formatKn(buf, sizeof(buf), "top tension ", top_tension);
   top.text = buf;
 
   // Legend: a vertical colour bar right of the line, a third of the line length tall, its top a tenth
   // of the length below the hang-off so its title clears the top-tension text.
+  const double cy = 0.5 * (ymin + ymax);
+  const auto at = [cy](double x, double z) {
+    geometry_msgs::Point p = point(x, z);
+    p.y = cy;
+    return p;
+  };
   const double bx = xmax + 0.15 * length_, bz_top = zmax - 0.1 * length_, bz_low = bz_top - length_ / 3.0;
   auto& bar = marker(kLegendBar);
-  for (int k = 0; k < kBarVertices; ++k)
-    bar.points[k] = point(bx, bz_low + (bz_top - bz_low) * k / (kBarVertices - 1.0));
+  for (int k = 0; k < kBarVertices; ++k) bar.points[k] = at(bx, bz_low + (bz_top - bz_low) * k / (kBarVertices - 1.0));
   auto& low = marker(kLegendLow);
-  low.pose.position = point(bx + 0.12 * length_, bz_low);
+  low.pose.position = at(bx + 0.12 * length_, bz_low);
   formatKn(buf, sizeof(buf), "", lo);
   low.text = buf;
   auto& high = marker(kLegendHigh);
-  high.pose.position = point(bx + 0.12 * length_, bz_top);
+  high.pose.position = at(bx + 0.12 * length_, bz_top);
   formatKn(buf, sizeof(buf), "", hi);
   high.text = buf;
-  marker(kLegendTitle).pose.position = point(bx, bz_top + 0.9 * text_height_);
+  marker(kLegendTitle).pose.position = at(bx, bz_top + 0.9 * text_height_);
 
   // Surfaces: thin slabs spanning the line's horizontal extent plus half a line length each side.
   const double span = (xmax - xmin) + length_, cx = 0.5 * (xmin + xmax);
   auto slab = [&](int id, double z) {
     auto& m = marker(id);
-    m.pose.position = point(cx, z);
+    m.pose.position = at(cx, z);
     m.scale.x = span;
-    m.scale.y = 0.5 * length_;
+    m.scale.y = (ymax - ymin) + 0.5 * length_;
     m.scale.z = 0.01 * length_;
   };
   if (surfaces_.water_level) slab(kWater, *surfaces_.water_level);

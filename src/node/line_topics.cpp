@@ -12,31 +12,24 @@ const std::vector<TopicRate>& dataTopicRates() {
   return rates;
 }
 
-LineTopics::LineTopics(ros::NodeHandle& pnh, const NodeParams& params) : params_(params) {
+LineTopics::LineTopics(ros::NodeHandle& pnh, const NodeParams& params, bool bottom_wrench) : params_(params) {
   auto tension = pnh.advertise<riser_sim::Tension>("tension", 5);
-  add("tension", [this, tension](const riser_sim::LineOutputs& out, const ros::Time& t) {
-    msgs_->fillTension(out, t);
-    tension.publish(msgs_->tension);
-  });
+  add("tension", [tension](LineRun& run, const ros::Time& t) { tension.publish(run.tension(t)); });
   auto state = pnh.advertise<riser_sim::LineState>("state", 5);
-  add("state", [this, state](const riser_sim::LineOutputs& out, const ros::Time& t) {
-    msgs_->fillState(out, t);
-    state.publish(msgs_->state);
-  });
+  add("state", [state](LineRun& run, const ros::Time& t) { state.publish(run.state(t)); });
   auto wrench = pnh.advertise<geometry_msgs::WrenchStamped>("top_wrench", 5);
-  add("wrench", [this, wrench](const riser_sim::LineOutputs& out, const ros::Time& t) {
-    msgs_->fillWrench(out, t);
-    wrench.publish(msgs_->wrench);
+  ros::Publisher bottom;
+  if (bottom_wrench) bottom = pnh.advertise<geometry_msgs::WrenchStamped>("bottom_wrench", 5);
+  add("wrench", [wrench, bottom](LineRun& run, const ros::Time& t) {
+    wrench.publish(run.topWrench(t));
+    if (!bottom) return;
+    if (const geometry_msgs::WrenchStamped* b = run.bottomWrench(t)) bottom.publish(*b);
   });
-  add("tf", [this](const riser_sim::LineOutputs& out, const ros::Time& t) {
-    msgs_->fillTransforms(out, t);
-    tf_pub_.sendTransform(msgs_->transforms);
-  });
+  add("tf", [this](LineRun& run, const ros::Time& t) { tf_pub_.sendTransform(run.transforms(t)); });
   auto markers = pnh.advertise<visualization_msgs::MarkerArray>("markers", 2);
-  add("markers", [this, markers](const riser_sim::LineOutputs& out, const ros::Time& t) {
+  add("markers", [markers](LineRun& run, const ros::Time& t) {
     if (markers.getNumSubscribers() == 0) return;  // large: built only for a listener
-    markers_->fill(out, t);
-    markers.publish(markers_->msg);
+    markers.publish(run.markers(t));
   });
 }
 
@@ -51,9 +44,7 @@ void LineTopics::add(const std::string& name, Send send) {
     reference_ = static_cast<int>(topics_.size()) - 1;
 }
 
-void LineTopics::start(const riser_sim::Model& model, const riser_sim::Scene& scene, const ros::Time& origin) {
-  msgs_ = std::make_unique<LineMessages>(model, params_.fixed_frame, params_.tf_prefix);
-  markers_ = std::make_unique<LineMarkers>(model, params_.fixed_frame, params_.markers, surfacesOf(scene));
+void LineTopics::start(const ros::Time& origin) {
   for (Topic& t : topics_) t.schedule.restart(origin);
 }
 
@@ -63,9 +54,9 @@ bool LineTopics::due(const ros::Time& now) {
   return any;
 }
 
-bool LineTopics::publishDue(const riser_sim::LineOutputs& out, const ros::Time& stamp) {
+bool LineTopics::publishDue(LineRun& run, const ros::Time& stamp) {
   for (Topic& t : topics_)
-    if (t.due) t.send(out, stamp);
+    if (t.due) t.send(run, stamp);
   const bool reference = reference_ >= 0 && topics_[reference_].due;
   for (Topic& t : topics_) t.due = false;
   return reference;

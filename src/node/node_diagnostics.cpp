@@ -3,6 +3,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "riser_sim/simulator.h"
+
 namespace riser_sim_ros {
 
 std::string num(double v, const char* format) {
@@ -81,9 +83,9 @@ void NodeDiagnostics::addValue(const char* key, const std::string& value) {
 std::string NodeDiagnostics::runningMessage(const ros::Time& now, const RunView& run, double pose_age) {
   using diagnostic_msgs::DiagnosticStatus;
   DiagnosticStatus& st = msg_.status[0];
-  riser_sim::Simulator& sim = *run.sim;
+  LineRun& line = *run.line;
   const double ros_span = (now - win_ros_).toSec();
-  const double sim_span = sim.time() - win_sim_;
+  const double sim_span = line.time() - win_sim_;
   const double rtf = ros_span > 0.0 ? sim_span / ros_span : NAN;
   const double compute_rtf = win_compute_ > 0.0 ? sim_span / win_compute_ : NAN;
   const double step_mean = win_steps_ > 0 ? win_compute_ / win_steps_ : NAN;
@@ -98,20 +100,20 @@ std::string NodeDiagnostics::runningMessage(const ros::Time& now, const RunView&
   addValue("publish time p99 [ms]", num(publish_work_.percentile(0.99) * 1e3, "%.3f"));
   addValue("time dropped in window [s]", num(win_dropped_, "%.3f"));
   addValue("time dropped total [s]", num(total_dropped_, "%.3f"));
-  addValue("sim time [s]", num(sim.time(), "%.3f"));
-  addValue("dt [s]", num(sim.dt()));
-  addValue("constraint error [m]", num(sim.constraintError(), "%.3e"));
-  addValue("max constraint error [m]", num(sim.maxConstraintError(), "%.3e"));
-  addValue("energy [J]", num(sim.totalEnergy(), "%.6e"));
-  const double drift = sim.energyDrift();
+  addValue("sim time [s]", num(line.time(), "%.3f"));
+  addValue("dt [s]", num(line.dt()));
+  const RunHealth h = line.health();
+  addValue("constraint error [m]", num(h.constraint_error, "%.3e"));
+  addValue("max constraint error [m]", num(h.max_constraint_error, "%.3e"));
+  addValue("energy [J]", num(h.energy, "%.6e"));
+  const double drift = h.energy_drift;
   addValue("energy balance error (relative)", num(drift, "%.3e"));
-  const riser_sim::ForceNoise noise = sim.forceNoise().recent();
-  addValue("force noise, top tension (relative, last 10 s)", num(noise.top, "%.3e"));
-  addValue("force noise, largest axial force (relative, last 10 s)", num(noise.max_axial, "%.3e"));
-  const std::string forces = sim.forceWarning(noise);
-  const riser_sim::PointMotion top = run.motion->at(sim.time());
-  addValue("hang-off x [m]", num(top.p.x(), "%.4f"));
-  addValue("hang-off z [m]", num(top.p.y(), "%.4f"));
+  addValue("force noise, top tension (relative, last 10 s)", num(h.noise.top, "%.3e"));
+  addValue("force noise, largest axial force (relative, last 10 s)", num(h.noise.max_axial, "%.3e"));
+  const std::string& forces = h.force_warning;
+  addValue("hang-off x [m]", num(h.hangoff.x(), "%.4f"));
+  if (line.spatial()) addValue("hang-off y [m]", num(h.hangoff.y(), "%.4f"));
+  addValue("hang-off z [m]", num(h.hangoff.z(), "%.4f"));
   std::string message = "running: real-time factor " + num(rtf, "%.2f") + " (compute " + num(compute_rtf, "%.1f") +
                         "x real time)";
   if (win_dropped_ > 0.0 || (std::isfinite(rtf) && rtf < 0.95)) {
@@ -149,10 +151,10 @@ void NodeDiagnostics::publish(const ros::Time& now, const RunView& run) {
 
   st.level = DiagnosticStatus::OK;
   std::string message;
-  if (run.mode == RunMode::kRunning && run.sim) {
+  if (run.mode == RunMode::kRunning && run.line) {
     message = runningMessage(now, run, pose_age);
     // Without ROS time advancing there is no real-time factor to claim.
-    if (stalled) message = "simulation held at t = " + num(run.sim->time(), "%.3f") + " s";
+    if (stalled) message = "simulation held at t = " + num(run.line->time(), "%.3f") + " s";
   } else if (run.mode == RunMode::kWaiting) {
     st.level = DiagnosticStatus::WARN;
     message = "waiting for the first valid vessel pose (" + input_.source() + ")";
@@ -176,7 +178,7 @@ void NodeDiagnostics::publish(const ros::Time& now, const RunView& run) {
   }
   st.message = message;
   pub_.publish(msg_);
-  if (run.sim) restartWindow(now, run.sim->time());
+  if (run.line) restartWindow(now, run.line->time());
 }
 
 }  // namespace riser_sim_ros

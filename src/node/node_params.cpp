@@ -183,6 +183,9 @@ NodeParams loadNodeParams(const ros::NodeHandle& pnh, const std::string& node_na
   p.tf_prefix = stripSlash(r.text("tf_prefix", stripSlash(node_name)));
   if (p.tf_prefix.find(' ') != std::string::npos) throw ParamError("tf_prefix", "must not contain spaces");
   p.hangoff_offset = r.vec3("hangoff_offset", p.hangoff_offset);
+  p.wrench_frame = r.text("wrench_frame", p.wrench_frame);
+  if (p.wrench_frame != "fixed" && p.wrench_frame != "body")
+    throw ParamError("wrench_frame", "unknown value '" + p.wrench_frame + "' (accepted: fixed, body)");
   p.pose_timeout = r.number("pose_timeout", p.pose_timeout);
   positive("pose_timeout", p.pose_timeout);
   p.max_out_of_plane = r.number("max_out_of_plane", p.max_out_of_plane);

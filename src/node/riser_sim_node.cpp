@@ -3,25 +3,32 @@
 #include <cmath>
 #include <cstdio>
 
-#include "riser_sim/run_builder.h"
 #include "riser_sim/solver_setup.h"
+#include "riser_sim/spatial/run_builder.h"
 #include "riser_sim_ros/xmlrpc_yaml.h"
 
 namespace riser_sim_ros {
 
 RiserSimNode::RiserSimNode(ros::NodeHandle nh, ros::NodeHandle pnh)
     : nh_(nh), pnh_(pnh), params_(loadNodeParams(pnh, pnh.getNamespace())), scene_(loadScene(pnh)),
-      name_(pnh.getNamespace()), clock_(params_.clock_timeout, name_), topics_(pnh_, params_) {
+      name_(pnh.getNamespace()), clock_(params_.clock_timeout, name_),
+      topics_(pnh_, params_, spatial() && scene_.bottom == riser_sim::BottomBoundary::kPinned) {
   if (scene_.top.type != riser_sim::MotionKind::kExternal && scene_.top.type != riser_sim::MotionKind::kFixed)
     ROS_WARN("%s: ~scene/top/motion/type '%s' ignored: the node drives the top from the vessel", name_.c_str(),
              riser_sim::name(scene_.top.type));
   // The loader checked the scene; the solver setup once more with the core's one check, as a parameter error.
   if (const auto error = riser_sim::checkSolverSetup(scene_.solver, scene_.elements, scene_.options.axial_flexibility))
     throw ParamError(paramPath("scene", error->key), error->message);
+  if (spatial()) {  // what the 3D core cannot run yet, before any pose arrives
+    if (const auto issue = riser_sim::spatial::unsupported(scene_))
+      throw ParamError(paramPath("scene", issue->key), issue->message);
+  } else if (params_.wrench_frame == "body") {
+    throw ParamError("wrench_frame", "body needs a 3D scene (space: spatial); the planar wrench is in fixed_frame");
+  }
 
   // tf is only read for tf input or poses in another frame: k risers that each listened to /tf would
   // each deserialise every riser's transforms (k^2 work).
-  input_ = std::make_unique<VesselInput>(nh_, params_, tf_buffer_, samples_, name_);
+  input_ = std::make_unique<VesselInput>(nh_, params_, tf_buffer_, samples_, name_, !spatial());
   if (params_.vessel_input == "tf" || params_.expected_frame != params_.fixed_frame)
     tf_listener_ = std::make_unique<CheckedTfListener>(
         nh_, tf_buffer_, params_.vessel_input == "tf" ? params_.vessel_frame : "",
@@ -32,9 +39,9 @@ RiserSimNode::RiserSimNode(ros::NodeHandle nh, ros::NodeHandle pnh)
   reset_srv_ = pnh_.advertiseService("reset", &RiserSimNode::onReset, this);
   modes_ = std::make_unique<ModesServer>(pnh_, name_, params_.fixed_frame, input_->source());
 
-  ROS_INFO("%s: scene '%s' (L = %.1f m, n = %d, dt = %g s); vessel input %s, hang-off offset [%g, %g, %g] m; "
+  ROS_INFO("%s: scene '%s' (%s, L = %.1f m, n = %d, dt = %g s); vessel input %s, hang-off offset [%g, %g, %g] m; "
            "frames %s/rfe_<i> in %s",
-           name_.c_str(), scene_.name.c_str(), scene_.length, scene_.elements, scene_.solver.dt, input_->source().c_str(),
+           name_.c_str(), scene_.name.c_str(), spatial() ? "3D" : "planar", scene_.length, scene_.elements, scene_.solver.dt, input_->source().c_str(),
            params_.hangoff_offset.x(), params_.hangoff_offset.y(), params_.hangoff_offset.z(),
            params_.tf_prefix.c_str(), params_.fixed_frame.c_str());
 }
@@ -106,8 +113,7 @@ void RiserSimNode::cycle() {
       }
       break;
     case RunMode::kRunning:
-      for (int i = 0; i < n; ++i)
-        motion_->addSample(simTime(drained_[i].stamp), toPaper(drained_[i].hangoff), sim_->time());
+      for (int i = 0; i < n; ++i) line_->addSample(simTime(drained_[i].stamp), drained_[i]);
       if ((now - run_.last_pose).toSec() > params_.pose_timeout) {
         long held = 0;
         if (no_pose_warn_.allow(held))
@@ -117,11 +123,10 @@ void RiserSimNode::cycle() {
       integrate(now);
       if (run_.mode == RunMode::kRunning && topics_.due(now)) {
         const WallClock::time_point t0 = WallClock::now();
-        const riser_sim::LineOutputs& out = sim_->outputs();
-        if (!outputsFinite(out)) {
-          fail("non-finite outputs at t = " + num(sim_->time()) + " s");
+        if (!line_->evaluate()) {
+          fail("non-finite outputs at t = " + num(line_->time()) + " s");
         } else {
-          period_end = topics_.publishDue(out, origin_ + ros::Duration(sim_->time() + dropped_));
+          period_end = topics_.publishDue(*line_, origin_ + ros::Duration(line_->time() + dropped_));
           diag_->addPublishWork(seconds(WallClock::now() - t0));
         }
       }
@@ -135,61 +140,49 @@ void RiserSimNode::cycle() {
 
 bool RiserSimNode::start(const VesselSample& s, const ros::Time& now, std::string& message) {
   last_start_attempt_ = now;
-  const Eigen::Vector2d top = toPaper(s.hangoff);
-  riser_sim::Scene sc = scene_;
-  sc.top.type = riser_sim::MotionKind::kFixed;
-  sc.top.position = top;
-  riser_sim::Run run;
-  riser_sim::ExternalMotion* motion = nullptr;
+  std::unique_ptr<LineRun> line;
   try {
-    riser_sim::RunInputs in;
-    in.top = top;
-    auto m = std::make_unique<riser_sim::ExternalMotion>(top, simTime(s.stamp), params_.motion);
-    motion = m.get();
-    in.motion = std::move(m);
-    run = riser_sim::buildRun(sc, std::move(in));
-    const std::string above = run.sim->stepAboveLimit();
+    line = makeLineRun(scene_, s, simTime(s.stamp), params_);
+    const std::string above = line->stepAboveLimit();
     if (!above.empty()) {
-      run.sim.reset();
+      line.reset();
       run_.reason = "could not start: " + above;
     }
   } catch (const std::invalid_argument& e) {  // a setup the loader let through
     run_.reason = std::string("could not start: ") + e.what();
   } catch (const std::runtime_error& e) {  // the statics failed, or the start is not finite
-    run_.reason = "initial statics at hang-off (" + num(top.x()) + ", " + num(top.y()) + ") failed: " + e.what();
+    run_.reason = "initial statics at hang-off " + describeHangoff(scene_, s.hangoff) + " failed: " + e.what();
     modes_->setFailure(run_.reason);
   } catch (const std::exception& e) {
     run_.reason = std::string("could not start: ") + e.what();
   }
-  if (!run.sim) {
+  if (!line) {
     run_.mode = RunMode::kStartFailed;
     message = run_.reason;
     return false;
   }
-  modes_->setState(sc, run.initial.kin, run.initial.end_force, now);
+  line->shareStatics(*modes_, now);
   origin_ = ros::Time::now();  // after the statics: their cost is not a backlog to catch up
   if (origin_ < now) origin_ = now;
   dropped_ = 0.0;
   // The first sample's time on the new origin (the motion was made before the origin was known: with
   // the old origin the later samples looked older than it and were all refused, the top never moved).
-  motion->reset(simTime(s.stamp), top);
-  sim_ = std::move(run.sim);
-  motion_ = motion;
-  run_.sim = sim_.get();
-  run_.motion = motion_;
-  topics_.start(*run.model, sc, origin_);
+  line->restartMotion(simTime(s.stamp), s);
+  run_.line = nullptr;  // the old run goes now
+  line_ = std::move(line);
+  run_.line = line_.get();
+  topics_.start(origin_);
   run_.mode = RunMode::kRunning;
   run_.reason.clear();
-  diag_->restartWindow(origin_, sim_->time());
+  diag_->restartWindow(origin_, line_->time());
   diag_->clearTiming();
-  message = (run.initial.equilibrium ? "static equilibrium" : run.initial.about) + " at hang-off (x " + num(top.x(), "%.3f") + ", z " + num(top.y(), "%.3f") +
-            ") m: top tension " + num(sim_->outputs().top_tension, "%.1f") + " N; running";
+  message = line_->startMessage();
   return true;
 }
 
 void RiserSimNode::integrate(const ros::Time& now) {
-  const double dt = sim_->dt();
-  const double behind = simTime(now) - sim_->time();
+  const double dt = line_->dt();
+  const double behind = simTime(now) - line_->time();
   long n = static_cast<long>(std::floor(behind / dt + 1e-6));
   if (n <= 0) return;
   if (n > params_.max_steps_per_cycle) n = params_.max_steps_per_cycle;
@@ -198,7 +191,7 @@ void RiserSimNode::integrate(const ros::Time& now) {
     // Cannot keep up: drop the backlog rather than let the lag grow (reported on /diagnostics).
     dropped_ += after;
     diag_->addDropped(after);
-    motion_->shiftSampleTimes(after);
+    line_->shiftSampleTimes(after);
     long held = 0;
     if (behind_warn_.allow(held))
       ROS_WARN("%s: integration slower than real time (dt %g s, n = %d): dropped %.3f s of backlog", name_.c_str(), dt,
@@ -206,8 +199,8 @@ void RiserSimNode::integrate(const ros::Time& now) {
   }
   const WallClock::time_point t0 = WallClock::now();
   for (long i = 0; i < n; ++i) {
-    if (!sim_->step()) {
-      fail(sim_->divergenceReason());
+    if (!line_->step()) {
+      fail(line_->divergenceReason());
       break;
     }
   }

@@ -23,12 +23,7 @@ riser_sim::Scene loadScene(const ros::NodeHandle& pnh) {
     throw ParamError(paramPath("scene", what.substr(0, colon)), what.substr(colon + 2));
   }
   try {
-    riser_sim::Scene scene = riser_sim::parseScene(yaml);
-    // The node runs the planar core only (the 3D path is the CLI's for now: docs/spatial.md).
-    if (scene.space == riser_sim::SpaceKind::kSpatial)
-      throw riser_sim::SceneError("space", "'spatial' is not available in the node yet (the CLI runs it); use "
-                                           "space: planar");
-    return scene;
+    return riser_sim::parseScene(yaml);
   } catch (const riser_sim::SceneError& e) {
     std::string what = e.what();
     if (!e.key().empty() && what.rfind(e.key() + ": ", 0) == 0) what = what.substr(e.key().size() + 2);

@@ -102,8 +102,8 @@ bool WarnThrottle::allow(std::chrono::steady_clock::time_point now, long& suppre
 }
 
 VesselInput::VesselInput(ros::NodeHandle& nh, const NodeParams& params, tf2_ros::Buffer& tf, SampleBuffer& out,
-                         const std::string& name)
-    : params_(params), name_(name), tf_(tf), out_(out) {
+                         const std::string& name, bool planar)
+    : params_(params), name_(name), tf_(tf), out_(out), planar_(planar) {
   if (params.vessel_input == "pose") {
     sub_ = nh.subscribe("vessel/pose", 20, &VesselInput::onPose, this, ros::TransportHints().tcpNoDelay());
     source_ = sub_.getTopic();
@@ -181,6 +181,7 @@ void VesselInput::handle(const std_msgs::Header& header, const geometry_msgs::Po
   s.stamp = header.stamp;
   s.received = ros::Time::now();
   s.hangoff = pose * params_.hangoff_offset;
+  s.orientation = Eigen::Quaterniond(pose.rotation());
   if (!s.hangoff.allFinite()) return reject("hang-off point is not finite (pose * hangoff_offset)");
   {
     std::lock_guard<std::mutex> lock(mutex_);
@@ -192,7 +193,7 @@ void VesselInput::handle(const std_msgs::Header& header, const geometry_msgs::Po
   }
   if (!why.empty()) return reject(why);
   long held = 0;
-  if (std::abs(s.hangoff.y()) > params_.max_out_of_plane && plane_warn_.allow(held))
+  if (planar_ && std::abs(s.hangoff.y()) > params_.max_out_of_plane && plane_warn_.allow(held))
     ROS_WARN("%s: hang-off point is %.2f m out of the riser's x-z plane (world y; ~max_out_of_plane %.2f m); it is "
              "projected onto the plane (y dropped)",
              name_.c_str(), s.hangoff.y(), params_.max_out_of_plane);

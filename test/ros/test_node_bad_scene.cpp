@@ -40,8 +40,8 @@ TEST(NodeBadScene, SceneErrorsNameTheKey) {
   expectFatal("bad_key", "~scene/line/lenght: unknown key (did you mean 'length'?)");
   expectFatal("bad_dt", "~scene/solver/dt");
   expectFatal("bad_type", "~scene/line/mass_per_length: expected a number");
-  // The node is planar: a 3D scene is refused naming the key, never run in the x-z plane.
-  expectFatal("spatial_scene", "space: 'spatial' is not available in the node yet");
+  // A 3D scene with what the 3D core cannot run yet is refused at start, naming the key.
+  expectFatal("spatial_unsupported", "~scene/solver/formulation: 'recursive' is planar");
 }
 
 TEST(NodeBadScene, MissingSceneIsFatal) { expectFatal("no_scene_here", "~scene: missing"); }
@@ -51,6 +51,8 @@ TEST(NodeBadScene, NodeParameterErrorsNameTheParameter) {
   expectFatal("bad_input", "~vessel_input: unknown value 'gps' (accepted: pose, odom, tf)");
   expectFatal("bad_offset", "~hangoff_offset: expected [x, y, z]");
   expectFatal("bad_motion", "~motion/stop_time: must be > 0");
+  expectFatal("bad_wrench_frame", "~wrench_frame: unknown value 'vessel' (accepted: fixed, body)");
+  expectFatal("planar_body_wrench", "~wrench_frame: body needs a 3D scene (space: spatial)");
 }
 
 // A misspelt private parameter is fatal like a misspelt scene key (it would be ignored silently).

@@ -8,6 +8,7 @@
 #include "riser_sim/scene_yaml.h"
 #include "riser_sim_ros/line_markers.h"
 #include "riser_sim_ros/line_messages.h"
+#include "riser_sim_ros/line_messages3.h"
 #include "riser_sim_ros/tf_listener.h"
 #include "riser_sim_ros/timing_stats.h"
 #include "riser_sim_ros/vessel_input.h"
@@ -212,6 +213,43 @@ TEST(LineMessages, PaperToWorldMappingAndFrames) {
   EXPECT_NEAR(x_axis.z(), std::sin(-M_PI / 4), 1e-12);
   out.axial_force[1] = std::nan("");
   EXPECT_FALSE(outputsFinite(out));
+}
+
+// 3D rfe frames: x along each element, unit, finite for vertical and horizontal elements, the planar
+// frames for a line in the x-z plane, and continuous while rfe 0 turns through vertical and horizontal.
+TEST(LineFrames, AlongTheLineNeverSingularAndContinuous) {
+  using riser_sim::spatial::Vec3;
+  const auto check = [](const riser_sim::AlignedVector<Vec3>& pts, riser_sim_ros::LineFrames& f,
+                        std::vector<Eigen::Quaterniond>& q) {
+    f.update(pts, static_cast<int>(pts.size()) - 1, q);
+    for (size_t i = 0; i + 1 < pts.size(); ++i) {
+      ASSERT_TRUE(q[i].coeffs().allFinite());
+      EXPECT_NEAR(q[i].norm(), 1.0, 1e-12);
+      EXPECT_LT((q[i] * Vec3::UnitX() - (pts[i + 1] - pts[i]).normalized()).norm(), 1e-12);
+    }
+  };
+  std::vector<Eigen::Quaterniond> q(3);
+  for (const Vec3& d : {Vec3(0, 0, -1), Vec3(0, 0, 1), Vec3(0, 1, 0), Vec3(1, 0, 0), Vec3(0, -1, 0)}) {
+    riser_sim_ros::LineFrames f;
+    check({Vec3::Zero(), d, 2.0 * d, 3.0 * d}, f, q);
+  }
+  // In the x-z plane: y stays world y (the planar node's frames).
+  riser_sim_ros::LineFrames planar;
+  check({Vec3::Zero(), Vec3(1, 0, -1), Vec3(1.5, 0, -2), Vec3(1.5, 0, -3)}, planar, q);
+  for (const auto& r : q) EXPECT_LT((r * Vec3::UnitY() - Vec3::UnitY()).norm(), 1e-12);
+  // rfe 0 turns in small steps down -> horizontal -> up -> horizontal in y -> down: every frame turns by
+  // about the step, never flips.
+  riser_sim_ros::LineFrames f;
+  std::vector<Eigen::Quaterniond> prev;
+  const double step = 0.02;
+  for (int k = 0; k <= 630; ++k) {
+    const double a = k * step;
+    const Vec3 e0 = k <= 315 ? Vec3(std::sin(a), 0, -std::cos(a)) : Vec3(std::sin(a), std::sin(a) * 0.3, -std::cos(a)).normalized();
+    check({Vec3::Zero(), e0, e0 + Vec3(0, 0, -1), e0 + Vec3(0.2, 0.3, -2)}, f, q);
+    if (!prev.empty())
+      for (size_t i = 0; i < q.size(); ++i) EXPECT_LT(q[i].angularDistance(prev[i]), 3.0 * step) << k << " " << i;
+    prev = q;
+  }
 }
 
 TEST(LineMarkers, ColoursAndLegendFollowTheTensionRange) {

@@ -112,11 +112,17 @@ struct LineOutputs3 {
   double constraint_error = 0.0;  // [m]
 };
 
+// What a caller gives instead of the scene's top (as the planar RunInputs): the node's vessel feed.
+struct RunInputs3 {
+  std::optional<Vec3> top;              // A_0 at t = 0 [m]; default: motion's at t = 0
+  std::unique_ptr<TopMotion3> motion;   // default: buildTopMotion3(scene.top)
+};
+
 class SpatialRun {
  public:
   // Throws std::invalid_argument("key: ...") for what the 3D core cannot run, std::runtime_error
   // ("initial: ...") when the initial state fails.
-  explicit SpatialRun(const Scene& scene);
+  explicit SpatialRun(const Scene& scene, RunInputs3 inputs = {});
 
   // One step of solver.dt; false once diverged (divergenceReason() names the cause and solver.dt).
   bool step();

@@ -136,17 +136,18 @@ std::shared_ptr<SpatialModel> buildSpatialModel(const Scene& scene) {
   return model;
 }
 
-SpatialRun::SpatialRun(const Scene& scene)
+SpatialRun::SpatialRun(const Scene& scene, RunInputs3 inputs)
     : integrator_kind_(scene.solver.integrator), rho_inf_(scene.solver.rho_inf), dt_(scene.solver.dt), max_gap_(scene.solver.max_constraint_error * scene.length / scene.elements) {
   if (scene.space != SpaceKind::kSpatial) throw std::invalid_argument("space: SpatialRun needs space: spatial");
   if (const auto issue = unsupported(scene)) throw std::invalid_argument(issue->key + ": " + issue->message);
   model_ = buildSpatialModel(scene);
-  std::unique_ptr<TopMotion3> motion = buildTopMotion3(scene.top);
+  std::unique_ptr<TopMotion3> motion = inputs.motion ? std::move(inputs.motion) : buildTopMotion3(scene.top);
+  const Vec3 top = inputs.top ? *inputs.top : motion->at(0.0).p;
   // The statics end at the bottom's position at t = 0 (bottom.motion's, which may differ from bottom.position).
   Scene at0 = scene;
   const bool pinned = scene.bottom == BottomBoundary::kPinned;
   if (pinned) at0.bottom_point3 = buildTopMotion3(scene.bottom_motion)->at(0.0).p;
-  initial_ = solveInitialState3(at0, motion->at(0.0).p);
+  initial_ = solveInitialState3(at0, top);
   // A pinned end is held where the statics put it: within initial.tolerance x line.length of
   // bottom.position (their end condition), so the run starts without a Baumgarte kick from that gap. A
   // moving bottom's path is shifted by that gap for the same reason.

@@ -1,0 +1,53 @@
+// The 3D core behind LineRun (scene space: spatial): spatial::SpatialRun with its top driven by an
+// ExternalMotion3 through the full 3D hang-off (vessel position + orientation applied to hangoff_offset;
+// nothing projected). Messages from LineMessages3 and LineMarkers.
+#pragma once
+#include <memory>
+
+#include <Eigen/Geometry>
+
+#include "riser_sim/spatial/external_motion3.h"
+#include "riser_sim/spatial/run_builder.h"
+#include "riser_sim_ros/line_markers.h"
+#include "riser_sim_ros/line_messages3.h"
+#include "riser_sim_ros/line_run.h"
+
+namespace riser_sim_ros {
+
+class SpatialLineRun : public LineRun {
+ public:
+  // Throws as spatial::SpatialRun.
+  SpatialLineRun(const riser_sim::Scene& scene, const VesselSample& s, double t, const NodeParams& params);
+  bool spatial() const override { return true; }
+  void restartMotion(double t, const VesselSample& s) override;
+  bool addSample(double t_sample, const VesselSample& s) override;
+  void shiftSampleTimes(double dt) override { motion_->shiftSampleTimes(dt); }
+  bool step() override { return run_->step(); }
+  const std::string& divergenceReason() const override { return run_->divergenceReason(); }
+  double time() const override { return run_->time(); }
+  double dt() const override { return run_->dt(); }
+  std::string stepAboveLimit() const override { return run_->stepAboveLimit(); }
+  std::string startMessage() override;
+  void shareStatics(ModesServer& modes, const ros::Time& stamp) override;
+  RunHealth health() override;
+
+  bool evaluate() override;
+  const riser_sim::Tension& tension(const ros::Time& stamp) override;
+  const riser_sim::LineState& state(const ros::Time& stamp) override;
+  const geometry_msgs::WrenchStamped& topWrench(const ros::Time& stamp) override;
+  const geometry_msgs::WrenchStamped* bottomWrench(const ros::Time& stamp) override;
+  const std::vector<geometry_msgs::TransformStamped>& transforms(const ros::Time& stamp) override;
+  const visualization_msgs::MarkerArray& markers(const ros::Time& stamp) override;
+
+ private:
+  Eigen::Vector3d top_;  // hang-off at the start [m]
+  riser_sim::spatial::ExternalMotion3* motion_ = nullptr;  // owned by run_'s simulator
+  std::unique_ptr<riser_sim::spatial::SpatialRun> run_;
+  const riser_sim::spatial::LineOutputs3* out_ = nullptr;  // of the last evaluate()
+  Eigen::Quaterniond vessel_ = Eigen::Quaterniond::Identity();  // orientation of the latest sample
+  bool pinned_;
+  LineMessages3 msgs_;
+  LineMarkers markers_;
+};
+
+}  // namespace riser_sim_ros

@@ -1,0 +1,121 @@
+#include "riser_sim_ros/line_messages3.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace riser_sim_ros {
+
+namespace {
+using riser_sim::spatial::LineOutputs3;
+using riser_sim::spatial::Vec3;
+
+bool finite(const std::vector<double>& v) {
+  return std::all_of(v.begin(), v.end(), [](double x) { return std::isfinite(x); });
+}
+void set(geometry_msgs::Vector3& m, const Eigen::Vector3d& v) { m.x = v.x(), m.y = v.y(), m.z = v.z(); }
+
+// The rotation taking unit a onto unit b about a x b (identity for a = b); a and b must not be opposite.
+Eigen::Quaterniond minimalRotation(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  return Eigen::Quaterniond::FromTwoVectors(a, b);
+}
+
+// A frame with x = e and y as close to world y as possible (world x when e is near world y).
+Eigen::Quaterniond startFrame(const Eigen::Vector3d& e) {
+  const Eigen::Vector3d ref = std::abs(e.y()) < 0.9 ? Eigen::Vector3d::UnitY() : Eigen::Vector3d::UnitX();
+  const Eigen::Vector3d y = (ref - ref.dot(e) * e).normalized();
+  Eigen::Matrix3d R;
+  R << e, y, e.cross(y);
+  return Eigen::Quaterniond(R);
+}
+}  // namespace
+
+bool outputsFinite(const LineOutputs3& out) {
+  for (const auto& p : out.points)
+    if (!p.allFinite()) return false;
+  return finite(out.axial_force) && out.top_force.allFinite() && out.bottom_force.allFinite() &&
+         out.top_moment.allFinite() && out.bottom_moment.allFinite() && out.bottom_point.allFinite() &&
+         std::isfinite(out.top_tension) && std::isfinite(out.max_tension);
+}
+
+void LineFrames::update(const riser_sim::AlignedVector<Vec3>& points, int nb, std::vector<Eigen::Quaterniond>& out) {
+  Eigen::Quaterniond q = first_;
+  Eigen::Vector3d prev = q * Eigen::Vector3d::UnitX();
+  for (int i = 0; i < nb; ++i) {
+    const Eigen::Vector3d e = (points[i + 1] - points[i]).normalized();
+    // Not yet started, or a turn of more than 120 deg since the last call (a fold): start afresh.
+    if (i == 0 && (!started_ || prev.dot(e) < -0.5)) q = startFrame(e);
+    else q = (minimalRotation(prev, e) * q).normalized();
+    out[i] = q;
+    prev = e;
+    if (i == 0) first_ = q;
+  }
+  started_ = true;
+}
+
+LineMessages3::LineMessages3(const riser_sim::spatial::SpatialModel& model, const std::string& fixed_frame,
+                             const std::string& tf_prefix, bool body_frame, const std::string& vessel_frame)
+    : body_frame_(body_frame) {
+  const size_t nb = model.bodies();
+  tension.header.frame_id = fixed_frame;
+  tension.axial_force.resize(nb);
+  tension.arc_length.resize(nb);
+  for (size_t i = 0; i < nb; ++i) tension.arc_length[i] = model.rfe(i).s_begin + 0.5 * model.rfe(i).length;
+  state.header.frame_id = fixed_frame;
+  state.points.resize(nb + 1);  // angles, elongations, bending moments: planar only (empty)
+  top_wrench.header.frame_id = body_frame ? vessel_frame : fixed_frame;
+  bottom_wrench.header.frame_id = fixed_frame;
+  transforms.resize(nb + 1);
+  rotations_.resize(nb);
+  const std::string prefix = tf_prefix.empty() ? "" : tf_prefix + "/";
+  for (size_t i = 0; i <= nb; ++i) {
+    transforms[i].header.frame_id = fixed_frame;
+    transforms[i].child_frame_id = i < nb ? prefix + "rfe_" + std::to_string(i) : prefix + "end";
+  }
+}
+
+void LineMessages3::fillTension(const LineOutputs3& out, const ros::Time& stamp) {
+  tension.header.stamp = stamp;
+  std::copy(out.axial_force.begin(), out.axial_force.end(), tension.axial_force.begin());
+  tension.top = out.top_tension;
+  tension.bottom = out.axial_force.back();
+  tension.max = out.max_tension;
+}
+
+void LineMessages3::fillState(const LineOutputs3& out, const ros::Time& stamp) {
+  state.header.stamp = stamp;
+  for (size_t i = 0; i < out.points.size(); ++i) {
+    state.points[i].x = out.points[i].x();
+    state.points[i].y = out.points[i].y();
+    state.points[i].z = out.points[i].z();
+  }
+}
+
+void LineMessages3::fillTopWrench(const LineOutputs3& out, const Eigen::Quaterniond& vessel, const ros::Time& stamp) {
+  top_wrench.header.stamp = stamp;
+  const Eigen::Quaterniond to_frame = body_frame_ ? vessel.conjugate() : Eigen::Quaterniond::Identity();
+  set(top_wrench.wrench.force, to_frame * out.top_force);
+  set(top_wrench.wrench.torque, to_frame * out.top_moment);
+}
+
+void LineMessages3::fillBottomWrench(const LineOutputs3& out, const ros::Time& stamp) {
+  bottom_wrench.header.stamp = stamp;
+  set(bottom_wrench.wrench.force, out.bottom_force);
+  set(bottom_wrench.wrench.torque, out.bottom_moment);
+}
+
+void LineMessages3::fillTransforms(const LineOutputs3& out, const ros::Time& stamp) {
+  const int nb = static_cast<int>(rotations_.size());
+  frames_.update(out.points, nb, rotations_);
+  for (int i = 0; i <= nb; ++i) {
+    geometry_msgs::TransformStamped& t = transforms[i];
+    t.header.stamp = stamp;
+    set(t.transform.translation, out.points[i]);
+    const Eigen::Quaterniond& q = rotations_[std::min(i, nb - 1)];
+    t.transform.rotation.x = q.x();
+    t.transform.rotation.y = q.y();
+    t.transform.rotation.z = q.z();
+    t.transform.rotation.w = q.w();
+  }
+}
+
+}  // namespace riser_sim_ros
