@@ -59,7 +59,7 @@ class WaterKinematics {
   double elevation(double x, double t) const;
   // The wave components: amplitude [m], ω [rad/s], k [1/m], phase [rad] (one for regular waves).
   struct Component {
-    double a, omega, k, phase, decay;  // decay: 1 - e^{-2kh}
+    double a, omega, k, phase, decay, e2kh;  // decay: 1 - e^{-2kh}; e2kh: e^{-2kh}
   };
   const std::vector<Component>& components() const { return comp_; }
   // The JONSWAP spectral density S(ω) [m² s/rad] of a sea with Hs, Tp, γ, before the normalisation to Hs

@@ -40,7 +40,7 @@ WaterKinematics::WaterKinematics(const WaterSpec& spec, double gravity) : spec_(
   const double h = w.depth;
   const auto add = [&](double a, double omega, double phase) {
     const double k = waveNumberOf(omega, h, gravity);
-    comp_.push_back(Component{a, omega, k, phase, -std::expm1(-2.0 * k * h)});
+    comp_.push_back(Component{a, omega, k, phase, -std::expm1(-2.0 * k * h), std::exp(-2.0 * k * h)});
   };
   if (w.type == WaveKind::kRegular) {
     add(0.5 * w.height, 2.0 * M_PI / w.period, w.phase);
@@ -83,7 +83,8 @@ void WaterKinematics::depthRatios(const Component& c, double z, double& ch, doub
   // cosh(k(z + h)) / sinh(k h) and sinh(k(z + h)) / sinh(k h) for -h <= z <= 0, in the form
   // (e^{kz} ± e^{-k(z + 2h)}) / (1 - e^{-2kh}): every exponent <= 0, finite for any depth.
   const double h = spec_.waves.depth, zz = std::min(std::max(z, -h), 0.0);
-  const double a = std::exp(c.k * zz), b = std::exp(-c.k * (zz + 2.0 * h));
+  // b = e^{-2kh} / a: one exp per component (a >= e^{-kh}, so b only needs its own exp when a underflows).
+  const double a = std::exp(c.k * zz), b = a > 1e-300 ? c.e2kh / a : std::exp(-c.k * (zz + 2.0 * h));
   ch = (a + b) / c.decay;
   sh = (a - b) / c.decay;
 }

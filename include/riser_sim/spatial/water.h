@@ -19,7 +19,10 @@ class Water3 {
   // Height of p above the mean free surface [m] (< 0 below it).
   double height(const Vec3& p) const { return up_.dot(p) - spec_.surface; }
   const Vec3& up() const { return up_; }
-  // Water particle velocity [m/s] and acceleration [m/s^2] at p and t (zero above the surface).
+  // Water particle velocity [m/s] and acceleration [m/s^2] at p and t (zero above the surface). With waves, the
+  // last samples are remembered per thread (a direct-mapped table keyed by this water, p and t, compared
+  // exactly): the terms that ask at the same points in one evaluation (drag, Froude-Krylov, their
+  // linearisation) pay for the wave components once.
   void at(const Vec3& p, double t, Vec3& velocity, Vec3& acceleration) const;
   // The steady part at time t: no waves, the current frozen at its velocity at t (what the statics see).
   Water3 steady(double t) const;
@@ -30,6 +33,8 @@ class Water3 {
   Vec3 wave_dir_ = Vec3::UnitX();  // horizontal unit vector of the planar kinematics' +x
   WaterKinematics waves_;          // the waves alone, in the vertical plane along wave_dir_
   bool moving_ = false;
+  unsigned long long id_ = 0;  // this water's identity (copies share it): the samples' key
+  void compute(const Vec3& p, double t, Vec3& v, Vec3& a) const;
 };
 
 // The part of rfe i's part p (0: A_i to the spring, 1: the spring to the end) below the surface: its length [m],

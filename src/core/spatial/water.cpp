@@ -1,6 +1,9 @@
 #include "riser_sim/spatial/water.h"
 
+#include <atomic>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <stdexcept>
 
 namespace riser_sim {
@@ -19,6 +22,29 @@ WaterSpec wavesOnly(const WaterSpec& spec) {
 
 bool vertical(const Vec3& g) { return g.x() == 0.0 && g.y() == 0.0 && g.z() < 0.0; }
 
+std::atomic<unsigned long long> g_next_id{1};
+
+// The per-thread table of the last wave samples (at()). 1024 slots: one evaluation of n <= 500 wet parts fits.
+struct Sample {
+  unsigned long long id = 0;
+  double t = 0.0;
+  Vec3 p, v, a;
+};
+constexpr std::size_t kSlots = 1024;
+thread_local Sample t_samples[kSlots];
+
+std::uint64_t bits(double x) {
+  std::uint64_t u;
+  std::memcpy(&u, &x, sizeof u);
+  return u;
+}
+
+std::size_t slot(unsigned long long id, const Vec3& p, double t) {
+  std::uint64_t h = id * 0x9E3779B97F4A7C15ull;
+  for (double x : {p.x(), p.y(), p.z(), t}) h = (h ^ bits(x)) * 0xBF58476D1CE4E5B9ull, h ^= h >> 31;
+  return static_cast<std::size_t>(h & (kSlots - 1));
+}
+
 }  // namespace
 
 Water3::Water3(const WaterSpec& spec, const Vec3& gravity)
@@ -32,6 +58,7 @@ Water3::Water3(const WaterSpec& spec, const Vec3& gravity)
   if (!c.profile.empty() && gravity.norm() > 0.0 && !vertical(gravity))
     throw std::invalid_argument("environment.current.profile: needs gravity along -z (the profile is horizontal)");
   wave_dir_ = Vec3(std::cos(spec.waves.heading), std::sin(spec.waves.heading), 0.0);
+  id_ = g_next_id.fetch_add(1);
 }
 
 Water3 Water3::steady(double t) const {
@@ -48,6 +75,18 @@ Water3 Water3::steady(double t) const {
 }
 
 void Water3::at(const Vec3& p, double t, Vec3& v, Vec3& a) const {
+  if (!spec_.waves.active()) return compute(p, t, v, a);
+  Sample& s = t_samples[slot(id_, p, t)];
+  if (s.id == id_ && s.t == t && s.p == p) {
+    v = s.v;
+    a = s.a;
+    return;
+  }
+  compute(p, t, v, a);
+  s.id = id_, s.t = t, s.p = p, s.v = v, s.a = a;
+}
+
+void Water3::compute(const Vec3& p, double t, Vec3& v, Vec3& a) const {
   v.setZero();
   a.setZero();
   const double z = height(p);

@@ -22,7 +22,7 @@ class Seabed3 : public SpatialForceTerm {
   double potentialEnergy(const SpatialModel& model, const Kinematics3& kin) const override;
   double power(const SpatialModel& model, const Kinematics3& kin, double t) const override;
   double addForcesAndPower(const SpatialModel& model, const Kinematics3& kin, double t, VecX& Q) const override;
-  // The normal spring and the dampers (the friction's slope F_n μ / sqrt(v² + v_s²) as a damper).
+  // The normal spring and the dampers, and the friction's exact rate dependence (its turning with e left out).
   void addStiffness(const SpatialModel& model, const Kinematics3& kin, double t, SpatialStiffness& S) const override;
   // Contact points below the plane.
   int contacts(const SpatialModel& model, const Kinematics3& kin) const;

@@ -92,18 +92,34 @@ int Seabed3::contacts(const SpatialModel& model, const Kinematics3& kin) const {
   return n;
 }
 
+// The normal spring and damper, the tangential damper and the friction's exact rate dependence: with
+// g = (μ_a v_a a + μ_l v_l l)/s, s = sqrt(v_a² + v_l² + v_s²), F_f = -F_n g gives -∂F_f/∂v_h =
+// F_n (D - D v_p v_pᵀ / s²)/s on the plane (D = μ_a a aᵀ + μ_l l lᵀ, v_p = v_h), and through F_n = C_n p - c_n v_n
+// the terms -c_n g nᵀ (rates) and -C_n g nᵀ (position). The turning of a with e is left out.
 void Seabed3::addStiffness(const SpatialModel& model, const Kinematics3& kin, double, SpatialStiffness& S) const {
   const Mat3 UU = n_ * n_.transpose(), P = Mat3::Identity() - UU;
+  const bool friction = spec_.friction_axial > 0.0 || spec_.friction_lateral > 0.0;
   for (int j = 0; j <= model.bodies(); ++j) {
     const Contact c = contact(model, kin, j);
     const double pen = penetration(c.p);
     if (!(pen > 0.0)) continue;
-    const double fn = std::max(spec_.stiffness_normal * pen - spec_.damping_normal * n_.dot(c.v), 0.0);
-    const double mu = std::max(spec_.friction_axial, spec_.friction_lateral);
-    const Vec3 vh = P * c.v;
-    const double slope = fn * mu / std::sqrt(vh.squaredNorm() + spec_.friction_velocity * spec_.friction_velocity);
-    const Mat3 K = spec_.stiffness_normal * UU;
-    const Mat3 C = spec_.damping_normal * UU + (spec_.damping_tangential + slope) * P;
+    const double vn = n_.dot(c.v);
+    const double fn = std::max(spec_.stiffness_normal * pen - spec_.damping_normal * vn, 0.0);
+    Mat3 K = spec_.stiffness_normal * UU;
+    Mat3 C = spec_.damping_normal * UU + spec_.damping_tangential * P;
+    if (friction && fn > 0.0) {
+      const Vec3& e = kin[c.body].e;
+      Vec3 a = e - n_.dot(e) * n_;
+      const double an = a.norm();
+      a = an > 1e-12 ? Vec3(a / an) : Vec3(n_.unitOrthogonal());
+      const Vec3 l = n_.cross(a), vh = c.v - vn * n_;
+      const double vs = spec_.friction_velocity, s2 = vh.squaredNorm() + vs * vs, s = std::sqrt(s2);
+      const Mat3 D = spec_.friction_axial * a * a.transpose() + spec_.friction_lateral * l * l.transpose();
+      const Vec3 Dv = D * vh, g = Dv / s;
+      C += (fn / s) * (D - Dv * vh.transpose() / s2);
+      C -= spec_.damping_normal * g * n_.transpose();
+      K -= spec_.stiffness_normal * g * n_.transpose();
+    }
     const Eigen::Matrix<double, 3, 7> J = pointJacobian(kin[c.body], c.s0, c.kappa);
     S.K_diag[c.body] += J.transpose() * K * J;
     S.C_diag[c.body] += J.transpose() * C * J;
