@@ -1,5 +1,5 @@
 // The node's data messages for a 3D line (space: spatial), sized once and filled in place from
-// spatial::LineOutputs3. Everything in fixed_frame (world, z up) unless a wrench is asked in the vessel's frame.
+// spatial::LineOutputs3. Everything in fixed_frame (world, z up) unless a wrench is asked in a body's frame.
 #pragma once
 #include <string>
 #include <vector>
@@ -34,17 +34,21 @@ class LineFrames {
 
 class LineMessages3 {
  public:
-  // body_frame: the top wrench goes out in vessel_frame (rotated by the inverse vessel orientation).
+  // body_frame: the top wrench goes out in vessel_frame (rotated by the inverse vessel orientation), and
+  // with bottom_body the bottom wrench in bottom_frame (a driven bottom: the ROV's).
   LineMessages3(const riser_sim::spatial::SpatialModel& model, const std::string& fixed_frame,
-                const std::string& tf_prefix, bool body_frame, const std::string& vessel_frame);
+                const std::string& tf_prefix, bool body_frame, const std::string& vessel_frame,
+                bool bottom_body = false, const std::string& bottom_frame = "");
   void fillTension(const riser_sim::spatial::LineOutputs3& out, const ros::Time& stamp);
   void fillState(const riser_sim::spatial::LineOutputs3& out, const ros::Time& stamp);
   // Force and moment the line exerts on the hang-off, the moment about the hang-off point; `vessel`
   // rotates vessel-frame vectors into fixed_frame.
   void fillTopWrench(const riser_sim::spatial::LineOutputs3& out, const Eigen::Quaterniond& vessel,
                      const ros::Time& stamp);
-  // Force and moment the line exerts on the pinned bottom's anchor, about the anchor, fixed_frame.
-  void fillBottomWrench(const riser_sim::spatial::LineOutputs3& out, const ros::Time& stamp);
+  // Force and moment the line exerts on the pinned bottom's anchor, about the anchor; `body` (the ROV's
+  // orientation) is used with bottom_body.
+  void fillBottomWrench(const riser_sim::spatial::LineOutputs3& out, const Eigen::Quaterniond& body,
+                        const ros::Time& stamp);
   // <prefix>/rfe_<i> (origin A_i, x along rfe i) and <prefix>/end (end of rfe n, rfe n's orientation).
   void fillTransforms(const riser_sim::spatial::LineOutputs3& out, const ros::Time& stamp);
 
@@ -55,7 +59,7 @@ class LineMessages3 {
 
  private:
   std::vector<double> arc_length_;
-  bool body_frame_;
+  bool body_frame_, bottom_body_;
   LineFrames frames_;
   std::vector<Eigen::Quaterniond> rotations_;
 };

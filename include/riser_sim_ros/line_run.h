@@ -42,6 +42,10 @@ class LineRun {
   // A vessel sample stamped t_sample [s of sim time], applied now. False when the motion refused it.
   virtual bool addSample(double t_sample, const VesselSample& s) = 0;
   virtual void shiftSampleTimes(double dt) = 0;
+  // A driven bottom (3D, bottom.motion.type external): the second end's samples, as the vessel's.
+  virtual bool drivenBottom() const { return false; }
+  virtual void restartBottom(double, const VesselSample&) {}
+  virtual bool addBottomSample(double, const VesselSample&) { return false; }
   virtual bool step() = 0;  // false once diverged
   virtual const std::string& divergenceReason() const = 0;
   virtual double time() const = 0;
@@ -63,10 +67,12 @@ class LineRun {
   virtual const visualization_msgs::MarkerArray& markers(const ros::Time& stamp) = 0;
 };
 
-// The run of `scene` hanging from s's hang-off, its top an external motion from sim time t. Throws as
-// riser_sim::buildRun / spatial::SpatialRun do (std::invalid_argument, std::runtime_error: statics).
+// The run of `scene` hanging from s's hang-off, its top an external motion from sim time t; with `bottom`
+// (3D, pinned) the bottom too, from its attachment point at sim time t_bottom. Throws as riser_sim::buildRun
+// / spatial::SpatialRun do (std::invalid_argument, std::runtime_error: statics).
 std::unique_ptr<LineRun> makeLineRun(const riser_sim::Scene& scene, const VesselSample& s, double t,
-                                     const NodeParams& params);
+                                     const NodeParams& params, const VesselSample* bottom = nullptr,
+                                     double t_bottom = 0.0);
 
 // The hang-off as the scene's coordinates: "(x 1.000, z -2.000)" planar, "(x, y, z)" in 3D.
 std::string describeHangoff(const riser_sim::Scene& scene, const Eigen::Vector3d& p);

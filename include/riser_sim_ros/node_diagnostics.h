@@ -31,7 +31,8 @@ struct RunView {
 class NodeDiagnostics {
  public:
   NodeDiagnostics(ros::NodeHandle& nh, const std::string& name, const std::string& hardware_id, double rate,
-                  double pose_timeout, const VesselInput& input, const RosClockWatch& clock);
+                  double pose_timeout, const VesselInput& input, const RosClockWatch& clock,
+                  const VesselInput* bottom = nullptr);  // bottom: a driven bottom's feed
   // Due at the rate in ROS time; restart(now): due at now.
   bool due(const ros::Time& now) { return schedule_.due(now); }
   void restart(const ros::Time& now) { schedule_.restart(now); }
@@ -58,6 +59,7 @@ class NodeDiagnostics {
   std::string name_;
   double pose_timeout_;
   const VesselInput& input_;
+  const VesselInput* bottom_;
   const RosClockWatch& clock_;
   Schedule schedule_;
   WallClock::time_point next_stalled_;

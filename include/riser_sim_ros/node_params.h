@@ -30,7 +30,11 @@ struct NodeParams {
   std::string expected_frame;           // header.frame_id of pose/odom input; default fixed_frame
   std::string tf_prefix;                // default: node name without the leading slash
   Eigen::Vector3d hangoff_offset = Eigen::Vector3d::Zero();  // hang-off point in the vessel frame [m]
-  std::string wrench_frame = "fixed";  // 3D top wrench: fixed (fixed_frame) | body (vessel_frame)
+  std::string wrench_frame = "fixed";  // 3D wrenches: fixed (fixed_frame) | body (vessel_frame, bottom_frame)
+  // A driven bottom (3D, bottom.motion.type external): ~bottom_pose's attachment point in the ROV frame [m]
+  // and the frame_id of a body-frame ~bottom_wrench.
+  Eigen::Vector3d bottom_offset = Eigen::Vector3d::Zero();
+  std::string bottom_frame = "rov";
   double pose_timeout = 1.0;       // no valid pose for this long: warn and hold [s]
   double max_out_of_plane = 1.0;   // warn when the hang-off's world y exceeds this [m]
   double max_position = 1e7;       // poses with a coordinate beyond this are ignored [m]

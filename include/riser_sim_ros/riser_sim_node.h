@@ -53,7 +53,8 @@ class RiserSimNode {
  private:
   void cycle();
   void onClockJump(const ros::Time& now);
-  bool start(const VesselSample& s, const ros::Time& now, std::string& message);
+  bool start(const VesselSample& s, const VesselSample* bottom, const ros::Time& now, std::string& message);
+  void tryStart(int n, int nb, const ros::Time& now);
   void integrate(const ros::Time& now);
   void publish();
   void serveReset(const ros::Time& now);
@@ -61,6 +62,11 @@ class RiserSimNode {
   bool onReset(std_srvs::Trigger::Request& req, std_srvs::Trigger::Response& res);
   double simTime(const ros::Time& t) const { return (t - origin_).toSec() - dropped_; }
   bool spatial() const { return scene_.space == riser_sim::SpaceKind::kSpatial; }
+  // A 3D pinned bottom with bottom.motion.type external: driven from ~bottom_pose.
+  bool drivenBottom() const {
+    return spatial() && scene_.bottom == riser_sim::BottomBoundary::kPinned &&
+           scene_.bottom_motion.type == riser_sim::MotionKind::kExternal;
+  }
 
   ros::NodeHandle nh_, pnh_;
   NodeParams params_;
@@ -69,8 +75,10 @@ class RiserSimNode {
   tf2_ros::Buffer tf_buffer_;
   SampleBuffer samples_;
   std::unique_ptr<VesselInput> input_;
+  SampleBuffer bottom_samples_;
+  std::unique_ptr<VesselInput> bottom_input_;  // a driven bottom only
   std::unique_ptr<CheckedTfListener> tf_listener_;  // after input_: its callbacks use it
-  std::array<VesselSample, SampleBuffer::kCapacity> drained_;
+  std::array<VesselSample, SampleBuffer::kCapacity> drained_, bottom_drained_;
   RosClockWatch clock_;
   LineTopics topics_;
   std::unique_ptr<NodeDiagnostics> diag_;
@@ -82,10 +90,10 @@ class RiserSimNode {
   std::atomic<bool> stop_{false};
   ros::Time origin_;               // sim time t = (ROS time - origin_) - dropped_
   double dropped_ = 0.0;           // backlog dropped when the integration fell behind [s]
-  ros::Time last_start_attempt_;
+  ros::Time last_start_attempt_, last_bottom_pose_;
   // Rate limits of repeated warnings, per riser (ROS_WARN_THROTTLE's limit is shared by every riser of
   // a nodelet manager) and on wall time.
-  WarnThrottle waiting_warn_{5.0}, no_pose_warn_{5.0}, behind_warn_{5.0};
+  WarnThrottle waiting_warn_{5.0}, no_pose_warn_{5.0}, no_bottom_warn_{5.0}, behind_warn_{5.0};
   std::unique_ptr<ModesServer> modes_;  // last: stopped first on destruction
 };
 

@@ -1,7 +1,8 @@
 // Vessel poses in: geometry_msgs/PoseStamped (vessel/pose), nav_msgs/Odometry (vessel/odom), or a tf
 // lookup of vessel_frame in fixed_frame. Each pose is checked, turned into the world position of the
 // hang-off point (vessel pose * hangoff_offset) and copied into a small mutex-protected buffer that the
-// integration thread drains; callbacks never wait for the integration.
+// integration thread drains; callbacks never wait for the integration. The same class reads the second
+// end's feed of a driven bottom (~bottom_pose, PoseStamped only, offset bottom_offset).
 #pragma once
 #include <array>
 #include <atomic>
@@ -24,8 +25,8 @@ namespace riser_sim_ros {
 struct VesselSample {
   ros::Time stamp;               // header stamp of the pose
   ros::Time received;            // ROS time when it arrived
-  Eigen::Vector3d hangoff = Eigen::Vector3d::Zero();  // hang-off point in fixed_frame [m]
-  Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();  // vessel frame -> fixed_frame
+  Eigen::Vector3d hangoff = Eigen::Vector3d::Zero();  // hang-off (or bottom attachment) point in fixed_frame [m]
+  Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();  // vessel (or ROV) frame -> fixed_frame
 };
 
 class SampleBuffer {
@@ -83,10 +84,13 @@ inline Eigen::Vector2d toPaper(const Eigen::Vector3d& w) { return Eigen::Vector2
 
 class VesselInput {
  public:
+  // kVessel: the top's feed (vessel_input, hangoff_offset). kBottom: a driven bottom's, bottom_pose on nh
+  // (pass the private handle), bottom_offset; PoseStamped only.
+  enum class Feed { kVessel, kBottom };
   // `name` (the riser's) starts each log line.
   // planar: the riser lives in the x-z plane (warn when the hang-off leaves it); false for a 3D scene.
   VesselInput(ros::NodeHandle& nh, const NodeParams& params, tf2_ros::Buffer& tf, SampleBuffer& out,
-              const std::string& name, bool planar = true);
+              const std::string& name, bool planar = true, Feed feed = Feed::kVessel);
   // Topic (pose/odom) or "tf <fixed> <- <vessel>" the input listens to, for messages.
   const std::string& source() const { return source_; }
   long accepted() const { return accepted_; }
@@ -106,6 +110,9 @@ class VesselInput {
 
   const NodeParams& params_;
   std::string name_;
+  std::string kind_;              // pose | odom | tf
+  std::string what_;              // "vessel" | "bottom", in log lines
+  Eigen::Vector3d offset_;        // hangoff_offset | bottom_offset
   tf2_ros::Buffer& tf_;
   SampleBuffer& out_;
   ros::Subscriber sub_;

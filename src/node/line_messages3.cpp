@@ -53,8 +53,9 @@ void LineFrames::update(const riser_sim::AlignedVector<Vec3>& points, int nb, st
 }
 
 LineMessages3::LineMessages3(const riser_sim::spatial::SpatialModel& model, const std::string& fixed_frame,
-                             const std::string& tf_prefix, bool body_frame, const std::string& vessel_frame)
-    : body_frame_(body_frame) {
+                             const std::string& tf_prefix, bool body_frame, const std::string& vessel_frame,
+                             bool bottom_body, const std::string& bottom_frame)
+    : body_frame_(body_frame), bottom_body_(bottom_body) {
   const size_t nb = model.bodies();
   tension.header.frame_id = fixed_frame;
   tension.axial_force.resize(nb);
@@ -63,7 +64,7 @@ LineMessages3::LineMessages3(const riser_sim::spatial::SpatialModel& model, cons
   state.header.frame_id = fixed_frame;
   state.points.resize(nb + 1);  // angles, elongations, bending moments: planar only (empty)
   top_wrench.header.frame_id = body_frame ? vessel_frame : fixed_frame;
-  bottom_wrench.header.frame_id = fixed_frame;
+  bottom_wrench.header.frame_id = bottom_body ? bottom_frame : fixed_frame;
   transforms.resize(nb + 1);
   rotations_.resize(nb);
   const std::string prefix = tf_prefix.empty() ? "" : tf_prefix + "/";
@@ -97,10 +98,11 @@ void LineMessages3::fillTopWrench(const LineOutputs3& out, const Eigen::Quaterni
   set(top_wrench.wrench.torque, to_frame * out.top_moment);
 }
 
-void LineMessages3::fillBottomWrench(const LineOutputs3& out, const ros::Time& stamp) {
+void LineMessages3::fillBottomWrench(const LineOutputs3& out, const Eigen::Quaterniond& body, const ros::Time& stamp) {
   bottom_wrench.header.stamp = stamp;
-  set(bottom_wrench.wrench.force, out.bottom_force);
-  set(bottom_wrench.wrench.torque, out.bottom_moment);
+  const Eigen::Quaterniond to_frame = bottom_body_ ? body.conjugate() : Eigen::Quaterniond::Identity();
+  set(bottom_wrench.wrench.force, to_frame * out.bottom_force);
+  set(bottom_wrench.wrench.torque, to_frame * out.bottom_moment);
 }
 
 void LineMessages3::fillTransforms(const LineOutputs3& out, const ros::Time& stamp) {

@@ -7,8 +7,9 @@
 namespace riser_sim_ros {
 
 std::unique_ptr<LineRun> makeLineRun(const riser_sim::Scene& scene, const VesselSample& s, double t,
-                                     const NodeParams& params) {
-  if (scene.space == riser_sim::SpaceKind::kSpatial) return std::make_unique<SpatialLineRun>(scene, s, t, params);
+                                     const NodeParams& params, const VesselSample* bottom, double t_bottom) {
+  if (scene.space == riser_sim::SpaceKind::kSpatial)
+    return std::make_unique<SpatialLineRun>(scene, s, t, params, bottom, t_bottom);
   return std::make_unique<PlanarLineRun>(scene, s, t, params);
 }
 

@@ -23,9 +23,9 @@ const char* modeName(RunMode m) {
 
 NodeDiagnostics::NodeDiagnostics(ros::NodeHandle& nh, const std::string& name, const std::string& hardware_id,
                                  double rate, double pose_timeout, const VesselInput& input,
-                                 const RosClockWatch& clock)
+                                 const RosClockWatch& clock, const VesselInput* bottom)
     : pub_(nh.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 5)), name_(name),
-      pose_timeout_(pose_timeout), input_(input), clock_(clock) {
+      pose_timeout_(pose_timeout), input_(input), bottom_(bottom), clock_(clock) {
   schedule_.period = periodOf(rate);
   msg_.status.resize(1);
   msg_.status[0].name = name.substr(name.find_first_not_of('/')) + ": riser simulation";
@@ -148,6 +148,13 @@ void NodeDiagnostics::publish(const ros::Time& now, const RunView& run) {
   if (!last_rejection.empty()) addValue("last rejection", last_rejection);
   const double pose_age = run.last_pose.isZero() ? NAN : (now - run.last_pose).toSec();
   addValue("last pose age [s]", num(pose_age, "%.3f"));
+  if (bottom_) {
+    addValue("bottom input", bottom_->source());
+    addValue("bottom poses accepted", std::to_string(bottom_->accepted()));
+    addValue("bottom poses rejected", std::to_string(bottom_->rejected()));
+    const std::string why = bottom_->lastRejection();
+    if (!why.empty()) addValue("last bottom rejection", why);
+  }
 
   st.level = DiagnosticStatus::OK;
   std::string message;
@@ -157,7 +164,9 @@ void NodeDiagnostics::publish(const ros::Time& now, const RunView& run) {
     if (stalled) message = "simulation held at t = " + num(run.line->time(), "%.3f") + " s";
   } else if (run.mode == RunMode::kWaiting) {
     st.level = DiagnosticStatus::WARN;
-    message = "waiting for the first valid vessel pose (" + input_.source() + ")";
+    message = bottom_ && input_.accepted() > 0 && bottom_->accepted() == 0
+                  ? "waiting for the first valid bottom pose (" + bottom_->source() + ")"
+                  : "waiting for the first valid vessel pose (" + input_.source() + ")";
     if (!clock_.lastJump().empty()) message = clock_.lastJump() + ": simulation reset; " + message;
   } else {
     st.level = DiagnosticStatus::ERROR;

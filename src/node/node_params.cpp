@@ -186,6 +186,9 @@ NodeParams loadNodeParams(const ros::NodeHandle& pnh, const std::string& node_na
   p.wrench_frame = r.text("wrench_frame", p.wrench_frame);
   if (p.wrench_frame != "fixed" && p.wrench_frame != "body")
     throw ParamError("wrench_frame", "unknown value '" + p.wrench_frame + "' (accepted: fixed, body)");
+  p.bottom_offset = r.vec3("bottom_offset", p.bottom_offset);
+  p.bottom_frame = stripSlash(r.text("bottom_frame", p.bottom_frame));
+  if (p.bottom_frame.empty()) throw ParamError("bottom_frame", "must not be empty");
   p.pose_timeout = r.number("pose_timeout", p.pose_timeout);
   positive("pose_timeout", p.pose_timeout);
   p.max_out_of_plane = r.number("max_out_of_plane", p.max_out_of_plane);

@@ -29,12 +29,19 @@ RiserSimNode::RiserSimNode(ros::NodeHandle nh, ros::NodeHandle pnh)
   // tf is only read for tf input or poses in another frame: k risers that each listened to /tf would
   // each deserialise every riser's transforms (k^2 work).
   input_ = std::make_unique<VesselInput>(nh_, params_, tf_buffer_, samples_, name_, !spatial());
+  if (drivenBottom())
+    bottom_input_ = std::make_unique<VesselInput>(pnh_, params_, tf_buffer_, bottom_samples_, name_, false,
+                                                  VesselInput::Feed::kBottom);
+  else if (pnh_.hasParam("bottom_offset"))
+    ROS_WARN("%s: ~bottom_offset ignored: only a 3D scene with a pinned bottom and bottom.motion.type external "
+             "has a driven bottom", name_.c_str());
   if (params_.vessel_input == "tf" || params_.expected_frame != params_.fixed_frame)
     tf_listener_ = std::make_unique<CheckedTfListener>(
         nh_, tf_buffer_, params_.vessel_input == "tf" ? params_.vessel_frame : "",
         [this](const std::string& why) { input_->reject(why); }, name_);
   diag_ = std::make_unique<NodeDiagnostics>(nh_, name_, scene_.name.empty() ? "riser_sim" : scene_.name,
-                                            params_.rates.at("diagnostics"), params_.pose_timeout, *input_, clock_);
+                                            params_.rates.at("diagnostics"), params_.pose_timeout, *input_, clock_,
+                                            bottom_input_.get());
   diag_->setPublishPeriod(topics_.referencePeriod());
   reset_srv_ = pnh_.advertiseService("reset", &RiserSimNode::onReset, this);
   modes_ = std::make_unique<ModesServer>(pnh_, name_, params_.fixed_frame, input_->source());
@@ -44,6 +51,10 @@ RiserSimNode::RiserSimNode(ros::NodeHandle nh, ros::NodeHandle pnh)
            name_.c_str(), scene_.name.c_str(), spatial() ? "3D" : "planar", scene_.length, scene_.elements, scene_.solver.dt, input_->source().c_str(),
            params_.hangoff_offset.x(), params_.hangoff_offset.y(), params_.hangoff_offset.z(),
            params_.tf_prefix.c_str(), params_.fixed_frame.c_str());
+  if (bottom_input_)
+    ROS_INFO("%s: bottom driven from %s, bottom offset [%g, %g, %g] m; the start waits for its first valid pose",
+             name_.c_str(), bottom_input_->source().c_str(), params_.bottom_offset.x(), params_.bottom_offset.y(),
+             params_.bottom_offset.z());
 }
 
 void RiserSimNode::spin() {
@@ -67,11 +78,16 @@ void RiserSimNode::onClockJump(const ros::Time& now) {
   ROS_WARN("%s: %s: simulation reset, restarting from the statics at the next vessel pose", name_.c_str(),
            clock_.lastJump().c_str());
   // Keep the poses already stamped on the new timeline; drop the rest.
-  const int n = samples_.drain(drained_);
-  samples_.clear();
-  input_->restart();
-  for (int i = 0; i < n; ++i)
-    if (drained_[i].stamp <= now + ros::Duration(params_.max_pose_lead)) samples_.push(drained_[i]);
+  const auto keep = [&](SampleBuffer& buffer, VesselInput& input) {
+    const int n = buffer.drain(drained_);
+    buffer.clear();
+    input.restart();
+    for (int i = 0; i < n; ++i)
+      if (drained_[i].stamp <= now + ros::Duration(params_.max_pose_lead)) buffer.push(drained_[i]);
+  };
+  keep(samples_, *input_);
+  if (bottom_input_) keep(bottom_samples_, *bottom_input_);
+  last_bottom_pose_ = ros::Time();
   run_.mode = RunMode::kWaiting;
   run_.last_pose = last_start_attempt_ = ros::Time();
   diag_->restart(now);
@@ -98,22 +114,23 @@ void RiserSimNode::cycle() {
                (now - run_.last_pose).toSec());
     run_.last_pose = drained_[n - 1].received;
   }
+  const int nb = bottom_input_ ? bottom_samples_.drain(bottom_drained_) : 0;
+  if (nb > 0) last_bottom_pose_ = bottom_drained_[nb - 1].received;
   bool period_end = false;
   switch (run_.mode) {
     case RunMode::kWaiting:
     case RunMode::kStartFailed:
-      if (n > 0 && (run_.mode == RunMode::kWaiting || (now - last_start_attempt_).toSec() >= 1.0)) {
-        std::string message;
-        if (start(drained_[n - 1], now, message)) ROS_INFO("%s: %s", name_.c_str(), message.c_str());
-        else ROS_ERROR("%s: %s (retrying at the next pose, at most once a second)", name_.c_str(), message.c_str());
-      } else if (run_.mode == RunMode::kWaiting) {
-        long held = 0;
-        if (waiting_warn_.allow(held))
-          ROS_WARN("%s: waiting for the first valid vessel pose (%s)", name_.c_str(), input_->source().c_str());
-      }
+      tryStart(n, nb, now);
       break;
     case RunMode::kRunning:
       for (int i = 0; i < n; ++i) line_->addSample(simTime(drained_[i].stamp), drained_[i]);
+      for (int i = 0; i < nb; ++i) line_->addBottomSample(simTime(bottom_drained_[i].stamp), bottom_drained_[i]);
+      if (bottom_input_ && (now - last_bottom_pose_).toSec() > params_.pose_timeout) {
+        long held = 0;
+        if (no_bottom_warn_.allow(held))
+          ROS_WARN("%s: no valid bottom pose for %.1f s (~pose_timeout %.1f s): holding the last one", name_.c_str(),
+                   (now - last_bottom_pose_).toSec(), params_.pose_timeout);
+      }
       if ((now - run_.last_pose).toSec() > params_.pose_timeout) {
         long held = 0;
         if (no_pose_warn_.allow(held))
@@ -138,11 +155,31 @@ void RiserSimNode::cycle() {
   diag_->addCycleWork(seconds(WallClock::now() - w0), period_end);
 }
 
-bool RiserSimNode::start(const VesselSample& s, const ros::Time& now, std::string& message) {
+// Starts at the latest vessel pose (and, for a driven bottom, the latest bottom pose) once both exist.
+void RiserSimNode::tryStart(int n, int nb, const ros::Time& now) {
+  VesselSample s, b;
+  const bool vessel = n > 0 ? (s = drained_[n - 1], true) : samples_.latest(s);
+  const bool bottom = !bottom_input_ || (nb > 0 ? (b = bottom_drained_[nb - 1], true) : bottom_samples_.latest(b));
+  if ((n > 0 || nb > 0) && vessel && bottom &&
+      (run_.mode == RunMode::kWaiting || (now - last_start_attempt_).toSec() >= 1.0)) {
+    std::string message;
+    if (start(s, bottom_input_ ? &b : nullptr, now, message)) ROS_INFO("%s: %s", name_.c_str(), message.c_str());
+    else ROS_ERROR("%s: %s (retrying at the next pose, at most once a second)", name_.c_str(), message.c_str());
+  } else if (run_.mode == RunMode::kWaiting) {
+    const bool for_bottom = vessel && !bottom;
+    long held = 0;
+    if (waiting_warn_.allow(held))
+      ROS_WARN("%s: waiting for the first valid %s pose (%s)", name_.c_str(), for_bottom ? "bottom" : "vessel",
+               (for_bottom ? bottom_input_ : input_)->source().c_str());
+  }
+}
+
+bool RiserSimNode::start(const VesselSample& s, const VesselSample* bottom, const ros::Time& now,
+                         std::string& message) {
   last_start_attempt_ = now;
   std::unique_ptr<LineRun> line;
   try {
-    line = makeLineRun(scene_, s, simTime(s.stamp), params_);
+    line = makeLineRun(scene_, s, simTime(s.stamp), params_, bottom, bottom ? simTime(bottom->stamp) : 0.0);
     const std::string above = line->stepAboveLimit();
     if (!above.empty()) {
       line.reset();
@@ -151,7 +188,9 @@ bool RiserSimNode::start(const VesselSample& s, const ros::Time& now, std::strin
   } catch (const std::invalid_argument& e) {  // a setup the loader let through
     run_.reason = std::string("could not start: ") + e.what();
   } catch (const std::runtime_error& e) {  // the statics failed, or the start is not finite
-    run_.reason = "initial statics at hang-off " + describeHangoff(scene_, s.hangoff) + " failed: " + e.what();
+    run_.reason = "initial statics at hang-off " + describeHangoff(scene_, s.hangoff) +
+                  (bottom ? " and bottom " + describeHangoff(scene_, bottom->hangoff) : std::string()) +
+                  " failed: " + e.what();
     modes_->setFailure(run_.reason);
   } catch (const std::exception& e) {
     run_.reason = std::string("could not start: ") + e.what();
@@ -168,6 +207,8 @@ bool RiserSimNode::start(const VesselSample& s, const ros::Time& now, std::strin
   // The first sample's time on the new origin (the motion was made before the origin was known: with
   // the old origin the later samples looked older than it and were all refused, the top never moved).
   line->restartMotion(simTime(s.stamp), s);
+  if (bottom) line->restartBottom(simTime(bottom->stamp), *bottom);
+  last_bottom_pose_ = bottom ? bottom->received : ros::Time();
   run_.line = nullptr;  // the old run goes now
   line_ = std::move(line);
   run_.line = line_.get();
@@ -221,16 +262,19 @@ bool RiserSimNode::onReset(std_srvs::Trigger::Request&, std_srvs::Trigger::Respo
 
 void RiserSimNode::serveReset(const ros::Time& now) {
   if (!reset_.take()) return;
-  VesselSample s;
+  VesselSample s, b;
   bool ok = false;
   std::string message;
   if (now.isZero()) {
     message = "no ROS time yet (/use_sim_time is set and nothing publishes /clock)";
   } else if (!samples_.latest(s)) {
     message = "no valid vessel pose received yet (" + input_->source() + ")";
+  } else if (bottom_input_ && !bottom_samples_.latest(b)) {
+    message = "no valid bottom pose received yet (" + bottom_input_->source() + ")";
   } else {
     samples_.drain(drained_);  // older than s: the new start supersedes them
-    ok = start(s, now, message);
+    if (bottom_input_) bottom_samples_.drain(bottom_drained_);
+    ok = start(s, bottom_input_ ? &b : nullptr, now, message);
     ROS_INFO("%s: ~reset: %s", name_.c_str(), message.c_str());
   }
   reset_.answer(ok, message);

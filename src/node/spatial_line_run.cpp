@@ -10,7 +10,9 @@ using riser_sim::spatial::ExternalMotion3;
 using riser_sim::spatial::SpatialRun;
 
 std::unique_ptr<SpatialRun> build(riser_sim::Scene scene, const Eigen::Vector3d& top, double t,
-                                  const NodeParams& params, ExternalMotion3*& motion) {
+                                  const NodeParams& params, ExternalMotion3*& motion,
+                                  std::shared_ptr<ExternalMotion3>& bottom_motion, const VesselSample* bottom,
+                                  double t_bottom) {
   scene.top.type = riser_sim::MotionKind::kFixed;
   scene.top.position3 = top;
   riser_sim::spatial::RunInputs3 in;
@@ -18,15 +20,21 @@ std::unique_ptr<SpatialRun> build(riser_sim::Scene scene, const Eigen::Vector3d&
   auto m = std::make_unique<ExternalMotion3>(top, t, params.motion);
   motion = m.get();
   in.motion = std::move(m);
+  if (bottom) {
+    bottom_motion = std::make_shared<ExternalMotion3>(bottom->hangoff, t_bottom, params.motion);
+    in.bottom_motion = bottom_motion;
+  }
   return std::make_unique<SpatialRun>(scene, std::move(in));
 }
 }  // namespace
 
 SpatialLineRun::SpatialLineRun(const riser_sim::Scene& scene, const VesselSample& s, double t,
-                               const NodeParams& params)
-    : top_(s.hangoff), run_(build(scene, s.hangoff, t, params, motion_)), vessel_(s.orientation),
+                               const NodeParams& params, const VesselSample* bottom, double t_bottom)
+    : top_(s.hangoff), run_(build(scene, s.hangoff, t, params, motion_, bottom_motion_, bottom, t_bottom)),
+      vessel_(s.orientation), rov_(bottom ? bottom->orientation : Eigen::Quaterniond::Identity()),
       pinned_(scene.bottom == riser_sim::BottomBoundary::kPinned),
-      msgs_(run_->model(), params.fixed_frame, params.tf_prefix, params.wrench_frame == "body", params.vessel_frame),
+      msgs_(run_->model(), params.fixed_frame, params.tf_prefix, params.wrench_frame == "body", params.vessel_frame,
+            bottom && params.wrench_frame == "body", params.bottom_frame),
       markers_(run_->model().line(), params.fixed_frame, params.markers, surfacesOf(scene)) {}
 
 void SpatialLineRun::restartMotion(double t, const VesselSample& s) {
@@ -40,11 +48,33 @@ bool SpatialLineRun::addSample(double t_sample, const VesselSample& s) {
   return true;
 }
 
+void SpatialLineRun::shiftSampleTimes(double dt) {
+  motion_->shiftSampleTimes(dt);
+  if (bottom_motion_) bottom_motion_->shiftSampleTimes(dt);
+}
+
+void SpatialLineRun::restartBottom(double t, const VesselSample& s) {
+  if (!bottom_motion_) return;
+  bottom_motion_->reset(t, s.hangoff);
+  rov_ = s.orientation;
+}
+
+bool SpatialLineRun::addBottomSample(double t_sample, const VesselSample& s) {
+  if (!bottom_motion_ || !bottom_motion_->addSample(t_sample, s.hangoff, run_->time())) return false;
+  rov_ = s.orientation;
+  return true;
+}
+
 std::string SpatialLineRun::startMessage() {
   const riser_sim::spatial::InitialState3& init = run_->initial();
+  const riser_sim::spatial::LineOutputs3& o = run_->outputs();
+  const std::string bottom = bottom_motion_ ? ", bottom driven from (" + num(o.bottom_point.x(), "%.3f") + ", " +
+                                                  num(o.bottom_point.y(), "%.3f") + ", " +
+                                                  num(o.bottom_point.z(), "%.3f") + ") m"
+                                            : std::string();
   return (init.equilibrium ? "static equilibrium" : init.about) + " at hang-off (x " + num(top_.x(), "%.3f") +
-         ", y " + num(top_.y(), "%.3f") + ", z " + num(top_.z(), "%.3f") + ") m (3D): top tension " +
-         num(run_->outputs().top_tension, "%.1f") + " N; running";
+         ", y " + num(top_.y(), "%.3f") + ", z " + num(top_.z(), "%.3f") + ") m" + bottom + " (3D): top tension " +
+         num(o.top_tension, "%.1f") + " N; running";
 }
 
 void SpatialLineRun::shareStatics(ModesServer& modes, const ros::Time&) {
@@ -86,7 +116,7 @@ const geometry_msgs::WrenchStamped& SpatialLineRun::topWrench(const ros::Time& s
 
 const geometry_msgs::WrenchStamped* SpatialLineRun::bottomWrench(const ros::Time& stamp) {
   if (!pinned_) return nullptr;
-  msgs_.fillBottomWrench(*out_, stamp);
+  msgs_.fillBottomWrench(*out_, rov_, stamp);
   return &msgs_.bottom_wrench;
 }
 

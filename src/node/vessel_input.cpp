@@ -102,12 +102,18 @@ bool WarnThrottle::allow(std::chrono::steady_clock::time_point now, long& suppre
 }
 
 VesselInput::VesselInput(ros::NodeHandle& nh, const NodeParams& params, tf2_ros::Buffer& tf, SampleBuffer& out,
-                         const std::string& name, bool planar)
-    : params_(params), name_(name), tf_(tf), out_(out), planar_(planar) {
-  if (params.vessel_input == "pose") {
+                         const std::string& name, bool planar, Feed feed)
+    : params_(params), name_(name), kind_(feed == Feed::kBottom ? "pose" : params.vessel_input),
+      what_(feed == Feed::kBottom ? "bottom" : "vessel"),
+      offset_(feed == Feed::kBottom ? params.bottom_offset : params.hangoff_offset), tf_(tf), out_(out),
+      planar_(planar && feed == Feed::kVessel) {
+  if (feed == Feed::kBottom) {
+    sub_ = nh.subscribe("bottom_pose", 20, &VesselInput::onPose, this, ros::TransportHints().tcpNoDelay());
+    source_ = sub_.getTopic();
+  } else if (kind_ == "pose") {
     sub_ = nh.subscribe("vessel/pose", 20, &VesselInput::onPose, this, ros::TransportHints().tcpNoDelay());
     source_ = sub_.getTopic();
-  } else if (params.vessel_input == "odom") {
+  } else if (kind_ == "odom") {
     sub_ = nh.subscribe("vessel/odom", 20, &VesselInput::onOdom, this, ros::TransportHints().tcpNoDelay());
     source_ = sub_.getTopic();
   } else {
@@ -152,19 +158,20 @@ void VesselInput::reject(const std::string& why) {
   long suppressed = 0;
   if (reject_warn_.allow(suppressed)) {
     if (suppressed > 0)
-      ROS_WARN("%s: vessel pose from %s ignored: %s (and %ld more ignored since the last warning; count "
-               "and last reason on /diagnostics)", name_.c_str(), source_.c_str(), why.c_str(), suppressed);
+      ROS_WARN("%s: %s pose from %s ignored: %s (and %ld more ignored since the last warning; count "
+               "and last reason on /diagnostics)", name_.c_str(), what_.c_str(), source_.c_str(), why.c_str(),
+               suppressed);
     else
-      ROS_WARN("%s: vessel pose from %s ignored: %s", name_.c_str(), source_.c_str(), why.c_str());
+      ROS_WARN("%s: %s pose from %s ignored: %s", name_.c_str(), what_.c_str(), source_.c_str(), why.c_str());
   }
 }
 
 void VesselInput::handle(const std_msgs::Header& header, const geometry_msgs::Pose& msg) {
   Eigen::Isometry3d pose;
-  std::string why = checkPose(header, msg, params_.vessel_input == "tf" ? params_.fixed_frame : params_.expected_frame,
-                              pose, params_.max_position);
+  std::string why = checkPose(header, msg, kind_ == "tf" ? params_.fixed_frame : params_.expected_frame, pose,
+                              params_.max_position);
   if (!why.empty()) return reject(why);
-  if (params_.vessel_input != "tf" && params_.expected_frame != params_.fixed_frame) {
+  if (kind_ != "tf" && params_.expected_frame != params_.fixed_frame) {
     // Poses given in another frame: bring them into fixed_frame with the latest transform.
     try {
       const auto t = tf_.lookupTransform(params_.fixed_frame, params_.expected_frame, ros::Time(0)).transform;
@@ -180,9 +187,9 @@ void VesselInput::handle(const std_msgs::Header& header, const geometry_msgs::Po
   VesselSample s;
   s.stamp = header.stamp;
   s.received = ros::Time::now();
-  s.hangoff = pose * params_.hangoff_offset;
+  s.hangoff = pose * offset_;
   s.orientation = Eigen::Quaterniond(pose.rotation());
-  if (!s.hangoff.allFinite()) return reject("hang-off point is not finite (pose * hangoff_offset)");
+  if (!s.hangoff.allFinite()) return reject("attachment point is not finite (pose * " + what_ + " offset)");
   {
     std::lock_guard<std::mutex> lock(mutex_);
     // ROS time went back before the last accepted stamp (a bag loop): that stamp belongs to the old

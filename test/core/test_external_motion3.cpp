@@ -1,5 +1,6 @@
 // ExternalMotion3: each axis is the planar ExternalMotion's (to round-off), bad samples are refused and
-// change nothing, reset / shiftSampleTimes, no allocation, and a SpatialRun driven by it (RunInputs3).
+// change nothing, reset / shiftSampleTimes, no allocation, and a SpatialRun driven by it (RunInputs3): its
+// top, and a pinned bottom.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -142,6 +143,42 @@ TEST(ExternalMotion3, DrivesASpatialRun) {
   EXPECT_NEAR(o.points.front().x(), top.x(), 1e-6);
   EXPECT_GT(o.points.back().y(), top.y() + 0.1);
   EXPECT_TRUE(o.top_force.allFinite());
+}
+
+// A pinned bottom driven by a second feed (RunInputs3::bottom_motion, the node's ROV end): the statics end
+// at its position, the anchor and the line's end follow its samples, the energy balance holds.
+TEST(ExternalMotion3, DrivesAPinnedBottom) {
+  Scene scene = loadSceneFile(std::string(RISER_SIM_SOURCE_DIR) + "/test/ros/scenes/tether_3d.yaml");
+  scene.bottom_motion.type = MotionKind::kExternal;
+  const Vec3 top(8.0, 0.0, 0.0), rov(1.0, -2.0, -14.0);
+  RunInputs3 in;
+  in.top = top;
+  in.motion = std::make_unique<ExternalMotion3>(top, 0.0);
+  auto bottom = std::make_shared<ExternalMotion3>(rov, 0.0);
+  in.bottom_motion = bottom;
+  SpatialRun run(scene, std::move(in));
+  EXPECT_TRUE(run.bottomMoves());
+  EXPECT_LT((run.outputs().points.back() - rov).norm(), 1e-6);
+  // The ROV moves 1 m in +y over 1 s (10 Hz samples), then holds.
+  for (int k = 1; k <= 30; ++k) {
+    const double t = 0.1 * k;
+    bottom->addSample(t, rov + Vec3(0.0, std::min(t, 1.0), 0.0), run.time());
+    while (run.time() < t - 1e-9) ASSERT_TRUE(run.step()) << run.divergenceReason();
+  }
+  const LineOutputs3& o = run.outputs();
+  const Vec3 moved = rov + Vec3(0.0, 1.0, 0.0);
+  EXPECT_LT((o.bottom_point - moved).norm(), 0.02);
+  EXPECT_LT((o.points.back() - o.bottom_point).norm(), 1e-3);
+  EXPECT_LT((o.points.front() - top).norm(), 1e-6);
+  EXPECT_TRUE(o.bottom_force.allFinite() && o.bottom_force.norm() > 10.0);
+  EXPECT_LT(std::abs(run.energyDrift()), 1e-2);
+  // A driven bottom needs a pinned one.
+  Scene free_end = scene;
+  free_end.bottom = BottomBoundary::kFree;
+  free_end.initial.type = InitialKind::kHanging;
+  RunInputs3 bad;
+  bad.bottom_motion = std::make_shared<ExternalMotion3>(rov, 0.0);
+  EXPECT_THROW(SpatialRun(free_end, std::move(bad)), std::invalid_argument);
 }
 
 }  // namespace

@@ -113,9 +113,13 @@ struct LineOutputs3 {
 };
 
 // What a caller gives instead of the scene's top (as the planar RunInputs): the node's vessel feed.
+// bottom_motion: a pinned bottom driven from outside (the node's second pose feed, e.g. an ROV); the
+// statics end at its position at t = 0, the path is not shifted by the statics' gap (within
+// initial.tolerance). Default: buildTopMotion3(scene.bottom_motion).
 struct RunInputs3 {
   std::optional<Vec3> top;              // A_0 at t = 0 [m]; default: motion's at t = 0
   std::unique_ptr<TopMotion3> motion;   // default: buildTopMotion3(scene.top)
+  std::shared_ptr<const TopMotion3> bottom_motion;  // needs bottom.type: pinned
 };
 
 class SpatialRun {

@@ -146,7 +146,11 @@ SpatialRun::SpatialRun(const Scene& scene, RunInputs3 inputs)
   // The statics end at the bottom's position at t = 0 (bottom.motion's, which may differ from bottom.position).
   Scene at0 = scene;
   const bool pinned = scene.bottom == BottomBoundary::kPinned;
-  if (pinned) at0.bottom_point3 = buildTopMotion3(scene.bottom_motion)->at(0.0).p;
+  if (inputs.bottom_motion && !pinned)
+    throw std::invalid_argument("bottom.motion: a driven bottom needs bottom.type: pinned");
+  if (pinned)
+    at0.bottom_point3 =
+        inputs.bottom_motion ? inputs.bottom_motion->at(0.0).p : buildTopMotion3(scene.bottom_motion)->at(0.0).p;
   initial_ = solveInitialState3(at0, top);
   // A pinned end is held where the statics put it: within initial.tolerance x line.length of
   // bottom.position (their end condition), so the run starts without a Baumgarte kick from that gap. A
@@ -154,7 +158,9 @@ SpatialRun::SpatialRun(const Scene& scene, RunInputs3 inputs)
   if (pinned) {
     const Vec3 gap = initial_.kin.back().end() - at0.bottom_point3;
     const MotionKind type = scene.bottom_motion.type;
-    if (type == MotionKind::kSinusoid || type == MotionKind::kVelocityProfile) {
+    if (inputs.bottom_motion) {
+      model_->setBottomMotion(inputs.bottom_motion);
+    } else if (type == MotionKind::kSinusoid || type == MotionKind::kVelocityProfile) {
       TopMotionSpec spec = scene.bottom_motion;
       spec.position3 += gap;
       model_->setBottomMotion(buildTopMotion3(spec));
