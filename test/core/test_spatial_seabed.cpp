@@ -48,6 +48,60 @@ TEST(SpatialSeabed, AgainstItsEnergyAndPower) {
   EXPECT_GE(bed.contacts(*m, kin), 2);
 }
 
+// The rate Jacobian C = -∂Q/∂q' (the normal damper, the tangential damper, the friction's rate dependence and
+// its coupling through the normal force's damper) against central differences of Q in each rate, on states
+// sliding in every direction (μ_a ≠ μ_l: C is not symmetric). Q is smooth in the rates away from F_n = 0, which
+// random states avoid: bound 1e-6 of the largest entry (measured ~1e-9: the differences' truncation).
+TEST(SpatialSeabed, RateJacobianAgainstDifferences) {
+  spatial_test::LineSpec ls = spatial_test::flexibleLine();
+  ls.segments = 5;
+  auto m = spatial_test::spatialModel(ls, Vec3(1.2, -0.7, -9.5));
+  SeabedSpec spec;
+  spec.enabled = true;
+  spec.level = 4.0;
+  spec.stiffness_normal = 1e5;
+  spec.damping_normal = 300.0;
+  spec.damping_tangential = 50.0;
+  spec.friction_axial = 0.4;
+  spec.friction_lateral = 0.9;
+  spec.friction_velocity = 0.05;
+  const Seabed3 bed(spec, m->gravity());
+  const NaturalFormulation f(*m, 50.0);
+  std::mt19937 rng(5);
+  const int nq = m->dofs();
+  double worst = 0.0;
+  for (int trial = 0; trial < 4; ++trial) {
+    const VecX y = spatial_test::randomState(*m, rng, true);
+    Kinematics3 kin(m->bodies()), kp(m->bodies()), km(m->bodies());
+    f.kinematics(y, kin);
+    SpatialStiffness S;
+    S.resize(m->bodies());
+    bed.addStiffness(*m, kin, 0.0, S);
+    double scale = 0.0, err = 0.0;
+    for (int j = 0; j < nq; ++j) {
+      VecX yp = y, ym = y;
+      const double h = 1e-6;
+      yp[nq + j] += h, ym[nq + j] -= h;
+      f.kinematics(yp, kp);
+      f.kinematics(ym, km);
+      VecX Qp = VecX::Zero(nq), Qm = VecX::Zero(nq);
+      bed.addForces(*m, kp, 0.0, Qp);
+      bed.addForces(*m, km, 0.0, Qm);
+      const VecX col = -(Qp - Qm) / (2 * h);
+      const int body = j / kDofPerBody3, c = j % kDofPerBody3;
+      for (int r = 0; r < nq; ++r) {
+        const double a = r / kDofPerBody3 == body ? S.C_diag[body](r % kDofPerBody3, c) : 0.0;
+        err = std::max(err, std::abs(a - col[r]));
+        scale = std::max(scale, std::abs(col[r]));
+      }
+    }
+    EXPECT_GT(bed.contacts(*m, kin), 0);
+    EXPECT_LT(err, 1e-6 * scale) << "trial " << trial;
+    worst = std::max(worst, err / scale);
+  }
+  std::printf("[ measured ] seabed rate Jacobian vs differences: %.2e of the largest entry\n", worst);
+}
+
 // The friction law on a line lying flat and sliding rigidly at v (one state, no run): along the line the
 // contact points feel μ_a N, across it μ_l N, times v / sqrt(v² + v_s²). Round-off bound.
 TEST(SpatialSeabed, FrictionAlongAndAcrossTheLine) {

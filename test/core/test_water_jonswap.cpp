@@ -7,6 +7,8 @@
 // - a seed reproduces its sea; the scene keys.
 #include <gtest/gtest.h>
 
+#include "riser_sim/spatial/water.h"
+
 #include <cmath>
 #include <complex>
 
@@ -146,6 +148,52 @@ TEST(WaterJonswap, SeedReproducesTheSea) {
   }
   EXPECT_EQ(same, 0.0);
   EXPECT_GT(diff, 0.5);
+}
+
+// Water3 remembers its last wave samples per thread (keyed by the water, the point and the time): a repeated
+// sample is bit for bit the computed one, and two waters that differ only in their sea, asked alternately at
+// the same points and times, each get their own (no sample crosses between them).
+TEST(WaterJonswap, RememberedSamplesAreExactAndPerWater) {
+  WaterSpec a;
+  a.enabled = true;
+  a.waves.type = WaveKind::kJonswap;
+  a.waves.significant_height = 4.0;
+  a.waves.peak_period = 8.0;
+  a.waves.components = 30;
+  a.waves.seed = 3;
+  a.waves.depth = 80.0;
+  WaterSpec b = a;
+  b.waves.seed = 4;
+  const spatial::Water3 wa(a, spatial::Vec3(0, 0, -9.81)), wb(b, spatial::Vec3(0, 0, -9.81));
+  const WaterKinematics pa(a, 9.81), pb(b, 9.81);
+  int differ = 0;
+  for (int k = 0; k < 50; ++k) {
+    const spatial::Vec3 p(3.0 * k, 0.0, -0.7 * k);
+    const double t = 0.37 * k;
+    spatial::Vec3 first[2][2];
+    for (int rep = 0; rep < 2; ++rep)
+      for (int which = 0; which < 2; ++which) {
+        const spatial::Water3& w = which == 0 ? wa : wb;
+        spatial::Vec3 v, acc;
+        w.at(p, t, v, acc);
+        if (rep == 0) {
+          first[which][0] = v, first[which][1] = acc;
+          Vec2 v2, a2;  // the planar kinematics of the same sea (heading 0)
+          (which == 0 ? pa : pb).at(Vec2(p.x(), p.z()), t, v2, a2);
+          EXPECT_NEAR(v.x(), v2.x(), 1e-12 * (1.0 + v2.norm()));
+          EXPECT_NEAR(v.z(), v2.y(), 1e-12 * (1.0 + v2.norm()));
+          EXPECT_NEAR(acc.x(), a2.x(), 1e-12 * (1.0 + a2.norm()));
+        } else {  // remembered: bit for bit
+          EXPECT_EQ(v, first[which][0]);
+          EXPECT_EQ(acc, first[which][1]);
+        }
+      }
+    Vec2 va, vb, aa, ab;
+    pa.at(Vec2(p.x(), p.z()), t, va, aa);
+    pb.at(Vec2(p.x(), p.z()), t, vb, ab);
+    differ += va != vb;
+  }
+  EXPECT_GT(differ, 40);  // the two seas do differ at those points
 }
 
 TEST(WaterJonswap, SceneKeys) {
