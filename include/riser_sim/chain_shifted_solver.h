@@ -53,7 +53,6 @@ class ChainShiftedSolver {
   // Absolute velocities q'_i of every rfe for chain rates w (A'_0 = 0) into q_.
   void toAbsolute(const Eigen::Ref<const VecX>& w);
 
-  const Model& model_;
   const int k_, nb_;
   const bool pinned_;
   const Kinematics* kin_ = nullptr;

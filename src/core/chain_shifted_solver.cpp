@@ -5,7 +5,7 @@
 namespace riser_sim {
 
 ChainShiftedSolver::ChainShiftedSolver(const Model& model, int dofs_per_rfe)
-    : model_(model), k_(dofs_per_rfe), nb_(model.bodies()), pinned_(model.bottom() == BottomBoundary::kPinned) {
+    : k_(dofs_per_rfe), nb_(model.bodies()), pinned_(model.bottom() == BottomBoundary::kPinned) {
   Stage zero;
   zero.E.setZero();
   zero.Rinv.setZero();

@@ -357,7 +357,7 @@ TEST(SpatialSea, VeeringAndCrossCurrentsRelaxedIn3D) {
 }
 
 // No allocation per step with every sea term on (waves, a sheared current, drag, buoyancy, Froude-Krylov, added
-// mass across and along).
+// mass across and along, the seabed with friction under the end).
 TEST(SpatialSea, NoAllocationPerStep) {
   const std::string sea = R"(space: spatial
 top:
@@ -367,6 +367,7 @@ environment:
   water: {density: 1025.0, surface: 0.0}
   current: {profile: [[0.0, 0.6, 0.2], [40.0, 0.3, 0.1]]}
   waves: {height: 2.0, period: 6.0, heading: 45.0}
+seabed: {level: -52.0, stiffness_normal: 1.0e5, damping_normal: 1.0e3, friction_axial: 0.3, friction_lateral: 0.6}
 )";
   for (const char* integrator : {"rk4", "midpoint"}) {
     Scene sc = seaScene(sea, {"hydrodynamics.inertia_coefficient=2", "hydrodynamics.axial_added_mass=0.5"});
@@ -381,6 +382,7 @@ environment:
     }
     EXPECT_EQ(g_allocations.load() - before, 0) << integrator;
     EXPECT_TRUE(std::isfinite(sink));
+    EXPECT_LT(run.outputs().points.back().z(), -52.0) << "the end is not on the seabed";
   }
 }
 

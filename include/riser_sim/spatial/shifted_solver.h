@@ -46,7 +46,6 @@ class ShiftedSolver3 {
   bool factored() const { return factored_; }
   double c() const { return c_; }
 
-  using Mat11 = Eigen::Matrix<double, 11, 11>;
   using Vec11 = Eigen::Matrix<double, 11, 1>;
   using Mat37 = Eigen::Matrix<double, 3, 7>;
   using Mat5 = Eigen::Matrix<double, 5, 5>;
