@@ -66,9 +66,10 @@ std::string character(const spatial::SpatialMode& m, const Vec3& n) {
 }  // namespace
 
 int runSpatialModes(const Scene& scene, int count, const std::string& csv_path, bool quiet) {
-  if (scene.bottom == BottomBoundary::kPinned)
-    return fail(kExitBadInput, "bottom.type: --modes with space: spatial needs a free bottom (the 3D modal analysis "
-                               "has no pinned end yet)");
+  if (scene.bottom == BottomBoundary::kPinned && scene.bottom_motion.type != MotionKind::kFixed &&
+      scene.bottom_motion.type != MotionKind::kExternal)
+    return fail(kExitBadInput, "bottom.motion: --modes with space: spatial needs a fixed or free bottom (the modes are "
+                               "about a static state)");
   if (scene.torsion.enabled)
     return fail(kExitBadInput, "line.torsion: --modes with space: spatial has no torsion yet (the 3D modal "
                                "analysis has bending and axial modes only); remove line.torsion for --modes");

@@ -262,7 +262,8 @@ TEST(CliSpatialEnds, BadKeysAreRefusedNamingTheKey) {
        "bottom.motion.type: needs space: spatial"},
       {"--set space=spatial --set bottom.type=pinned --set bottom.position=[0,0,-9] --set initial.type=straight",
        "m from the end of the straight initial line"},
-      {pinned + " --modes 3", "bottom.type: --modes with space: spatial needs a free bottom"},
+      {pinned + " --set bottom.motion.type=sinusoid --set bottom.motion.amplitude=[1,0,0] --set bottom.motion.period=5 "
+                "--modes 3", "bottom.motion: --modes with space: spatial needs a fixed or free bottom"},
       {"--set space=spatial --set line.torsion.stiffness=1e4 --set line.torsion.polar_inertia=1 --modes 3",
        "line.torsion: --modes with space: spatial has no torsion yet"},
   };
@@ -354,6 +355,59 @@ TEST(CliSpatialEnds, ModesIn3DArePairsAtThePlanarFrequencies) {
       EXPECT_GT(worst_out, 1e-4);  // the end load's plane is special
     EXPECT_EQ(readFile(csv).rfind("mode,period_s,frequency_hz,character,point,s,x,y,z,dx,dy,dz\n", 0), 0u);
   }
+}
+
+// A line pinned at both ends, taut and vertical (between (0, 0) and (0, -10.05) m, 0.5 % stretched): the 3D
+// modes (the end held in the null space of its Jacobian, the anchor's force a dead load) are the planar pinned
+// modes (docs/modal.md), the transverse ones in degenerate pairs (the line is symmetric about its axis).
+// Bound 1e-5: the tables' 6 printed digits.
+TEST(CliSpatialEnds, PinnedModesIn3DArePairsAtThePlanarFrequencies) {
+  const std::string scene = writeScene(
+      "pinned_modes", "name: pinned_modes\nline: {length: 10, elements: 8, mass_per_length: 10, EA: 1.0e6, EI: 2.0e3}\n"
+                      "top: {position: [0, 0]}\nbottom: {type: pinned, position: [0, -10.05]}\n"
+                      "initial: {type: between_points}\nsolver: {integrator: rk4, dt: 1.0e-4}\n");
+  const CliRun p = runCli("--scene " + scene + " --quiet --modes 8");
+  const CliRun s = runCli("--scene " + scene + " --quiet --set space=spatial --modes 16");
+  ASSERT_EQ(p.code, 0) << p.err;
+  ASSERT_EQ(s.code, 0) << s.err;
+  const auto planar = modeTable(p.out), spatial = modeTable(s.out);
+  ASSERT_EQ(planar.size(), 8u);
+  ASSERT_EQ(spatial.size(), 16u);
+  std::vector<double> expected;  // the planar frequencies, transverse ones twice
+  for (const ModeRow& m : planar) {
+    expected.push_back(m.f);
+    if (m.character != "axial") expected.push_back(m.f);
+  }
+  std::sort(expected.begin(), expected.end());
+  double worst = 0.0;
+  for (size_t k = 0; k < 12; ++k) worst = std::max(worst, std::abs(spatial[k].f / expected[k] - 1.0));
+  std::printf("[pinned modes] lowest 12 3D modes vs the planar pinned modes (pairs): %.2e; %.5g Hz lowest\n", worst,
+              spatial[0].f);
+  EXPECT_LT(worst, 1e-5);
+  EXPECT_GT(spatial[0].f, 0.1);  // the held end: no pendulum mode
+}
+
+// The same line sagging between (0, 0) and (6, -7) m: the anchor's force has a horizontal part, whose geometric
+// stiffness the in-plane modes need; the in-plane and axial 3D modes are the planar pinned ones (6 digits).
+TEST(CliSpatialEnds, SaggingPinnedModesInPlaneAreThePlanarOnes) {
+  const std::string scene = writeScene(
+      "sag_modes", "name: sag_modes\nline: {length: 10, elements: 8, mass_per_length: 10, EA: 1.0e6, EI: 2.0e3}\n"
+                   "top: {position: [0, 0]}\nbottom: {type: pinned, position: [6, -7]}\n"
+                   "initial: {type: between_points}\nsolver: {integrator: rk4, dt: 1.0e-4}\n");
+  const CliRun p = runCli("--scene " + scene + " --quiet --modes 6");
+  const CliRun s = runCli("--scene " + scene + " --quiet --set space=spatial --modes 14");
+  ASSERT_EQ(p.code, 0) << p.err;
+  ASSERT_EQ(s.code, 0) << s.err;
+  const auto planar = modeTable(p.out), spatial = modeTable(s.out);
+  std::vector<ModeRow> in;
+  for (const ModeRow& m : spatial)
+    if (m.character != "out-of-plane") in.push_back(m);
+  ASSERT_GE(in.size(), planar.size());
+  double worst = 0.0;
+  for (size_t k = 0; k < planar.size(); ++k) worst = std::max(worst, std::abs(in[k].f / planar[k].f - 1.0));
+  std::printf("[sagging pinned modes] %zu in-plane 3D modes vs planar: %.2e (lowest %.5g Hz)\n", planar.size(), worst,
+              in[0].f);
+  EXPECT_LT(worst, 1e-5);
 }
 
 // --modes with a top flex joint: a stiff rod (EI = 1e10 N m², inextensible, 10 m, 100 kg, 50 kg end mass)

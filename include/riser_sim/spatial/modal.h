@@ -42,11 +42,13 @@ struct SpatialModalResult {
 };
 
 // Static equilibrium of the line at rest hanging from A_0 = guess[0].A: Newton on Q_θ = 0 with the
-// finite-difference K, from the guess's directions and Δ (its joints are closed from A_0). Throws
-// std::runtime_error when it does not reach a residual of 1e-12 of the weight in `iterations`.
+// finite-difference K, from the guess's directions and Δ (its joints are closed from A_0); a pinned end held
+// at bottomPoint() with its force as a multiplier. Throws std::runtime_error when it does not reach a residual
+// of 1e-12 of the weight (and an end gap of 1e-12 of the length) in `iterations`.
 Kinematics3 spatialEquilibrium(const SpatialModel& model, const Kinematics3& guess, int iterations = 20,
                                const SpatialModalOptions& options = SpatialModalOptions());
-// Modes about `equilibrium` (zero velocities). Throws std::runtime_error when the eigen-solve fails.
+// Modes about `equilibrium` (zero velocities); a pinned end held (the modes in the null space of its Jacobian,
+// the anchor's force a dead load). Throws std::runtime_error when the eigen-solve fails.
 SpatialModalResult computeSpatialModes(const SpatialModel& model, const Kinematics3& equilibrium,
                                        const SpatialModalOptions& options = SpatialModalOptions());
 

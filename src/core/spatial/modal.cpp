@@ -2,6 +2,7 @@
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/LU>
+#include <Eigen/QR>
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -39,22 +40,43 @@ class RestLine {
     forces(theta);
     return data_->M;
   }
-  MatX stiffness(const VecX& theta0, const SpatialModel& model) {
+  // Pinned end: Φ = ∂E_n/∂θ (3 x p) and the gap E_n - p_b [m].
+  MatX endJacobian(const VecX& theta) {
+    forces(theta);
+    return data_->Phi;
+  }
+  Vec3 endGap(const VecX& theta, const SpatialModel& model) {
+    return kinematics(theta, model).back().end() - model.bottomPoint();
+  }
+  // The anchor's force λ on the end that balances Q_θ in least squares (Φᵀ λ = -Q_θ; 0 for a free end).
+  Vec3 anchorForce(const VecX& theta, const SpatialModel& model) {
+    if (model.bottom() != BottomBoundary::kPinned) return Vec3::Zero();
+    const VecX Q = forces(theta);
+    return data_->Phi.transpose().colPivHouseholderQr().solve(-Q);
+  }
+  // Q_θ + Φᵀ λ with λ held (a dead load at the end: its geometric stiffness is the constraint's).
+  VecX loaded(const VecX& theta, const Vec3& lambda) {
+    VecX Q = forces(theta);
+    if (lambda.squaredNorm() > 0.0) Q += data_->Phi.transpose() * lambda;
+    return Q;
+  }
+  MatX stiffness(const VecX& theta0, const SpatialModel& model, const Vec3& lambda = Vec3::Zero()) {
     MatX K(p_, p_);
     VecX th = theta0, Qp;
     for (int c = 0; c < p_; ++c) {
       const double h = fd_step_ * (isDelta(c) ? model.line().segmentLength() : 1.0);
       th[c] = theta0[c] + h;
-      Qp = forces(th);
+      Qp = loaded(th, lambda);
       th[c] = theta0[c] - h;
-      K.col(c) = -(Qp - forces(th)) / (2.0 * h);
+      K.col(c) = -(Qp - loaded(th, lambda)) / (2.0 * h);
       th[c] = theta0[c];
     }
     return K;
   }
-  // Max |Q_θ| relative to the weight (Δ rows, N) and to weight x length (chart rows, N m).
+  // Max |Q_θ + Φᵀ λ| (λ the anchor's force, pinned) relative to the weight (Δ rows, N) and to weight x length
+  // (chart rows, N m).
   double residual(const VecX& theta, const SpatialModel& model) {
-    const VecX& Q = forces(theta);
+    const VecX Q = loaded(theta, anchorForce(theta, model));
     double w = 0.0;
     for (int i = 0; i < model.bodies(); ++i) w += model.rfe(i).mass;
     w *= model.gravity().norm();
@@ -83,40 +105,72 @@ class RestLine {
 
 Kinematics3 spatialEquilibrium(const SpatialModel& model, const Kinematics3& guess, int iterations,
                                const SpatialModalOptions& options) {
-  if (model.bottom() == BottomBoundary::kPinned) throw std::invalid_argument("spatialEquilibrium: free bottom only");
   RestLine line(model, guess, options.fd_step);
   VecX theta = line.theta();
+  const bool pinned = model.bottom() == BottomBoundary::kPinned;
+  const double gap_tol = 1e-12 * model.line().length();
+  auto converged = [&] {
+    return line.residual(theta, model) < 1e-12 && (!pinned || line.endGap(theta, model).norm() < gap_tol);
+  };
+  const int p = line.size();
   for (int it = 0; it < iterations; ++it) {
-    if (line.residual(theta, model) < 1e-12) return line.kinematics(theta, model);
+    if (converged()) return line.kinematics(theta, model);
     const MatX K = line.stiffness(theta, model);
-    theta += K.partialPivLu().solve(VecX(line.forces(theta)));  // Q(θ + δ) ≈ Q - K δ = 0
+    if (!pinned) {
+      theta += K.partialPivLu().solve(VecX(line.forces(theta)));  // Q(θ + δ) ≈ Q - K δ = 0
+      continue;
+    }
+    // Pinned: Q - K δ + Φᵀ ν = 0 (ν: the anchor's force beyond the model's), E_n - p_b + Φ δ = 0.
+    const MatX Phi = line.endJacobian(theta);
+    MatX A = MatX::Zero(p + 3, p + 3);
+    A.topLeftCorner(p, p) = K;
+    A.topRightCorner(p, 3) = -Phi.transpose();
+    A.bottomLeftCorner(3, p) = Phi;
+    VecX b(p + 3);
+    b.head(p) = line.forces(theta);
+    b.tail(3) = -line.endGap(theta, model);
+    theta += A.partialPivLu().solve(b).head(p);
   }
-  if (line.residual(theta, model) < 1e-12) return line.kinematics(theta, model);
+  if (converged()) return line.kinematics(theta, model);
   throw std::runtime_error("spatialEquilibrium: Newton did not converge");
 }
 
 SpatialModalResult computeSpatialModes(const SpatialModel& model, const Kinematics3& equilibrium,
                                        const SpatialModalOptions& options) {
   if (!(options.fd_step > 0.0)) throw std::invalid_argument("spatial modal fd_step: must be > 0");
-  if (model.bottom() == BottomBoundary::kPinned) throw std::invalid_argument("spatial modal: free bottom only");
   if (model.hasTorsion()) throw std::invalid_argument("spatial modal: no torsion yet");
+  if (model.bottomMoves()) throw std::invalid_argument("spatial modal: a fixed or free bottom only (not a moving one)");
   RestLine line(model, equilibrium, options.fd_step);
   const VecX theta0 = line.theta();
   SpatialModalResult res;
   res.equilibrium = line.kinematics(theta0, model);
   res.equilibrium_residual = line.residual(theta0, model);
-  MatX K = line.stiffness(theta0, model);
+  // Pinned: the anchor's force as a dead load at the end (its geometric stiffness is the constraint's), the
+  // modes in the null space N of Φ = ∂E_n/∂θ (the end held).
+  const bool pinned = model.bottom() == BottomBoundary::kPinned;
+  MatX K = line.stiffness(theta0, model, line.anchorForce(theta0, model));
   const double knorm = K.norm();
   res.asymmetry = knorm > 0.0 ? (K - K.transpose()).norm() / knorm : 0.0;
   K = 0.5 * (K + K.transpose()).eval();
   const MatX M = line.mass(theta0);
-  Eigen::GeneralizedSelfAdjointEigenSolver<MatX> es(K, M);
+  MatX N;
+  if (pinned) {
+    Eigen::ColPivHouseholderQR<MatX> qr(line.endJacobian(theta0).transpose());
+    qr.setThreshold(1e-10);
+    if (qr.rank() < 3)
+      throw std::runtime_error("spatial modal: the pinned end's Jacobian is singular (an inextensible line pinned "
+                               "at exactly its length is locked); use axial flexibility");
+    const MatX Q = qr.householderQ();
+    N = Q.rightCols(line.size() - 3);
+  }
+  const MatX Kr = pinned ? MatX(N.transpose() * K * N) : K, Mr = pinned ? MatX(N.transpose() * M * N) : M;
+  Eigen::GeneralizedSelfAdjointEigenSolver<MatX> es(0.5 * (Kr + Kr.transpose()), 0.5 * (Mr + Mr.transpose()));
   if (es.info() != Eigen::Success) throw std::runtime_error("spatial modal: the generalised eigen-solve failed");
-  for (int m = 0; m < line.size(); ++m) {
+  for (int m = 0; m < int(Kr.rows()); ++m) {
     SpatialMode mode;
     mode.omega2 = es.eigenvalues()[m];
     mode.omega = mode.omega2 > 0.0 ? std::sqrt(mode.omega2) : 0.0;
-    mode.theta = es.eigenvectors().col(m);
+    mode.theta = pinned ? VecX(N * es.eigenvectors().col(m)) : VecX(es.eigenvectors().col(m));
     const VecX Mt = M * mode.theta;
     for (int c = 0; c < line.size(); ++c)
       if (line.isDelta(c)) mode.axial_fraction += mode.theta[c] * Mt[c];
