@@ -1,10 +1,13 @@
 #!/usr/bin/env bash
-# make demo: installs what is needed (with rviz, xvfb, ffmpeg), builds, then runs launch/demo.launch for
-# RISER_SIM_DEMO_DURATION (40) s with rviz on a virtual display and records
-#   out/demo.mp4 (the rviz window), out/demo.bag (the node's topics), out/demo_tension.png (plot)
+# make demo: installs what is needed (with rviz, xvfb, ffmpeg), builds, then runs launch/demo.launch (the 3D
+# demo: demo_riser_3d.yaml, rviz orbiting the line) for RISER_SIM_DEMO_DURATION (40) s with rviz on a
+# virtual display and records
+#   out/demo.mp4 (the rviz window), out/demo.bag (the node's topics), out/demo_tension.png (tension, end
+#   wrenches, positions), out/demo_tension_map.png (tension along the line against time)
 # and prints a summary. Every process it starts is stopped at the end, also on failure or Ctrl-C.
 # Environment: RISER_SIM_WS (workspace, default .ws), RISER_SIM_DEMO_OUT (default out),
-# RISER_SIM_DEMO_DURATION [s], RISER_SIM_DEMO_FPS (video frame rate, default 20).
+# RISER_SIM_DEMO_DURATION [s], RISER_SIM_DEMO_FPS (video frame rate, default 20),
+# RISER_SIM_DEMO_PLANAR (1: the planar demo, demo_riser.yaml in a side view; default 0).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 export RISER_SIM_WS=${RISER_SIM_WS:-$root/.ws}
@@ -12,6 +15,9 @@ out=$(mkdir -p "${RISER_SIM_DEMO_OUT:-$root/out}" && cd "${RISER_SIM_DEMO_OUT:-$
 export RISER_SIM_DEMO_OUT=$out
 export RISER_SIM_DEMO_DURATION=${RISER_SIM_DEMO_DURATION:-40}
 export RISER_SIM_DEMO_FPS=${RISER_SIM_DEMO_FPS:-20}
+export RISER_SIM_DEMO_PLANAR=${RISER_SIM_DEMO_PLANAR:-0}
+planar=$([ "$RISER_SIM_DEMO_PLANAR" = 1 ] && echo true || echo false)
+rviz_config=$root/rviz/$([ "$planar" = true ] && echo riser.rviz || echo riser_3d.rviz)
 W=1280 H=720
 
 log() { echo "[demo] $*"; }
@@ -66,20 +72,20 @@ if [ "${1:-}" = --in-xvfb ]; then
   pids+=($!)
   wait_for 30 "roscore" rosparam get /run_id
 
-  start "$out/rviz.log" rviz -d "$root/rviz/riser.rviz"
+  start "$out/rviz.log" rviz -d "$rviz_config"
   rviz_pid=$!; pids=("$rviz_pid" "${pids[@]}")
   # rviz subscribes to its displays' topics once its window and config are up.
   wait_for 60 "rviz to subscribe to /riser_sim/markers" subscribed /riser_sim/markers /rviz
 
-  rm -f "$out/demo.mp4" "$out/demo.bag" "$out/demo.bag.active"
+  rm -f "$out/demo.mp4" "$out/demo.bag" "$out/demo.bag.active" "$out/demo_tension_map.png"
   start "$out/ffmpeg.log" ffmpeg -nostdin -y -loglevel error -f x11grab -draw_mouse 0 -video_size ${W}x${H} \
     -framerate "$RISER_SIM_DEMO_FPS" -i "$DISPLAY" -t $((RISER_SIM_DEMO_DURATION + 30)) \
     -c:v libx264 -preset ultrafast -crf 26 -pix_fmt yuv420p "$out/demo.mp4"
   ffmpeg_pid=$!; pids=("$ffmpeg_pid" "${pids[@]}")
 
-  log "running the demo for $RISER_SIM_DEMO_DURATION s"
+  log "running the $([ "$planar" = true ] && echo planar || echo 3D) demo for $RISER_SIM_DEMO_DURATION s"
   start "$out/roslaunch.log" roslaunch riser_sim demo.launch rviz:=false record:=true bag:="$out/demo.bag" \
-    duration:="$RISER_SIM_DEMO_DURATION"
+    duration:="$RISER_SIM_DEMO_DURATION" planar:="$planar"
   launch_pid=$!; pids=("$launch_pid" "${pids[@]}")
   # One rostopic waiting up to 60 s (it has been seen to hang on SIGTERM: -k kills it 5 s later).
   if ! timeout -k 5 60 rostopic echo -n 1 /riser_sim/tension >/dev/null 2>&1; then
@@ -114,5 +120,5 @@ echo
 log "outputs:"
 echo "  video: $out/demo.mp4 (${video_s} s, ${W}x${H})"
 echo "  bag:   $out/demo.bag ($(du -h "$out/demo.bag" | cut -f1))"
-echo "  plot:  $out/demo_tension.png"
+echo "  plots: $out/demo_tension.png, $out/demo_tension_map.png"
 echo "  logs:  $out/ros_logs, $out/roslaunch.log, $out/rviz.log"
