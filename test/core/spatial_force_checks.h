@@ -120,5 +120,36 @@ inline void checkPower(const SpatialForceTerm& term, const SpatialModel& m) {
   }
 }
 
+// The term's C = -∂Q/∂q' (addStiffness, rate part) against central differences of Q in each rate at state y and
+// time t: max |C - C_fd| over the largest |C_fd| entry.
+inline double rateJacobianError(const SpatialForceTerm& term, const SpatialModel& m, const VecX& y, double t) {
+  const NaturalFormulation f(m, 50.0);
+  const int nq = m.dofs();
+  Kinematics3 kin(m.bodies()), kp(m.bodies()), km(m.bodies());
+  f.kinematics(y, kin);
+  spatial::SpatialStiffness S;
+  S.resize(m.bodies());
+  term.addStiffness(m, kin, t, S);
+  double scale = 0.0, err = 0.0;
+  for (int j = 0; j < nq; ++j) {
+    VecX yp = y, ym = y;
+    const double h = 1e-6;
+    yp[nq + j] += h, ym[nq + j] -= h;
+    f.kinematics(yp, kp);
+    f.kinematics(ym, km);
+    VecX Qp = VecX::Zero(nq), Qm = VecX::Zero(nq);
+    term.addForces(m, kp, t, Qp);
+    term.addForces(m, km, t, Qm);
+    const VecX col = -(Qp - Qm) / (2 * h);
+    const int body = j / kDofPerBody3, c = j % kDofPerBody3;
+    for (int r = 0; r < nq; ++r) {
+      const double a = r / kDofPerBody3 == body ? S.C_diag[body](r % kDofPerBody3, c) : 0.0;
+      err = std::max(err, std::abs(a - col[r]));
+      scale = std::max(scale, std::abs(col[r]));
+    }
+  }
+  return scale > 0.0 ? err / scale : err;
+}
+
 }  // namespace spatial_test
 }  // namespace riser_sim

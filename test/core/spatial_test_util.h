@@ -112,6 +112,21 @@ class PlanarOde : public OdeSystem {
 };
 
 // R = Rz(yaw) Ry(tilt): a tilt about y, then a yaw about the vertical.
+// A 3D state hanging straight down in the x-z plane as the planar kinematics (x, z) -> (x, y), φ = -π/2.
+inline Kinematics planarHanging(const spatial::Kinematics3& eq) {
+  Kinematics kin2(eq.size());
+  for (size_t i = 0; i < eq.size(); ++i) {
+    BodyKinematics& b = kin2[i];
+    b.A = Vec2(eq[i].A.x(), eq[i].A.z());
+    b.delta = eq[i].delta;
+    b.phi = -M_PI / 2;
+    b.c = std::cos(b.phi);
+    b.s = std::sin(b.phi);
+    b.len = eq[i].len;
+  }
+  return kin2;
+}
+
 inline Mat3 yawTilt(double yaw, double tilt) {
   return (Eigen::AngleAxisd(yaw, Vec3::UnitZ()) * Eigen::AngleAxisd(tilt, Vec3::UnitY())).toRotationMatrix();
 }

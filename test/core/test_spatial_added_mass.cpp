@@ -24,6 +24,7 @@
 #include "riser_sim/spatial/run_builder.h"
 #include "spatial_force_checks.h"
 #include "spatial_independent_util.h"
+#include "spatial_sea_scenes.h"
 #include "spatial_test_util.h"
 
 namespace riser_sim {
@@ -210,16 +211,7 @@ TEST(SpatialAddedMass, ModesUnderWater) {
   // The planar line at the same equilibrium with its added mass.
   auto m2 = spatial_test::planarModel(s);
   m2->addTerm(std::make_unique<HydroInertia>(WaterKinematics(still, s.g), 1.0 + kCaNormal, kCaAxial));
-  Kinematics kin2(m2->bodies());
-  for (int i = 0; i < m2->bodies(); ++i) {
-    BodyKinematics& b = kin2[i];
-    b.A = Vec2(eq[i].A.x(), eq[i].A.z());
-    b.delta = eq[i].delta;
-    b.phi = -M_PI / 2;
-    b.c = std::cos(b.phi);
-    b.s = std::sin(b.phi);
-    b.len = eq[i].len;
-  }
+  const Kinematics kin2 = spatial_test::planarHanging(eq);
   ModalOptions o;
   o.modes = 2 * m2->bodies();
   std::vector<double> t2, a2;
@@ -241,75 +233,32 @@ TEST(SpatialAddedMass, ModesUnderWater) {
               pairs, lowest, tw[0], td[0]);
 }
 
-const char* kLine = R"(line:
-  length: 60.0
-  elements: 12
-  EA: 1.0e7
-  EI: 1.0e5
-  mass_per_length: 100.0
-  outer_diameter: 0.3
-  axial_damping: 1.0e4
-  bending_damping: 1.0e3
-  end_mass: 200.0
-hydrodynamics:
-  drag_normal: 1.2
-  drag_tangential: 0.1
-  inertia_coefficient: 2.0
-  axial_added_mass: 0.5
-solver:
-  integrator: rk4
-)";
-
-std::string num(double v) {
-  char b[40];
-  std::snprintf(b, sizeof b, "%.17g", v);
-  return b;
+// The 60 m sea line (spatial_sea_scenes.h) with the hydrodynamic inertia across (C_M = 2) and along it
+// (C_a,t = 0.5); later sets override.
+Scene inertiaScene(const std::string& rest, std::vector<std::string> sets = {}) {
+  sets.insert(sets.begin(), {"hydrodynamics.inertia_coefficient=2", "hydrodynamics.axial_added_mass=0.5"});
+  return loadSceneText(std::string(spatial_test::kSeaLine) + rest, "added_mass", sets);
 }
 
 // A planar sea (current profile, ramped waves, a top crossing the surface and moving) with C_M = 2 and
 // C_a,t = 0.5, yawed by 35 deg into 3D, against the planar core: 1e-9 m at h = 1e-3 s over 4 s (the two cores'
 // rk4 truncation differs: ~16x per halving, as the dry sea of test_spatial_sea).
 TEST(SpatialAddedMass, YawedPlanarSeaMatchesThePlanarCore) {
-  const double psi = 35.0, c = std::cos(psi * M_PI / 180.0), sn = std::sin(psi * M_PI / 180.0);
-  const Mat3 R = Eigen::AngleAxisd(psi * M_PI / 180.0, Vec3::UnitZ()).toRotationMatrix();
-  const std::string sea2 = R"(top:
-  position: [0.0, 5.0]
-  motion: {type: sinusoid, amplitude: [0.8, 0.4], period: 6.0}
-environment:
-  water: {density: 1025.0, surface: 0.0}
-  current:
-    profile: [[0.0, 0.9], [40.0, 0.3]]
-  waves: {height: 3.0, period: 7.0, depth: 200.0, ramp: 2.0}
-)";
-  const Vec3 rt = R * Vec3(0.0, 0.0, 5.0), ra = R * Vec3(0.8, 0.0, 0.4);
-  const std::string sea3 = "space: spatial\ntop:\n  position: [" + num(rt.x()) + ", " + num(rt.y()) + ", " + num(rt.z()) +
-                           "]\n  motion: {type: sinusoid, amplitude: [" + num(ra.x()) + ", " + num(ra.y()) + ", " +
-                           num(ra.z()) + "], period: 6.0}\nenvironment:\n  water: {density: 1025.0, surface: 0.0}\n"
-                           "  current:\n    profile: [[0.0, " + num(0.9 * c) + ", " + num(0.9 * sn) + "], [40.0, " +
-                           num(0.3 * c) + ", " + num(0.3 * sn) + "]]\n  waves: {height: 3.0, period: 7.0, depth: 200.0, "
-                           "ramp: 2.0, heading: " + num(psi) + "}\n";
+  const double psi = 35.0;
+  const spatial_test::YawedSea sea = spatial_test::yawedSea(psi);
+  const std::string sea2 = sea.planar;
   double worst[2] = {0.0, 0.0}, dry_gap = 0.0;
   for (int r = 0; r < 2; ++r) {
     const std::vector<std::string> dt = {r == 0 ? "solver.dt=0.002" : "solver.dt=0.001"};
-    riser_sim::Run planar = buildRun(loadSceneText(std::string(kLine) + sea2, "added_mass_2d", dt));
-    SpatialRun run(loadSceneText(std::string(kLine) + sea3, "added_mass_3d", dt));
-    Kinematics kin2(planar.model->bodies());
+    riser_sim::Run planar = buildRun(inertiaScene(sea2, dt));
+    SpatialRun run(inertiaScene(sea.spatial, dt));
+    worst[r] = spatial_test::planarVs3D(planar, run, spatial_test::yawDeg(psi), 4.0);
     const long steps = std::lround(4.0 / run.dt());
-    for (long k = 0; k <= steps; ++k) {
-      if (k > 0) {
-        ASSERT_TRUE(planar.sim->step());
-        ASSERT_TRUE(run.step()) << run.divergenceReason();
-      }
-      if (k % 100) continue;
-      planar.sim->kinematics(kin2);
-      const LineOutputs3& o = run.outputs();
-      for (int i = 0; i < planar.model->bodies(); ++i)
-        worst[r] = std::max(worst[r], (o.points[i] - planarPoint(kin2[i].A, R)).norm());
-    }
+    Kinematics kin2(planar.model->bodies());
+    planar.sim->kinematics(kin2);
     if (r == 1) {  // the same planar run without the hydrodynamic inertia ends visibly elsewhere
-      riser_sim::Run bare = buildRun(loadSceneText(std::string(kLine) + sea2, "added_mass_2d",
-                                                   {"solver.dt=0.001", "hydrodynamics.inertia_coefficient=1",
-                                                    "hydrodynamics.axial_added_mass=0"}));
+      riser_sim::Run bare = buildRun(inertiaScene(sea2, {"solver.dt=0.001", "hydrodynamics.inertia_coefficient=1",
+                                                           "hydrodynamics.axial_added_mass=0"}));
       for (long k = 0; k < steps; ++k) ASSERT_TRUE(bare.sim->step());
       Kinematics kb(bare.model->bodies());
       bare.sim->kinematics(kb);
@@ -338,7 +287,7 @@ environment:
 )";
   double drift[2];
   for (int r = 0; r < 2; ++r) {
-    Scene sc = loadSceneText(std::string(kLine) + sea, "added_mass_energy");
+    Scene sc = inertiaScene(sea);
     sc.solver.dt = r == 0 ? 0.01 : 0.005;
     SpatialRun run(sc);
     double worst = 0.0;

@@ -32,16 +32,7 @@ Spectra spectra(int n, const Vec3& gravity) {
 
   // The planar line at the same equilibrium (its plane: the one through gravity and x after the map).
   auto m2 = spatial_test::planarModel(s);
-  Kinematics kin2(m2->bodies());
-  for (int i = 0; i < m2->bodies(); ++i) {
-    BodyKinematics& b = kin2[i];
-    b.A = Vec2(eq[i].A.x(), eq[i].A.z());
-    b.delta = eq[i].delta;
-    b.phi = -M_PI / 2;
-    b.c = std::cos(b.phi);
-    b.s = std::sin(b.phi);
-    b.len = eq[i].len;
-  }
+  const Kinematics kin2 = spatial_test::planarHanging(eq);
   ModalOptions o;
   o.modes = 2 * m2->bodies();
   const ModalResult r2 = computeModes(*m2, kin2, Vec2::Zero(), o);

@@ -20,6 +20,7 @@
 #include "riser_sim/spatial/run_builder.h"
 #include "riser_sim/simulator.h"
 #include "spatial_force_checks.h"
+#include "spatial_sea_scenes.h"
 #include "spatial_test_util.h"
 #include "alloc_counter.h"
 
@@ -28,37 +29,13 @@ namespace {
 
 using namespace spatial;
 
-// A 60 m line, n = 12, hung from 5 m above the surface (its top crosses it), in a sheared current and
-// ramped waves. Axial ω ~ 60 rad/s: rk4 at 0.01 s is well inside its limit (ω h ~ 0.6).
-const char* kSeaLine = R"(line:
-  length: 60.0
-  elements: 12
-  EA: 1.0e7
-  EI: 1.0e5
-  mass_per_length: 100.0
-  outer_diameter: 0.3
-  axial_damping: 1.0e4
-  bending_damping: 1.0e3
-  end_mass: 200.0
-hydrodynamics:
-  drag_normal: 1.2
-  drag_tangential: 0.1
-solver:
-  integrator: rk4
-  dt: 0.01
-)";
+using spatial_test::kSeaLine;
 
 Scene seaScene(const std::string& rest, const std::vector<std::string>& sets = {}) {
   return loadSceneText(std::string(kSeaLine) + rest, "test_spatial_sea", sets);
 }
 
-Mat3 yaw(double deg) { return Eigen::AngleAxisd(deg * M_PI / 180.0, Vec3::UnitZ()).toRotationMatrix(); }
-
-std::string num(double v) {
-  char b[40];
-  std::snprintf(b, sizeof(b), "%.17g", v);
-  return b;
-}
+Mat3 yaw(double deg) { return spatial_test::yawDeg(deg); }
 
 spatial_test::LineSpec termLine() {
   spatial_test::LineSpec s = spatial_test::flexibleLine();
@@ -104,38 +81,12 @@ TEST(SpatialSea, DragDampingMatrixAgainstDifferences) {
   auto m = spatial_test::spatialModel(termLine(), Vec3(0.0, 0.0, -9.81));
   const Water3 water(movingWater(), m->gravity());
   const MorisonDrag3 drag(water, 0.3, 1.1);
-  const NaturalFormulation f(*m, 50.0);
   std::mt19937 rng(3);
-  const int nq = m->dofs();
   double worst = 0.0;
   for (int trial = 0; trial < 3; ++trial) {
-    const VecX y = spatial_test::randomState(*m, rng, true);
-    Kinematics3 kin(m->bodies());
-    f.kinematics(y, kin);
-    SpatialStiffness S;
-    S.resize(m->bodies());
-    drag.addStiffness(*m, kin, 0.3, S);
-    double scale = 0.0, err = 0.0;
-    for (int j = 0; j < nq; ++j) {
-      VecX yp = y, ym = y;
-      const double h = 1e-6;
-      yp[nq + j] += h, ym[nq + j] -= h;
-      Kinematics3 kp(m->bodies()), km(m->bodies());
-      f.kinematics(yp, kp);
-      f.kinematics(ym, km);
-      VecX Qp = VecX::Zero(nq), Qm = VecX::Zero(nq);
-      drag.addForces(*m, kp, 0.3, Qp);
-      drag.addForces(*m, km, 0.3, Qm);
-      const VecX col = -(Qp - Qm) / (2 * h);
-      const int body = j / kDofPerBody3, c = j % kDofPerBody3;
-      for (int r = 0; r < nq; ++r) {
-        const double a = r / kDofPerBody3 == body ? S.C_diag[body](r % kDofPerBody3, c) : 0.0;
-        err = std::max(err, std::abs(a - col[r]));
-        scale = std::max(scale, std::abs(col[r]));
-      }
-    }
-    EXPECT_LT(err, 1e-7 * scale) << "trial " << trial;
-    worst = std::max(worst, err / scale);
+    const double err = spatial_test::rateJacobianError(drag, *m, spatial_test::randomState(*m, rng, true), 0.3);
+    EXPECT_LT(err, 1e-7) << "trial " << trial;
+    worst = std::max(worst, err);
   }
   std::printf("[ measured ] drag damping matrix vs differences: %.2e of the largest entry\n", worst);
 }
@@ -146,48 +97,19 @@ TEST(SpatialSea, DragDampingMatrixAgainstDifferences) {
 TEST(SpatialSea, YawedPlanarSeaMatchesThePlanarCore) {
   const double psi = 35.0;
   const Mat3 R = yaw(psi);
-  const Vec3 top(0.0, 0.0, 5.0), amp(0.8, 0.0, 0.4);
-  const double c = std::cos(psi * M_PI / 180.0), s = std::sin(psi * M_PI / 180.0);
-  const std::string sea2 = R"(top:
-  position: [0.0, 5.0]
-  motion: {type: sinusoid, amplitude: [0.8, 0.4], period: 6.0}
-environment:
-  water: {density: 1025.0, surface: 0.0}
-  current:
-    profile: [[0.0, 0.9], [40.0, 0.3]]
-  waves: {height: 3.0, period: 7.0, depth: 200.0, ramp: 2.0}
-)";
-  const Vec3 rt = R * top, ra = R * amp;
-  const std::string sea3 = "space: spatial\ntop:\n  position: [" + num(rt.x()) + ", " + num(rt.y()) + ", " + num(rt.z()) +
-                           "]\n  motion: {type: sinusoid, amplitude: [" + num(ra.x()) + ", " + num(ra.y()) + ", " +
-                           num(ra.z()) + "], period: 6.0}\nenvironment:\n  water: {density: 1025.0, surface: 0.0}\n"
-                           "  current:\n    profile: [[0.0, " + num(0.9 * c) + ", " + num(0.9 * s) + "], [40.0, " +
-                           num(0.3 * c) + ", " + num(0.3 * s) + "]]\n  waves: {height: 3.0, period: 7.0, depth: 200.0, "
-                           "ramp: 2.0, heading: " + num(psi) + "}\n";
+  const double c = std::cos(psi * M_PI / 180.0);
+  const spatial_test::YawedSea sea = spatial_test::yawedSea(psi);
   // The two cores discretise the same ODE differently (angles vs directors): their rk4 results differ by
   // their truncation errors, O(h^4). At h = 2e-3 s and 1e-3 s the difference falls ~16x to below 1e-9 m.
   double worst[2] = {0.0, 0.0}, lean = 0.0;
   for (int r = 0; r < 2; ++r) {
     const std::vector<std::string> dt = {r == 0 ? "solver.dt=0.002" : "solver.dt=0.001"};
-    riser_sim::Run planar = buildRun(seaScene(sea2, dt));
-    SpatialRun run(seaScene(sea3, dt));
+    riser_sim::Run planar = buildRun(seaScene(sea.planar, dt));
+    SpatialRun run(seaScene(sea.spatial, dt));
     // The statics lean the line downstream in both (the 3D one in the current's plane).
     EXPECT_NEAR(run.initial().plane_direction.x(), c, 1e-15);
     EXPECT_LE(run.initial().max_acceleration, run.initial().acceleration_bound);
-    Kinematics kin2(planar.model->bodies());
-    const long steps = std::lround(4.0 / run.dt());
-    for (long k = 0; k <= steps; ++k) {
-      if (k > 0) {
-        ASSERT_TRUE(planar.sim->step());
-        ASSERT_TRUE(run.step()) << run.divergenceReason();
-      }
-      if (k % 100) continue;
-      planar.sim->kinematics(kin2);
-      const LineOutputs3& o = run.outputs();
-      for (int i = 0; i < planar.model->bodies(); ++i)
-        worst[r] = std::max(worst[r], (o.points[i] - planarPoint(kin2[i].A, R)).norm());
-      if (k == 0) lean = kin2.back().end().x();
-    }
+    worst[r] = spatial_test::planarVs3D(planar, run, R, 4.0, &lean);
   }
   EXPECT_LE(worst[1], 1e-9);
   EXPECT_GT(worst[0] / worst[1], 8.0);  // the difference is truncation (fourth order), not a modelling one
