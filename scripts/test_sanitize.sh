@@ -65,6 +65,10 @@ long+=":SpatialTorsion.Pendulum*:SpatialTorsion.LightLine*:SpatialTorsion.Energy
 long+=":SpatialTorsion.ImplicitSchemesStaySecondOrder:SpatialTorsion.Axial*:SpatialTorsion.Charts*"
 # The 3D ends' runs to rest through the CLI (40 s at 0.5 ms; 23 s each under ASan).
 long+=":CliSpatialEnds.FlexJointTopMomentBalancesTheWeight:CliSpatialEnds.PinnedBottomForceAndMoment"
+# Whole-scene runs through the CLI and long energy balances (11-15 s each under ASan); the per-step code they
+# run is covered by the short tests.
+long+=":CliSpatial.PlanarScenesThroughTheSpatialPath:CliSpatial.YawedSceneGivesTheRotatedResult"
+long+=":TermData.SimulatorsSharingAModelRunIndependently:HydroInternalFlow.EnergyBalanceHoldsWithConstantAndAcceleratingFlow"
 # The listed binaries are short: every test in them runs (their tests run nowhere else in make test).
 default_filter="-$long"
 [ -n "$tests" ] && default_filter="*"
