@@ -38,6 +38,13 @@ inline std::string tempPath(const std::string& name) {
   return testing::TempDir() + "/riser_sim_test_cli_" + std::to_string(getpid()) + "_" + name;
 }
 
+// Writes a scene to a temporary file; returns its path.
+inline std::string writeScene(const std::string& name, const std::string& text) {
+  const std::string path = tempPath(name + ".yaml");
+  std::ofstream(path) << text;
+  return path;
+}
+
 inline std::string readFile(const std::string& path) {
   std::ifstream in(path);
   std::stringstream ss;
