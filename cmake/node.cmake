@@ -6,12 +6,14 @@ add_library(riser_sim_ros
   src/node/tf_listener.cpp
   src/node/line_messages.cpp
   src/node/line_markers.cpp
+  src/node/sea_markers.cpp
   src/node/line_messages3.cpp
   src/node/line_run.cpp
   src/node/planar_line_run.cpp
   src/node/spatial_line_run.cpp
   src/node/timing_stats.cpp
   src/node/modes_service.cpp
+  src/node/modes_service3.cpp
   src/node/master_watch.cpp
   src/node/ros_clock.cpp
   src/node/line_topics.cpp
@@ -47,6 +49,9 @@ if(CATKIN_ENABLE_TESTING)
     catkin_add_gtest(test_node_helpers test/ros/test_node_helpers.cpp)
     target_link_libraries(test_node_helpers riser_sim_ros)
   endif()
+  # The 3D outputs through the node's LineRun (~state, markers, frames), no master either.
+  catkin_add_gtest(test_node_helpers3 test/ros/test_node_helpers3.cpp)
+  target_link_libraries(test_node_helpers3 riser_sim_ros)
   # rosrun finds the programs once and quietly (the workspace is not inside the package tree).
   catkin_add_gtest(test_rosrun test/ros/test_rosrun.cpp)
   add_dependencies(test_rosrun riser_sim_cli)

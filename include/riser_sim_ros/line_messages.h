@@ -27,8 +27,8 @@ class LineMessages {
   LineMessages(const riser_sim::Model& model, const std::string& fixed_frame, const std::string& tf_prefix);
   void fillTension(const riser_sim::LineOutputs& out, const ros::Time& stamp);
   void fillState(const riser_sim::LineOutputs& out, const ros::Time& stamp);
-  // Force the riser exerts on the vessel at the hang-off point, in fixed_frame; the torque is its
-  // moment about the fixed frame's origin (so that the wrench is complete in that frame).
+  // Force the riser exerts on the vessel at the hang-off point, in fixed_frame; the torque is the moment
+  // about the hang-off point (as in 3D): 0, the planar top is pinned.
   void fillWrench(const riser_sim::LineOutputs& out, const ros::Time& stamp);
   // <prefix>/rfe_<i>, i = 0..n (origin A_i, x along the rfe) and <prefix>/end (end point of rfe n).
   void fillTransforms(const riser_sim::LineOutputs& out, const ros::Time& stamp);
@@ -37,6 +37,9 @@ class LineMessages {
   riser_sim::LineState state;
   geometry_msgs::WrenchStamped wrench;
   std::vector<geometry_msgs::TransformStamped> transforms;
+
+ private:
+  double segment_;  // d = L/n: the joints' spacing, curvature = turn / d [m]
 };
 
 }  // namespace riser_sim_ros

@@ -12,6 +12,7 @@
 #include "riser_sim_ros/line_markers.h"
 #include "riser_sim_ros/line_messages3.h"
 #include "riser_sim_ros/line_run.h"
+#include "riser_sim_ros/sea_markers.h"
 
 namespace riser_sim_ros {
 
@@ -45,6 +46,7 @@ class SpatialLineRun : public LineRun {
   const visualization_msgs::MarkerArray& markers(const ros::Time& stamp) override;
 
  private:
+  riser_sim::Scene scene_;  // for ~modes
   Eigen::Vector3d top_;  // hang-off at the start [m]
   riser_sim::spatial::ExternalMotion3* motion_ = nullptr;  // owned by run_'s simulator
   std::shared_ptr<riser_sim::spatial::ExternalMotion3> bottom_motion_;  // shared with run_'s model
@@ -55,6 +57,8 @@ class SpatialLineRun : public LineRun {
   bool pinned_;
   LineMessages3 msgs_;
   LineMarkers markers_;
+  SeaMarkers3 sea_;  // its markers appended to markers_.msg
+  riser_sim::spatial::Kinematics3 kin_;  // of the last evaluate()
 };
 
 }  // namespace riser_sim_ros

@@ -32,7 +32,8 @@ geometry_msgs::Quaternion planeRotation(double phi) {
 }
 
 LineMessages::LineMessages(const riser_sim::Model& model, const std::string& fixed_frame,
-                           const std::string& tf_prefix) {
+                           const std::string& tf_prefix)
+    : segment_(model.segmentLength()) {
   const size_t nb = model.bodies();
   tension.header.frame_id = fixed_frame;
   tension.axial_force.resize(nb);
@@ -42,6 +43,8 @@ LineMessages::LineMessages(const riser_sim::Model& model, const std::string& fix
   state.angles.resize(nb);
   state.elongations.resize(nb);
   state.bending_moments.resize(nb - 1);
+  state.curvatures.resize(nb - 1);
+  state.bending_moment_vectors.resize(nb - 1);
   wrench.header.frame_id = fixed_frame;
   transforms.resize(nb + 1);
   const std::string prefix = tf_prefix.empty() ? "" : tf_prefix + "/";
@@ -70,19 +73,24 @@ void LineMessages::fillState(const riser_sim::LineOutputs& out, const ros::Time&
   std::copy(out.angles.begin(), out.angles.end(), state.angles.begin());
   std::copy(out.elongations.begin(), out.elongations.end(), state.elongations.begin());
   std::copy(out.bending_moment.begin(), out.bending_moment.end(), state.bending_moments.begin());
+  // In the x-z plane a turn from +x towards +z is about -y: the moment vector is (0, -M, 0).
+  for (size_t i = 1; i < out.angles.size(); ++i) {
+    state.curvatures[i - 1] = std::abs(out.angles[i] - out.angles[i - 1]) / segment_;
+    state.bending_moment_vectors[i - 1].x = 0.0;
+    state.bending_moment_vectors[i - 1].y = -out.bending_moment[i - 1];
+    state.bending_moment_vectors[i - 1].z = 0.0;
+  }
 }
 
 void LineMessages::fillWrench(const riser_sim::LineOutputs& out, const ros::Time& stamp) {
   wrench.header.stamp = stamp;
-  const Eigen::Vector3d f(out.top_force.x(), 0.0, out.top_force.y());
-  const Eigen::Vector3d r(out.points[0].x(), 0.0, out.points[0].y());
-  const Eigen::Vector3d m = r.cross(f);
-  wrench.wrench.force.x = f.x();
-  wrench.wrench.force.y = f.y();
-  wrench.wrench.force.z = f.z();
-  wrench.wrench.torque.x = m.x();
-  wrench.wrench.torque.y = m.y();
-  wrench.wrench.torque.z = m.z();
+  // The planar top is pinned (free rotation): the force acts at the hang-off, no moment about it.
+  wrench.wrench.force.x = out.top_force.x();
+  wrench.wrench.force.y = 0.0;
+  wrench.wrench.force.z = out.top_force.y();
+  wrench.wrench.torque.x = 0.0;
+  wrench.wrench.torque.y = 0.0;
+  wrench.wrench.torque.z = 0.0;
 }
 
 void LineMessages::fillTransforms(const riser_sim::LineOutputs& out, const ros::Time& stamp) {

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "riser_sim/spatial/forces/bending_spring.h"
+
 namespace riser_sim_ros {
 
 namespace {
@@ -28,6 +30,20 @@ Eigen::Quaterniond startFrame(const Eigen::Vector3d& e) {
   return Eigen::Quaterniond(R);
 }
 }  // namespace
+
+BendingJoint bendingJoint(const riser_sim::spatial::BodyKinematics3& a, const riser_sim::spatial::BodyKinematics3& b,
+                          double stiffness, double damping, double segment) {
+  using riser_sim::spatial::BendingSpring;
+  BendingJoint j;
+  const Eigen::Vector3d axis = a.e.cross(b.e);
+  const double s = axis.norm(), theta = BendingSpring::angle(a.e, b.e);
+  j.curvature = theta / segment;
+  // The spring's direction is a x b; none at theta = 0 (no moment) or folded (theta = pi: undefined, and
+  // the core's spring has no force there either).
+  if (s > 0.0 && theta < M_PI - BendingSpring::kFoldedTol) j.moment = (stiffness * theta / s) * axis;
+  j.moment += damping * (b.omega() - a.omega());
+  return j;
+}
 
 bool outputsFinite(const LineOutputs3& out) {
   for (const auto& p : out.points)
@@ -55,14 +71,19 @@ void LineFrames::update(const riser_sim::AlignedVector<Vec3>& points, int nb, st
 LineMessages3::LineMessages3(const riser_sim::spatial::SpatialModel& model, const std::string& fixed_frame,
                              const std::string& tf_prefix, bool body_frame, const std::string& vessel_frame,
                              bool bottom_body, const std::string& bottom_frame)
-    : body_frame_(body_frame), bottom_body_(bottom_body) {
+    : body_frame_(body_frame), bottom_body_(bottom_body), stiffness_(model.bendingStiffness()),
+      damping_(model.bendingDamping()), segment_(model.line().segmentLength()) {
   const size_t nb = model.bodies();
   tension.header.frame_id = fixed_frame;
   tension.axial_force.resize(nb);
   tension.arc_length.resize(nb);
   for (size_t i = 0; i < nb; ++i) tension.arc_length[i] = model.rfe(i).s_begin + 0.5 * model.rfe(i).length;
   state.header.frame_id = fixed_frame;
-  state.points.resize(nb + 1);  // angles, elongations, bending moments: planar only (empty)
+  state.points.resize(nb + 1);  // angles: planar only (empty)
+  state.elongations.resize(nb);
+  state.bending_moments.resize(nb - 1);
+  state.curvatures.resize(nb - 1);
+  state.bending_moment_vectors.resize(nb - 1);
   top_wrench.header.frame_id = body_frame ? vessel_frame : fixed_frame;
   bottom_wrench.header.frame_id = bottom_body ? bottom_frame : fixed_frame;
   transforms.resize(nb + 1);
@@ -82,12 +103,20 @@ void LineMessages3::fillTension(const LineOutputs3& out, const ros::Time& stamp)
   tension.max = out.max_tension;
 }
 
-void LineMessages3::fillState(const LineOutputs3& out, const ros::Time& stamp) {
+void LineMessages3::fillState(const LineOutputs3& out, const riser_sim::spatial::Kinematics3& kin,
+                              const ros::Time& stamp) {
   state.header.stamp = stamp;
   for (size_t i = 0; i < out.points.size(); ++i) {
     state.points[i].x = out.points[i].x();
     state.points[i].y = out.points[i].y();
     state.points[i].z = out.points[i].z();
+  }
+  for (size_t i = 0; i < state.elongations.size(); ++i) state.elongations[i] = kin[i].delta;
+  for (size_t i = 1; i < state.elongations.size(); ++i) {
+    const BendingJoint j = bendingJoint(kin[i - 1], kin[i], stiffness_, damping_, segment_);
+    state.curvatures[i - 1] = j.curvature;
+    state.bending_moments[i - 1] = j.moment.norm();
+    set(state.bending_moment_vectors[i - 1], j.moment);
   }
 }
 
@@ -105,9 +134,32 @@ void LineMessages3::fillBottomWrench(const LineOutputs3& out, const Eigen::Quate
   set(bottom_wrench.wrench.torque, to_frame * out.bottom_moment);
 }
 
+Eigen::Quaterniond materialFrame(const Eigen::Vector3d& e, const Eigen::Vector3d& centre, const Eigen::Vector3d& ref,
+                                 double theta) {
+  const Eigen::Vector3d x = e.normalized();
+  Eigen::Vector3d u = riser_sim::spatial::minimalRotation(centre, x, ref);
+  u = (u - u.dot(x) * x).normalized();  // round-off off the normal plane
+  const Eigen::Vector3d y = std::cos(theta) * u + std::sin(theta) * x.cross(u);
+  Eigen::Matrix3d R;
+  R << x, y, x.cross(y);
+  return Eigen::Quaterniond(R).normalized();
+}
+
 void LineMessages3::fillTransforms(const LineOutputs3& out, const ros::Time& stamp) {
+  frames_.update(out.points, static_cast<int>(rotations_.size()), rotations_);
+  fillFrames(out, stamp);
+}
+
+void LineMessages3::fillTransforms(const LineOutputs3& out, const riser_sim::spatial::Kinematics3& kin,
+                                   const double* theta, const riser_sim::spatial::TwistFrames& frames,
+                                   const ros::Time& stamp) {
+  for (size_t i = 0; i < rotations_.size(); ++i)
+    rotations_[i] = materialFrame(kin[i].e, frames.centre[i], frames.ref[i], i == 0 ? 0.0 : theta[i]);
+  fillFrames(out, stamp);
+}
+
+void LineMessages3::fillFrames(const LineOutputs3& out, const ros::Time& stamp) {
   const int nb = static_cast<int>(rotations_.size());
-  frames_.update(out.points, nb, rotations_);
   for (int i = 0; i <= nb; ++i) {
     geometry_msgs::TransformStamped& t = transforms[i];
     t.header.stamp = stamp;

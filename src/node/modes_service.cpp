@@ -55,6 +55,7 @@ void computeModesResponse(const riser_sim::Scene& scene, const riser_sim::Kinema
     for (const riser_sim::Vec2& d : m.displacement) {
       res.shape_x.push_back(d.x());
       res.shape_z.push_back(d.y());
+      res.shape_y.push_back(0.0);
     }
   }
   for (const auto* v : {&res.periods, &res.frequencies, &res.axial_share, &res.shape_x, &res.shape_z})
@@ -62,7 +63,7 @@ void computeModesResponse(const riser_sim::Scene& scene, const riser_sim::Kinema
       if (!std::isfinite(x)) {
         res.message = "modal analysis gave non-finite values (ill-conditioned state?)";
         res.periods.clear(), res.frequencies.clear(), res.characters.clear(), res.axial_share.clear();
-        res.shape_x.clear(), res.shape_z.clear();
+        res.shape_x.clear(), res.shape_z.clear(), res.shape_y.clear();
         return;
       }
   char buf[320];
@@ -99,6 +100,16 @@ void ModesServer::setState(const riser_sim::Scene& scene, const riser_sim::Kinem
   state_ = std::move(state);
 }
 
+void ModesServer::setState3(const riser_sim::Scene& scene, const riser_sim::spatial::InitialState3& initial,
+                            const ros::Time& stamp) {
+  auto state = std::make_shared<StaticState>();
+  state->scene = scene;
+  state->initial3 = std::make_shared<riser_sim::spatial::InitialState3>(initial);
+  state->stamp = stamp;
+  std::lock_guard<std::mutex> lock(mutex_);
+  state_ = std::move(state);
+}
+
 void ModesServer::setFailure(const std::string& why) {
   std::lock_guard<std::mutex> lock(mutex_);
   if (!state_) failure_ = why;
@@ -117,7 +128,8 @@ bool ModesServer::onModes(riser_sim::Modes::Request& req, riser_sim::Modes::Resp
     }
   }
   const auto t0 = std::chrono::steady_clock::now();
-  computeModesResponse(state->scene, state->kin, state->end_force, req.count, res);
+  if (state->initial3) computeModesResponse3(state->scene, *state->initial3, req.count, res);
+  else computeModesResponse(state->scene, state->kin, state->end_force, req.count, res);
   res.header.stamp = state->stamp;
   res.header.frame_id = frame_;
   ROS_INFO("%s: ~modes (count %d): %s (%.1f ms)", name_.c_str(), req.count, res.message.c_str(),

@@ -1,5 +1,7 @@
 #include "riser_sim_ros/spatial_line_run.h"
 
+#include <cmath>
+
 #include "riser_sim_ros/modes_service.h"
 #include "riser_sim_ros/node_diagnostics.h"
 
@@ -30,12 +32,14 @@ std::unique_ptr<SpatialRun> build(riser_sim::Scene scene, const Eigen::Vector3d&
 
 SpatialLineRun::SpatialLineRun(const riser_sim::Scene& scene, const VesselSample& s, double t,
                                const NodeParams& params, const VesselSample* bottom, double t_bottom)
-    : top_(s.hangoff), run_(build(scene, s.hangoff, t, params, motion_, bottom_motion_, bottom, t_bottom)),
+    : scene_(scene), top_(s.hangoff), run_(build(scene, s.hangoff, t, params, motion_, bottom_motion_, bottom, t_bottom)),
       vessel_(s.orientation), rov_(bottom ? bottom->orientation : Eigen::Quaterniond::Identity()),
       pinned_(scene.bottom == riser_sim::BottomBoundary::kPinned),
       msgs_(run_->model(), params.fixed_frame, params.tf_prefix, params.wrench_frame == "body", params.vessel_frame,
             bottom && params.wrench_frame == "body", params.bottom_frame),
-      markers_(run_->model().line(), params.fixed_frame, params.markers, surfacesOf(scene)) {}
+      markers_(run_->model().line(), params.fixed_frame, params.markers, surfacesOf3(scene)),
+      sea_(scene, params.fixed_frame, markers_.msg),
+      kin_(run_->model().bodies()) {}
 
 void SpatialLineRun::restartMotion(double t, const VesselSample& s) {
   motion_->reset(t, s.hangoff);
@@ -77,8 +81,16 @@ std::string SpatialLineRun::startMessage() {
          num(o.top_tension, "%.1f") + " N; running";
 }
 
-void SpatialLineRun::shareStatics(ModesServer& modes, const ros::Time&) {
-  modes.setFailure("~modes is planar only; for space: spatial use riser_sim_cli --modes");
+void SpatialLineRun::shareStatics(ModesServer& modes, const ros::Time& stamp) {
+  // The modes hold the top at the hang-off and a driven bottom where it started.
+  riser_sim::Scene s = scene_;
+  s.top.type = riser_sim::MotionKind::kFixed;
+  s.top.position3 = top_;
+  if (bottom_motion_) {
+    s.bottom_motion.type = riser_sim::MotionKind::kFixed;
+    s.bottom_point3 = run_->initial().kin.back().end();
+  }
+  modes.setState3(s, run_->initial(), stamp);
 }
 
 RunHealth SpatialLineRun::health() {
@@ -96,6 +108,9 @@ RunHealth SpatialLineRun::health() {
 
 bool SpatialLineRun::evaluate() {
   out_ = &run_->outputs();
+  run_->simulator().kinematics(kin_);  // sized once: fills in place
+  for (const auto& b : kin_)
+    if (!b.A.allFinite() || !b.e.allFinite() || !b.e_dot.allFinite() || !std::isfinite(b.delta)) return false;
   return outputsFinite(*out_);
 }
 
@@ -105,7 +120,7 @@ const riser_sim::Tension& SpatialLineRun::tension(const ros::Time& stamp) {
 }
 
 const riser_sim::LineState& SpatialLineRun::state(const ros::Time& stamp) {
-  msgs_.fillState(*out_, stamp);
+  msgs_.fillState(*out_, kin_, stamp);
   return msgs_.state;
 }
 
@@ -121,12 +136,18 @@ const geometry_msgs::WrenchStamped* SpatialLineRun::bottomWrench(const ros::Time
 }
 
 const std::vector<geometry_msgs::TransformStamped>& SpatialLineRun::transforms(const ros::Time& stamp) {
-  msgs_.fillTransforms(*out_, stamp);
+  const riser_sim::spatial::SpatialSimulator& sim = run_->simulator();
+  if (run_->model().hasTorsion())  // θ_i follow q in the state (simulator.h)
+    msgs_.fillTransforms(*out_, kin_, sim.state().data() + run_->model().dofs(), sim.lastEvaluation().twist.frames,
+                         stamp);
+  else
+    msgs_.fillTransforms(*out_, stamp);
   return msgs_.transforms;
 }
 
 const visualization_msgs::MarkerArray& SpatialLineRun::markers(const ros::Time& stamp) {
   markers_.fill(*out_, stamp);
+  sea_.fill(*out_, markers_.msg);
   return markers_.msg;
 }
 
