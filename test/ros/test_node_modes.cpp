@@ -1,6 +1,13 @@
 // ~modes against the core's modal analysis of the same scene (an independent call in this process:
 // its own statics and model) and against the pendulum's omega = sqrt(g / L).
+#include <unistd.h>
+
 #include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include <Eigen/Core>
 
 #include "node_test_util.h"
 #include "riser_sim/run_builder.h"
@@ -111,6 +118,106 @@ TEST(NodeModes, MatchesTheCoreAndThePendulum) {
   ASSERT_TRUE(two.response.success) << two.response.message;
   ASSERT_EQ(two.response.periods.size(), 2u);
   EXPECT_DOUBLE_EQ(two.response.periods[1], r.periods[1]);
+}
+
+// One row of riser_sim_cli --modes-csv: mode k's period, character and point p's position and shape.
+struct CliRow {
+  int mode, point;
+  double period;
+  std::string character;
+  double s, x[3], d[3];
+};
+
+std::vector<CliRow> runCliModes(const std::string& scene_file, const Eigen::Vector3d& top, int count) {
+  const std::string csv = "/tmp/node_modes_3d_" + std::to_string(getpid()) + ".csv";
+  char pos[128];
+  std::snprintf(pos, sizeof(pos), "[%.17g,%.17g,%.17g]", top.x(), top.y(), top.z());
+  const std::string cmd = std::string(RISER_SIM_CLI_BIN) + " --scene " + scene_file +
+                          " --set top.motion.type=fixed --set top.position=" + pos + " --modes " +
+                          std::to_string(count) + " --modes-csv " + csv + " --quiet > /dev/null";
+  std::vector<CliRow> rows;
+  if (std::system(cmd.c_str()) != 0) {
+    ADD_FAILURE() << "failed: " << cmd;
+    return rows;
+  }
+  std::ifstream in(csv);
+  std::string line;
+  std::getline(in, line);  // mode,period_s,frequency_hz,character,point,s,x,y,z,dx,dy,dz
+  while (std::getline(in, line)) {
+    std::stringstream ss(line);
+    std::string f[12];
+    for (auto& x : f) std::getline(ss, x, ',');
+    CliRow r;
+    r.mode = std::stoi(f[0]), r.period = std::stod(f[1]), r.character = f[3], r.point = std::stoi(f[4]);
+    r.s = std::stod(f[5]);
+    for (int k = 0; k < 3; ++k) r.x[k] = std::stod(f[6 + k]), r.d[k] = std::stod(f[9 + k]);
+    rows.push_back(r);
+  }
+  std::remove(csv.c_str());
+  return rows;
+}
+
+// 3D: the tether (pinned bottom, a slack catenary) from a hang-off off the x-z plane; the node's ~modes and
+// riser_sim_cli --modes make the same statics, relaxation and eigen-solve: equal to round-off.
+TEST(NodeModes, SpatialMatchesTheCli) {
+  ros::NodeHandle nh, pnh("~");
+  std::string scene_file;
+  ASSERT_TRUE(pnh.getParam("scene_file_3d", scene_file));
+  const Eigen::Vector3d top(6.0, 4.0, 0.0);  // chord to the anchor (0, 0, -15): 16.6 m < 20 m
+  ros::ServiceClient modes = nh.serviceClient<riser_sim::Modes>("/spatial/riser_sim/modes");
+  ASSERT_TRUE(modes.waitForExistence(ros::Duration(20.0)));
+  PosePublisher pose(nh, "/spatial/vessel/pose", 20.0, [&](double, geometry_msgs::Pose& p) {
+    p.position.x = top.x(), p.position.y = top.y(), p.position.z = top.z();
+  });
+  Recorder<riser_sim::Tension> tension(nh, "/spatial/riser_sim/tension");
+  ASSERT_TRUE(waitFor([&] { return pose.subscribers() > 0; }, 20.0));
+  pose.start();
+  ASSERT_TRUE(tension.waitCount(1, 20.0));
+
+  const riser_sim::Modes bad = call(modes, 0);
+  EXPECT_FALSE(bad.response.success);
+  EXPECT_NE(bad.response.message.find("count: must be >= 1, got 0"), std::string::npos) << bad.response.message;
+
+  const int K = 6;
+  const riser_sim::Modes got = call(modes, K);
+  ASSERT_TRUE(got.response.success) << got.response.message;
+  const auto& r = got.response;
+  const std::vector<CliRow> cli = runCliModes(scene_file, top, K);
+  const size_t np = r.points.size();
+  ASSERT_EQ(np, 12u);  // n = 10: A_0..A_10 and the end
+  ASSERT_EQ(cli.size(), K * np);
+  ASSERT_EQ(r.periods.size(), size_t(K));
+  ASSERT_EQ(r.shape_y.size(), K * np);
+  EXPECT_LT(r.equilibrium_residual, 1e-8);
+  int in_plane = 0, out_of_plane = 0;
+  for (int k = 0; k < K; ++k) {
+    const CliRow& c0 = cli[k * np];
+    EXPECT_NEAR(r.periods[k] / c0.period, 1.0, 1e-9) << "mode " << k + 1;  // the CSV's 10 digits
+    EXPECT_EQ(r.characters[k], c0.character) << "mode " << k + 1;
+    in_plane += r.characters[k] == "in-plane", out_of_plane += r.characters[k] == "out-of-plane";
+    // The eigenvector's sign is arbitrary: compare up to one sign per mode.
+    double dot = 0.0;
+    for (size_t p = 0; p < np; ++p)
+      dot += r.shape_x[k * np + p] * cli[k * np + p].d[0] + r.shape_y[k * np + p] * cli[k * np + p].d[1] +
+             r.shape_z[k * np + p] * cli[k * np + p].d[2];
+    const double sign = dot < 0.0 ? -1.0 : 1.0;
+    for (size_t p = 0; p < np; ++p) {
+      const CliRow& c = cli[k * np + p];
+      EXPECT_NEAR(r.shape_x[k * np + p], sign * c.d[0], 1e-6) << k << " " << p;
+      EXPECT_NEAR(r.shape_y[k * np + p], sign * c.d[1], 1e-6) << k << " " << p;
+      EXPECT_NEAR(r.shape_z[k * np + p], sign * c.d[2], 1e-6) << k << " " << p;
+      if (k == 0) {  // the CSV has 10 significant digits: half of the last is 5e-10 relative
+        EXPECT_NEAR(r.points[p].x, c.x[0], 1e-9 * (1.0 + std::abs(c.x[0])));
+        EXPECT_NEAR(r.points[p].y, c.x[1], 1e-9 * (1.0 + std::abs(c.x[1])));
+        EXPECT_NEAR(r.points[p].z, c.x[2], 1e-9 * (1.0 + std::abs(c.x[2])));
+        EXPECT_NEAR(r.arc_length[p], c.s, 1e-9 * (1.0 + c.s));
+      }
+    }
+  }
+  EXPECT_GT(in_plane, 0);
+  EXPECT_GT(out_of_plane, 0);  // the plane is yawed (6, 4): both kinds there, named in its frame
+  std::printf("3D modes: first period node %.9g s, CLI %.9g s; %d in-plane, %d out-of-plane of %d\n", r.periods[0],
+              cli[0].period, in_plane, out_of_plane, K);
 }
 
 }  // namespace
