@@ -130,6 +130,21 @@ TEST(NodeSpatial, YawedVesselAtRestGivesTheRotatedStatics) {
   EXPECT_LT(shape, 1e-6);  // [m] (measured ~1e-13 m)
   EXPECT_NEAR(s0.points.front().x, 8.0, 1e-6);
   EXPECT_NEAR(s1.points.front().y, 8.0 * std::sin(yaw), 1e-6);
+  // ~state's bending in 3D: per joint (n = 10), the moment vector turns with the problem; at rest the
+  // moment is EI κ (EI = 100 N m²; the damper's share is its rate, ~0 at rest: 1e-3 N m of ~10 N m).
+  ASSERT_EQ(s0.curvatures.size(), 10u);
+  ASSERT_EQ(s1.bending_moment_vectors.size(), 10u);
+  ASSERT_EQ(s1.bending_moments.size(), 10u);
+  double turned = 0.0, biggest = 0.0;
+  for (size_t j = 0; j < 10; ++j) {
+    turned = std::max(turned, (vec(s1.bending_moment_vectors[j]) - R * vec(s0.bending_moment_vectors[j])).norm());
+    biggest = std::max(biggest, s1.bending_moments[j]);
+    EXPECT_NEAR(s1.bending_moments[j], 100.0 * s1.curvatures[j], 1e-3) << "joint " << j + 1;
+    EXPECT_NEAR(s1.bending_moments[j], vec(s1.bending_moment_vectors[j]).norm(), 1e-12);
+  }
+  std::printf("[ INFO ] bending: largest %.3f N m; yawed minus rotated flat moment vectors %.2e N m\n", biggest, turned);
+  EXPECT_GT(biggest, 1.0);
+  EXPECT_LT(turned, 1e-3);
 }
 
 }  // namespace
