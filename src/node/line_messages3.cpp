@@ -153,8 +153,14 @@ void LineMessages3::fillTransforms(const LineOutputs3& out, const ros::Time& sta
 void LineMessages3::fillTransforms(const LineOutputs3& out, const riser_sim::spatial::Kinematics3& kin,
                                    const double* theta, const riser_sim::spatial::TwistFrames& frames,
                                    const ros::Time& stamp) {
-  for (size_t i = 0; i < rotations_.size(); ++i)
+  bool finite = true;
+  for (size_t i = 0; i < rotations_.size(); ++i) {
     rotations_[i] = materialFrame(kin[i].e, frames.centre[i], frames.ref[i], i == 0 ? 0.0 : theta[i]);
+    finite = finite && rotations_[i].coeffs().allFinite();
+  }
+  // A chart at its singularity (the top rfe turned 180 deg from the hang-off's axis): the minimal-rotation
+  // frames rather than NaN.
+  if (!finite) frames_.update(out.points, static_cast<int>(rotations_.size()), rotations_);
   fillFrames(out, stamp);
 }
 
