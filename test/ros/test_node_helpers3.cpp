@@ -9,6 +9,7 @@
 #include "riser_sim/water.h"
 #include "riser_sim_ros/line_messages3.h"
 #include "riser_sim_ros/line_run.h"
+#include "riser_sim_ros/modes_service.h"
 
 namespace riser_sim_ros {
 namespace {
@@ -239,6 +240,41 @@ solver: {dt: 0.001}
     largest = std::max(largest, std::abs(d.twist.m[k]));
   }
   EXPECT_GT(largest, 0.01);  // still twisted: a real comparison
+}
+
+// 3D ~modes refuses what the 3D modal analysis has not (torsion) and bad counts, naming the field; a
+// hanging line's lowest transverse modes come in degenerate pairs turned into and across the statics' plane.
+TEST(SpatialModes, RefusalsNameTheFieldAndPairsSplitByPlane) {
+  riser_sim::Scene s = scene(R"(
+name: hang
+space: spatial
+line: {length: 20.0, elements: 6, mass_per_length: 5.0, EI: 100.0, end_mass: 50.0, axial_flexibility: false}
+top: {position: [0.0, 0.0, 0.0]}
+solver: {dt: 0.001}
+)");
+  const riser_sim::spatial::SpatialRun run(s);
+  riser_sim::Modes::Response r;
+  computeModesResponse3(s, run.initial(), 0, r);
+  EXPECT_FALSE(r.success);
+  EXPECT_EQ(r.message, "count: must be >= 1, got 0");
+  r = riser_sim::Modes::Response();
+  computeModesResponse3(s, run.initial(), 1000, r);
+  EXPECT_FALSE(r.success);
+  EXPECT_EQ(r.message.rfind("count: must be <= ", 0), 0u) << r.message;
+  r = riser_sim::Modes::Response();
+  computeModesResponse3(s, run.initial(), 4, r);
+  ASSERT_TRUE(r.success) << r.message;
+  ASSERT_EQ(r.characters.size(), 4u);
+  EXPECT_NEAR(r.periods[0], r.periods[1], 1e-6 * r.periods[0]);  // a pair across the vertical
+  EXPECT_NE(r.characters[0], r.characters[1]);                   // one in the plane, one across it
+  for (size_t k = 0; k < 4; ++k) EXPECT_NE(r.characters[k], "axial");  // inextensible
+  riser_sim::Scene t = s;
+  t.torsion.enabled = true;
+  r = riser_sim::Modes::Response();
+  computeModesResponse3(t, run.initial(), 2, r);
+  EXPECT_FALSE(r.success);
+  EXPECT_EQ(r.message.rfind("line.torsion: ", 0), 0u) << r.message;
+  EXPECT_TRUE(r.periods.empty());
 }
 
 }  // namespace
