@@ -242,6 +242,39 @@ solver: {dt: 0.001}
   EXPECT_GT(largest, 0.01);  // still twisted: a real comparison
 }
 
+// The node's path (LineRun) with torsion on: the vessel swings the hang-off sideways; every frame is
+// finite, unit, its x axis along its element, its y across it.
+TEST(TwistFrames, TheNodesRunPublishesMaterialFrames) {
+  riser_sim::Scene s = scene(R"(
+name: twist_run
+space: spatial
+line: {length: 20.0, elements: 10, mass_per_length: 5.0, EI: 100.0, end_mass: 50.0, axial_flexibility: false,
+       torsion: {stiffness: 200.0, polar_inertia: 0.5}}
+top: {position: [0.0, 0.0, 0.0], motion: {type: external}}
+solver: {dt: 0.001}
+)");
+  std::unique_ptr<LineRun> run = startAt(s, Vec3::Zero());
+  VesselSample v;
+  for (int k = 1; k <= 300; ++k) {
+    v.hangoff = Vec3(0.5 * std::sin(0.01 * k), 0.5 * (1.0 - std::cos(0.01 * k)), 0.0);
+    ASSERT_TRUE(run->addSample(0.001 * k, v)) << k;
+    ASSERT_TRUE(run->step());
+  }
+  ASSERT_TRUE(run->evaluate());
+  const riser_sim::LineState st = run->state(ros::Time(1));
+  const auto& tf = run->transforms(ros::Time(1));
+  ASSERT_EQ(tf.size(), st.points.size());
+  for (size_t i = 0; i + 1 < tf.size(); ++i) {
+    const auto& q = tf[i].transform.rotation;
+    const Eigen::Quaterniond r(q.w, q.x, q.y, q.z);
+    ASSERT_TRUE(r.coeffs().allFinite()) << i;
+    EXPECT_NEAR(r.norm(), 1.0, 1e-12);
+    const Vec3 e = Vec3(st.points[i + 1].x - st.points[i].x, st.points[i + 1].y - st.points[i].y,
+                        st.points[i + 1].z - st.points[i].z).normalized();
+    EXPECT_LT((r * Vec3::UnitX() - e).norm(), 1e-6) << i;  // the joints' gaps: ~1e-9 m of 2 m elements
+  }
+}
+
 // 3D ~modes refuses what the 3D modal analysis has not (torsion) and bad counts, naming the field; a
 // hanging line's lowest transverse modes come in degenerate pairs turned into and across the statics' plane.
 TEST(SpatialModes, RefusalsNameTheFieldAndPairsSplitByPlane) {
