@@ -107,7 +107,7 @@ double addTwistForces(const SpatialModel& model, const Kinematics3& kin, const d
   const int nb = model.bodies(), nj = nb - 1;
   const double k = twistStiffness(model), c = twistDamping(model);
   twistAngles(kin, theta, d.frames, d.m.data(), d.kb.data());
-  const bool held = !model.torsion().free_top;
+  const bool held = firstSpin(model) > 0;
   const double w0 = held ? topSpinRate(kin, d.frames) : omega[0];
   double power = 0.0;
   for (int j = 0; j < nj; ++j) {
