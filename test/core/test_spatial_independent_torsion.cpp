@@ -14,8 +14,14 @@ namespace {
 using namespace spatial;
 using spatial_test::LineSpec;
 
-TorsionProperties twistProps(double damping) {
+// The top's hold on the spin: the hang-off's (held), none (free), a torsion spring k_t = 500 N m/rad.
+enum class Top { kHeld, kFree, kSpring };
+const char* name(Top t) { return t == Top::kHeld ? "held" : t == Top::kFree ? "free" : "spring"; }
+
+TorsionProperties twistProps(double damping, Top top = Top::kHeld) {
   TorsionProperties p;
+  p.free_top = top == Top::kFree;
+  p.top_stiffness = top == Top::kSpring ? 500.0 : 0.0;
   p.stiffness = 1e3;
   p.polar_inertia = 0.05;
   p.damping = damping;
@@ -30,15 +36,16 @@ std::vector<Vec3> bentDirections(int nb) {
 }
 
 // Only the twist acts (no gravity, no bending, inextensible): at rest M_θ θ'' = Q_θ = -∂V/∂θ. Charts moved
-// off their centres (u = 0.3 rad-ish, the twist charts too), random spins.
+// off their centres (u = 0.3 rad-ish, the twist charts too), random spins; held, free and spring-held top.
 TEST(SpatialIndependentTorsion, ForcesAreTheGradientOfTheTwistEnergy) {
+  for (Top kind : {Top::kHeld, Top::kFree, Top::kSpring}) {
   LineSpec s;
   s.segments = 6;
   s.props.mass_per_length = 10.0;
   s.options.bending = false;
   s.options.axial_flexibility = false;
   auto m = spatial_test::spatialModel(s, Vec3::Zero());
-  m->setTorsion(twistProps(0.0));
+  m->setTorsion(twistProps(0.0, kind));
   IndependentFormulation3 f(*m);
   auto d = f.makeData();
   SphereCharts charts;
@@ -47,7 +54,7 @@ TEST(SpatialIndependentTorsion, ForcesAreTheGradientOfTheTwistEnergy) {
   f.packState(rigidChain(m->line(), Vec3::Zero(), bentDirections(m->bodies()), Vec3::Zero(), Vec3::Zero()), charts, y);
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
-  for (int c = 0; c < p; ++c) y[c] = (c < f.spinIndex(1) ? 0.3 : 0.8) * u(rng);
+  for (int c = 0; c < p; ++c) y[c] = (c < f.spinIndex(f.firstSpin()) ? 0.3 : 0.8) * u(rng);
   const PointMotion3 top;
   Kinematics3 kin(m->bodies());
   auto V = [&](const VecX& yy) {
@@ -65,10 +72,11 @@ TEST(SpatialIndependentTorsion, ForcesAreTheGradientOfTheTwistEnergy) {
     worst = std::max(worst, std::abs(-(V(a) - V(b)) / (2 * eps) - Q[c]));
   }
   const double scale = Q.cwiseAbs().maxCoeff();
-  std::printf("[independent torsion] Q_θ vs -dV/dθ (u and φ, charts off centre): %.2e of %.3g N m\n", worst / scale,
-              scale);
+  std::printf("[independent torsion] %s top: Q_θ vs -dV/dθ (u and φ, charts off centre): %.2e of %.3g N m\n",
+              name(kind), worst / scale, scale);
   EXPECT_GT(scale, 10.0);
   EXPECT_LT(worst / scale, 1e-7);  // central differences at 1e-6: truncation ~1e-12, round-off ~1e-10 V/eps
+  }
 }
 
 // The flexible line of test_spatial_torsion's swing: bent, twisted (θ_i = 0.1 i), spinning (3 sin(1 + i)
@@ -84,12 +92,12 @@ std::unique_ptr<TopMotion3> swingTop() {
   return std::make_unique<PlanarMotion3>(spatial_test::topSway(Vec2(0.5, 0.3), 1.0), spatial_test::yawTilt(0.3, 0.5));
 }
 
-Pair pair(IntegratorKind kind = IntegratorKind::kRk4) {
+Pair pair(Top top, IntegratorKind kind = IntegratorKind::kRk4) {
   LineSpec s = spatial_test::flexibleLine();
   s.segments = 8;
   Pair r;
   r.model = spatial_test::spatialModel(s, Vec3(0, 0, -s.g));
-  r.model->setTorsion(twistProps(2.0));
+  r.model->setTorsion(twistProps(2.0, top));
   const int nb = r.model->bodies();
   r.nat = std::make_unique<SpatialSimulator>(r.model, swingTop(), kind);
   r.ind = std::make_unique<IndependentSimulator3>(r.model, swingTop(), kind);
@@ -116,8 +124,8 @@ struct Agreement {
   long switches = 0;
 };
 
-Agreement compare(double h, double duration) {
-  Pair r = pair();
+Agreement compare(double h, double duration, Top top = Top::kHeld) {
+  Pair r = pair(top);
   const SpatialModel& m = *r.model;
   const int nb = m.bodies(), vo = r.nat->formulation().positionSize();
   AlignedVector<Vec3> pn(nb + 1), pi(nb + 1);
@@ -138,9 +146,10 @@ Agreement compare(double h, double duration) {
     const TwistFrames& fn = r.nat->lastEvaluation().twist.frames;
     const VecX& yn = r.nat->state();
     const IndependentFormulation3& fi = r.ind->formulation();
-    for (int i = 1; i < nb; ++i) {
+    for (int i = 0; i < nb; ++i) {  // rfe 0 too: held, its frame is the hang-off's transported
       const Vec3 dn = materialDirector(fn, i, kn[i].e.normalized(), yn[m.dofs() + i]);
       a.frame = std::max(a.frame, (dn - fi.materialDirector(r.ind->state(), r.ind->charts(), ki, i)).norm());
+      if (i < fi.firstSpin()) continue;  // a held rfe 0's rate is no state of the natural formulation
       a.spin = std::max(a.spin, std::abs(yn[vo + m.dofs() + i] - fi.spinRate(r.ind->state(), r.ind->charts(), ki, i)));
     }
     const Reactions3 rn = r.nat->evaluate().reactions, ri = r.ind->evaluate().reactions;
@@ -170,6 +179,23 @@ TEST(SpatialIndependentTorsion, AgreesWithNaturalFormulation) {
   EXPECT_LT(a.energy, 1e-9);
   EXPECT_LT(a.balance, 1e-9);
   EXPECT_GT(a.switches, 0);
+}
+
+// A free and a spring-held top (rfe 0 spins): the same comparison over 1 s, the same bounds.
+TEST(SpatialIndependentTorsion, FreeAndSpringTopsAgreeWithNaturalFormulation) {
+  for (Top top : {Top::kFree, Top::kSpring}) {
+    const Agreement a = compare(1e-4, 1.0, top);
+    std::printf("[independent vs natural, torsion, %s top] |dx| %.2e m, frames %.2e, spin rates %.2e rad/s, top force "
+                "%.2e of the weight, top twist %.2e N m, E/W %.2e of m g L, independent E - E0 - W %.2e\n",
+                name(top), a.dx, a.frame, a.spin, a.force, a.twist, a.energy, a.balance);
+    EXPECT_LT(a.dx, 1e-9);
+    EXPECT_LT(a.frame, 1e-9);
+    EXPECT_LT(a.spin, 1e-7);
+    EXPECT_LT(a.force, 1e-6);
+    EXPECT_LT(a.twist, 1e-6);
+    EXPECT_LT(a.energy, 1e-9);
+    EXPECT_LT(a.balance, 1e-9);
+  }
 }
 
 // Truncation: halving h shrinks the difference ~16x (rk4); > 8 asserts order > 3.
