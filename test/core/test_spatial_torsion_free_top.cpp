@@ -7,6 +7,7 @@
 
 #include <cmath>
 
+#include "alloc_counter.h"
 #include "riser_sim/spatial/independent_formulation.h"
 #include "spatial_test_util.h"
 
@@ -175,33 +176,41 @@ TEST(SpatialTorsionFreeTop, ForcesAreTheGradientOfTheTwistEnergy) {
 // Implicit schemes with a spinning top rfe: the structured solve keeps rfe 0's spin row as held (x = b), an
 // approximate Jacobian. Newton still converges to the step (its tolerance), so the balance E - E0 - W stays
 // second order: the bent, twisted, spinning flexible line under a swaying top, free and spring-held, 1 s.
+std::unique_ptr<SpatialSimulator> spinningTop(bool spring, IntegratorKind kind, double* scale) {
+  spatial_test::LineSpec s = spatial_test::flexibleLine();
+  auto m = spatial_test::spatialModel(s, Vec3(0, 0, -s.g));
+  TorsionProperties t;
+  t.stiffness = 1e3;
+  t.polar_inertia = 0.05;
+  t.damping = 2.0;
+  t.end_polar_inertia = 0.5;
+  t.free_top = !spring;
+  t.top_stiffness = spring ? 500.0 : 0.0;
+  m->setTorsion(t);
+  const int nb = m->bodies();
+  IntegratorOptions io;
+  io.jacobian = JacobianKind::kStructured;
+  auto sim = std::make_unique<SpatialSimulator>(
+      m, std::make_unique<PlanarMotion3>(spatial_test::topSway(Vec2(0.5, 0.3), 1.0)), kind, io);
+  std::vector<Vec3> dirs;
+  for (int i = 0; i < nb; ++i) dirs.push_back(Vec3(0.3 + 0.1 * i, 0.2 - 0.05 * i, -1.0));
+  sim->reset(rigidChain(m->line(), Vec3::Zero(), dirs, Vec3::Zero(), Vec3(0.2, -0.3, 0.5)), 0.0);
+  VecX theta(nb), omega(nb);
+  for (int i = 0; i < nb; ++i) theta[i] = 0.1 * i, omega[i] = 3.0 * std::sin(1.0 + i);
+  sim->setTwist(theta, omega);
+  *scale = (s.props.mass_per_length * s.length + s.end_mass) * s.g * s.length;
+  return sim;
+}
+
 TEST(SpatialTorsionFreeTop, ImplicitSchemesConvergeWithASpinningTop) {
   for (bool spring : {false, true}) {
     double errs[2];
     int j = 0;
     for (double h : {2e-3, 1e-3}) {
-      spatial_test::LineSpec s = spatial_test::flexibleLine();
-      auto m = spatial_test::spatialModel(s, Vec3(0, 0, -s.g));
-      TorsionProperties t;
-      t.stiffness = 1e3;
-      t.polar_inertia = 0.05;
-      t.damping = 2.0;
-      t.end_polar_inertia = 0.5;
-      t.free_top = !spring;
-      t.top_stiffness = spring ? 500.0 : 0.0;
-      m->setTorsion(t);
-      const int nb = m->bodies();
-      IntegratorOptions io;
-      io.jacobian = JacobianKind::kStructured;
-      SpatialSimulator sim(m, std::make_unique<PlanarMotion3>(spatial_test::topSway(Vec2(0.5, 0.3), 1.0)),
-                           IntegratorKind::kMidpoint, io);
-      std::vector<Vec3> dirs;
-      for (int i = 0; i < nb; ++i) dirs.push_back(Vec3(0.3 + 0.1 * i, 0.2 - 0.05 * i, -1.0));
-      sim.reset(rigidChain(m->line(), Vec3::Zero(), dirs, Vec3::Zero(), Vec3(0.2, -0.3, 0.5)), 0.0);
-      VecX theta(nb), omega(nb);
-      for (int i = 0; i < nb; ++i) theta[i] = 0.1 * i, omega[i] = 3.0 * std::sin(1.0 + i);
-      sim.setTwist(theta, omega);
-      const double scale = (s.props.mass_per_length * s.length + s.end_mass) * s.g * s.length, e0 = sim.energy();
+      double scale = 0.0;
+      auto ps = spinningTop(spring, IntegratorKind::kMidpoint, &scale);
+      SpatialSimulator& sim = *ps;
+      const double e0 = sim.energy();
       double worst = 0.0;
       const int steps = int(std::lround(1.0 / h));
       for (int k = 1; k <= steps; ++k) {
@@ -216,6 +225,25 @@ TEST(SpatialTorsionFreeTop, ImplicitSchemesConvergeWithASpinningTop) {
     EXPECT_GT(errs[0] / errs[1], 3.0);  // second order (4x per halving)
     EXPECT_LT(errs[1], 1e-4);           // as the held top's bound (test_spatial_torsion)
   }
+}
+
+TEST(SpatialTorsionFreeTop, NoAllocationPerStep) {
+  for (bool spring : {false, true})
+    for (IntegratorKind kind : {IntegratorKind::kRk4, IntegratorKind::kMidpoint, IntegratorKind::kGeneralizedAlpha}) {
+      double scale = 0.0;
+      auto sim = spinningTop(spring, kind, &scale);
+      AlignedVector<Vec3> p(sim->model().bodies() + 1);
+      for (int k = 0; k < 3; ++k) EXPECT_TRUE(sim->step(1e-3));
+      const long before = g_allocations.load();
+      double sink = 0.0;
+      for (int k = 0; k < 20; ++k) {
+        EXPECT_TRUE(sim->step(1e-3));
+        sim->positions(p);
+        sink += sim->energy() + sim->work() + sim->evaluate().reactions.top_twist;
+      }
+      EXPECT_TRUE(std::isfinite(sink));
+      EXPECT_EQ(g_allocations.load() - before, 0) << name(kind) << (spring ? " spring-held" : " free");
+    }
 }
 
 }  // namespace
