@@ -17,7 +17,8 @@ set_target_properties(riser_sim_cli PROPERTIES
 install(TARGETS riser_sim_cli RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
 
 # test/core/test_cli*.cpp (made gtests by cmake/core.cmake's glob) run the built binary.
-foreach(t test_cli test_cli_outputs test_cli_spatial test_cli_spatial_ends test_cli_spatial_modes)
+foreach(t test_cli test_cli_outputs test_cli_spatial test_cli_spatial_ends test_cli_spatial_modes
+          test_cli_spatial_torsion)
   if(CATKIN_ENABLE_TESTING AND TARGET ${t})
     target_compile_definitions(${t} PRIVATE
       RISER_SIM_CLI_BINARY="${CATKIN_DEVEL_PREFIX}/${CATKIN_PACKAGE_BIN_DESTINATION}/riser_sim_cli")

@@ -49,6 +49,7 @@ add_library(riser_sim_core
   src/core/spatial/natural_state.cpp
   src/core/spatial/shifted_solver.cpp
   src/core/spatial/torsion.cpp
+  src/core/spatial/independent_torsion.cpp
   src/core/spatial/simulator.cpp
   src/core/spatial/independent_formulation.cpp
   src/core/spatial/modal.cpp

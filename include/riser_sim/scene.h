@@ -44,6 +44,7 @@ struct FlexJointSpec {
   double damping = 0.0;        // c [N m s/rad] >= 0
   bool has_axis = false;       // axis given; else the line's direction there in the initial state
   Eigen::Vector3d axis = Eigen::Vector3d::Zero();  // along the line, away from the holder
+  double torsional_stiffness = 0.0;  // k_t [N m/rad] about the line's axis (top, line.torsion); 0: none
 };
 
 struct InitialSpec {
@@ -67,6 +68,7 @@ struct TorsionSpec {
   double polar_inertia = 0.0;      // ρ I_p per length [kg m]
   double damping = 0.0;            // c_GJ [N m^2 s]
   double end_polar_inertia = 0.0;  // the end body's, about the line's axis [kg m^2]
+  bool free_top = false;           // top.torsion: free (the hang-off leaves the spin free)
 };
 
 struct HydroSpec {

@@ -56,8 +56,10 @@ void alignPair(spatial::SpatialMode& a, spatial::SpatialMode& b, const Vec3& n) 
   }
 }
 
-// As the planar table: axial when most of the kinetic energy moves along the line.
+// As the planar table: axial when most of the kinetic energy moves along the line; torsional (line.torsion)
+// when most of it is in the spins.
 std::string character(const spatial::SpatialMode& m, const Vec3& n) {
+  if (m.torsional) return "torsional";
   if (m.along_fraction > 0.5) return "axial";
   const double t = total(m);
   return t > 0.0 && outOfPlane(m, m, n) > 0.5 * t ? "out-of-plane" : "in-plane";
@@ -70,9 +72,6 @@ int runSpatialModes(const Scene& scene, int count, const std::string& csv_path, 
       scene.bottom_motion.type != MotionKind::kExternal)
     return fail(kExitBadInput, "bottom.motion: --modes with space: spatial needs a fixed or free bottom (the modes are "
                                "about a static state)");
-  if (scene.torsion.enabled)
-    return fail(kExitBadInput, "line.torsion: --modes with space: spatial has no torsion yet (the 3D modal "
-                               "analysis has bending and axial modes only); remove line.torsion for --modes");
   std::shared_ptr<spatial::SpatialModel> model;
   spatial::InitialState3 init;
   spatial::SpatialModalResult r;
@@ -91,7 +90,8 @@ int runSpatialModes(const Scene& scene, int count, const std::string& csv_path, 
   const Vec3 n = Vec3::UnitZ().cross(init.plane_direction).normalized();  // normal of the statics' plane
   std::vector<spatial::SpatialMode>& modes = r.modes;
   for (size_t k = 0; k + 1 < modes.size(); ++k)
-    if (character(modes[k], n) != "axial" && character(modes[k + 1], n) != "axial" &&
+    if (character(modes[k], n) != "axial" && character(modes[k + 1], n) != "axial" && !modes[k].torsional &&
+        !modes[k + 1].torsional &&
         std::abs(modes[k + 1].omega2 - modes[k].omega2) <= kPairTolerance * std::abs(modes[k + 1].omega2)) {
       alignPair(modes[k], modes[k + 1], n);
       ++k;

@@ -193,7 +193,7 @@ void parseMotion(const Section& motion, TopMotionSpec& spec, bool planar) {
 FlexJointSpec parseFlexJoint(const Section& end, bool planar) {
   FlexJointSpec j;
   if (!end.has("flex_joint")) return j;
-  const Section fj = end.section("flex_joint", {"stiffness", "damping", "axis"});
+  const Section fj = end.section("flex_joint", {"stiffness", "damping", "axis", "torsional_stiffness"});
   if (planar)
     throw SceneError(end.key("flex_joint"), "needs space: spatial (the planar core has pinned ends only)");
   j.enabled = true;
@@ -201,6 +201,10 @@ FlexJointSpec parseFlexJoint(const Section& end, bool planar) {
   requirePositive(fj.key("stiffness"), j.stiffness);
   j.damping = fj.number("damping", 0.0);
   requireNonNegative(fj.key("damping"), j.damping);
+  if (fj.has("torsional_stiffness")) {  // checked against the ends and line.torsion by the callers
+    j.torsional_stiffness = fj.number("torsional_stiffness");
+    requirePositive(fj.key("torsional_stiffness"), j.torsional_stiffness);
+  }
   j.has_axis = fj.has("axis");
   if (j.has_axis) {
     const YAML::Node a = fj.at("axis");
@@ -214,12 +218,21 @@ FlexJointSpec parseFlexJoint(const Section& end, bool planar) {
 
 void parseTop(const Section& root, Scene& s) {
   const bool planar = s.space == SpaceKind::kPlanar;
-  const Section top = root.section("top", {"position", "motion", "flex_joint"});
+  const Section top = root.section("top", {"position", "motion", "flex_joint", "torsion"});
   s.top = TopMotionSpec();
   s.top.position3 = top.vec3("position", planar, Eigen::Vector3d::Zero());
   s.top.position = planarOf(s.top.position3);
   parseMotion(top.section("motion", {"type", "amplitude", "period", "phase", "knots"}), s.top, planar);
   s.top_flex_joint = parseFlexJoint(top, planar);
+  if (top.has("torsion")) {  // the hang-off's hold on the spin (line.torsion)
+    if (!s.torsion.enabled) throw SceneError(top.key("torsion"), "needs line.torsion (the spin is no degree of freedom)");
+    s.torsion.free_top = top.choice("torsion", "fixed", {"fixed", "free"}) == "free";
+  }
+  if (s.top_flex_joint.torsional_stiffness > 0.0) {
+    const std::string key = "top.flex_joint.torsional_stiffness";
+    if (!s.torsion.enabled) throw SceneError(key, "needs line.torsion (the spin is no degree of freedom)");
+    if (s.torsion.free_top) throw SceneError(key, "contradicts top.torsion: free (a spring holds the spin)");
+  }
 }
 
 void parseBottom(const Section& root, Scene& s) {
@@ -244,6 +257,8 @@ void parseBottom(const Section& root, Scene& s) {
       throw SceneError(motion.key("type"), "needs space: spatial (the planar core pins the bottom at a fixed point)");
   }
   s.bottom_flex_joint = parseFlexJoint(bottom, planar);
+  if (s.bottom_flex_joint.torsional_stiffness > 0.0)
+    throw SceneError("bottom.flex_joint.torsional_stiffness", "top only (the bottom is free in twist)");
 }
 
 void parseInitial(const Section& root, Scene& s) {

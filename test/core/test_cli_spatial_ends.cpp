@@ -258,8 +258,6 @@ TEST(CliSpatialEnds, BadKeysAreRefusedNamingTheKey) {
        "m from the end of the straight initial line"},
       {pinned + " --set bottom.motion.type=sinusoid --set bottom.motion.amplitude=[1,0,0] --set bottom.motion.period=5 "
                 "--modes 3", "bottom.motion: --modes with space: spatial needs a fixed or free bottom"},
-      {"--set space=spatial --set line.torsion.stiffness=1e4 --set line.torsion.polar_inertia=1 --modes 3",
-       "line.torsion: --modes with space: spatial has no torsion yet"},
   };
   for (const auto& c : cases) {
     SCOPED_TRACE(c.first);

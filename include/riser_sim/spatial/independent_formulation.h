@@ -30,11 +30,15 @@ namespace spatial {
 struct SphereCharts {
   AlignedVector<Mat3> frame;
   long switches = 0;  // chart switches so far (recentre)
+  // Torsion on: the twist charts (rfe 0's is the hang-off's), moved to e_i whenever a sphere chart moves;
+  // kin is a workspace of those moves.
+  TwistFrames twist;
+  Kinematics3 kin;
 };
 
 class IndependentData3 {
  public:
-  IndependentData3(const SpatialModel& model, int coords_per_body);
+  IndependentData3(const SpatialModel& model, int coords_per_body, int spins = 0);
   double t = 0.0;
   PointMotion3 top;
   Kinematics3 kin;
@@ -55,6 +59,10 @@ class IndependentData3 {
   Eigen::LLT<MatX> llt;
   MatX Phi, X;  // pinned: ∂E_n'/∂θ' (3 x p) and M_θ⁻¹ Φᵀ
   std::vector<AddedMass3> added;  // terms with inertia: per rfe (empty without)
+  // Torsion on: the twist (m, m', τ, kb, moments per rfe), the spin angle, rate ω and connection a per rfe.
+  TwistData twist;
+  std::vector<double> phi, omega;
+  AlignedVector<Vec3> conn;
 };
 
 class IndependentFormulation3 {
@@ -63,8 +71,12 @@ class IndependentFormulation3 {
   explicit IndependentFormulation3(const SpatialModel& model, double stabilization = 50.0);
   const SpatialModel& model() const { return model_; }
   int coordinatesPerBody() const { return k_; }
-  int positionSize() const { return k_ * model_.bodies(); }
-  std::unique_ptr<IndependentData3> makeData() const { return std::make_unique<IndependentData3>(model_, k_); }
+  int positionSize() const { return k_ * model_.bodies() + nt_; }
+  // Torsion on: spin coordinates (rfes firstSpin()..n) and the index of rfe i's φ in θ.
+  int spinDofs() const { return nt_; }
+  int firstSpin() const { return s0_; }
+  int spinIndex(int i) const { return k_ * model_.bodies() + i - s0_; }
+  std::unique_ptr<IndependentData3> makeData() const { return std::make_unique<IndependentData3>(model_, k_, nt_); }
 
   // Charts centred on kin's directors (normalised), and y = [θ; θ'] (first 2 positionSize() entries);
   // the joints of kin are assumed closed (positions follow from the top and the directors).
@@ -76,8 +88,19 @@ class IndependentFormulation3 {
                   IndependentData3& data) const;
   // Re-centres the chart of every rfe with |u| > threshold on its current director (u = 0, exact in
   // position and velocity). Returns how many charts moved.
+  // Torsion on: the twist charts move too (to every e_i, the spins' rates φ' follow).
   int recentre(VecX& y, SphereCharts& charts, double threshold) const;
-  double kineticEnergy(const Kinematics3& kin) const;  // [J]
+  // Torsion on, right after packState (charts centred on e_i): spin angles and rates per rfe (entries below
+  // firstSpin() ignored) [rad, rad/s].
+  void setSpins(const VecX& theta, const VecX& omega, VecX& y) const;
+  // Spin rate ω_i of rfe i [rad/s] and its material director (torsion.h) in state y.
+  double spinRate(const VecX& y, const SphereCharts& charts, const Kinematics3& kin, int i) const;
+  Vec3 materialDirector(const VecX& y, const SphereCharts& charts, const Kinematics3& kin, int i) const;
+  double kineticEnergy(const Kinematics3& kin) const;  // [J] (without the spins)
+  // Torsion on: Σ ½ J_i ω_i² and the twist's Σ ½ (GJ/d) m_k² [J] (0 off).
+  double spinKineticEnergy(const VecX& y, const SphereCharts& charts, const Kinematics3& kin) const;
+  double twistEnergy(const VecX& y, const SphereCharts& charts, const Kinematics3& kin, IndependentData3& d) const;
+  double spinInertia(int i) const;  // J_i [kg m²]
   double constraintError(const Kinematics3& kin) const;  // pinned end gap [m] (0 free)
 
  private:
@@ -85,6 +108,12 @@ class IndependentFormulation3 {
   const double omega_;
   const int k_;   // coordinates per rfe
   const int ku_;  // offset of u inside θ_i (1 with Δ, 0 without)
+  const int s0_;  // first spinning rfe
+  const int nt_;  // spin coordinates (0 without torsion)
+  void spinPhase(const VecX& y, const SphereCharts& charts, IndependentData3& d) const;  // φ, ω, a per rfe
+  void addTwistForces(const VecX& y, const SphereCharts& charts, IndependentData3& d) const;
+  void addSpinInertia(const VecX& y, const SphereCharts& charts, IndependentData3& d) const;
+  void recentreTwist(VecX& y, SphereCharts& charts) const;
 };
 
 // Runs IndependentFormulation3 with the existing integrators on y = [θ; θ'; W] (W [J]: the work of the top
@@ -108,6 +137,8 @@ class IndependentSimulator3 : private OdeSystem {
   OdeSystem& system() { return *this; }
 
   void kinematics(Kinematics3& kin) const { formulation_.kinematics(y_, charts_, top_->at(t_), kin); }
+  // Torsion on, after reset(): spin angles and rates per rfe (as SpatialSimulator::setTwist; entry 0 held).
+  void setTwist(const VecX& theta, const VecX& omega);
   void positions(AlignedVector<Vec3>& p) const;  // A_0..A_n and the end E_n [m] (n + 2)
   double kineticEnergy() const;
   double potentialEnergy() const;

@@ -7,6 +7,9 @@
 // (damping) are left out: the modes are undamped. Free bottom only (as IndependentFormulation3).
 // A line hanging straight down has its transverse modes in degenerate pairs (the two planes across the
 // vertical) at the planar frequencies, and its axial modes once each.
+// Torsion on: the spin angles φ_i are coordinates too (the twist's stiffness and the polar inertia in K and
+// M_θ); the torsional modes are those with most of θᵀ M_θ θ in them. A line straight at rest has them apart
+// from the bending modes; a curved one couples them through the reference twist.
 #pragma once
 #include <vector>
 
@@ -24,6 +27,8 @@ struct SpatialMode {
   double omega = 0.0;   // [rad/s], 0 when ω² <= 0
   double axial_fraction = 0.0;  // share of θᵀ M θ in the Δ coordinates, 0..1
   bool axial = false;           // axial_fraction > 0.5
+  double torsion_fraction = 0.0;  // share of θᵀ M θ in the spin angles (torsion on), 0..1
+  bool torsional = false;         // torsion_fraction > 0.5
   // Share of the mode's kinetic energy (rigid parts) moving along the line, 0..1: the planar
   // Mode::axial_fraction (what the CLI's table prints as the axial share).
   double along_fraction = 0.0;

@@ -22,6 +22,12 @@ struct TorsionProperties {
   double polar_inertia = 0.0;      // ρ I_p per length [kg m]
   double damping = 0.0;            // c_GJ [N m^2 s]: twisting moment per unit twist rate per length
   double end_polar_inertia = 0.0;  // end body about the line's axis [kg m^2]
+  // The top's connection leaves the spin free (top.torsion: free): rfe 0 spins as the others (its own chart,
+  // polar inertia, gyroscopic force) and the hang-off holds no twisting moment. False: held (homokinetic).
+  bool free_top = false;
+  // > 0: the top's spin is held by a torsion spring k_t [N m/rad] to the hang-off (a flex joint's torsional
+  // stiffness), θ_0 free as with free_top; the spring's twist is m_t = θ_0 + angle from R(h -> e_0) r_h.
+  double top_stiffness = 0.0;
 };
 
 // R(a -> b) x: the minimal rotation taking unit a to unit b (about a × b), applied to x. Singular at b = -a.
@@ -37,6 +43,9 @@ inline Vec3 spinConnection(const Vec3& c, const Vec3& e) { return -c.cross(e) / 
 struct TwistFrames {
   AlignedVector<Vec3> centre, ref;
   std::vector<double> mref;
+  // The hang-off's frame (axis h, reference r_h; fixed) and the top spring's last reference twist (top spin).
+  Vec3 top_axis = Vec3::Zero(), top_ref = Vec3::Zero();
+  double top_mref = 0.0;
 };
 
 // One evaluation's twist results and workspaces (sized once).
@@ -45,12 +54,20 @@ struct TwistData {
   std::vector<double> m, mdot, tau;  // per joint k (rfes k, k+1): twist [rad], its rate, moment k m + c m' [N m]
   AlignedVector<Vec3> kb;            // per joint
   std::vector<double> moment;        // per rfe: moment about e_i of the springs and dampers [N m]
+  double top_twist = 0.0, top_tau = 0.0;  // top spring (top_stiffness): its twist m_t [rad], moment k_t m_t [N m]
   void resize(int bodies);
 };
 
 class SpatialModel;
 
-// Spring and damper constants per joint [N m/rad], [N m s/rad] and polar inertia of rfe i [kg m^2] (0 for i = 0).
+// The first rfe whose spin is a degree of freedom: 0 with a free or spring-held top, else 1.
+int firstSpin(const SpatialModel& model);
+// The twisting moment the hang-off holds about the line's axis [N m]: τ_0 held, k_t m_t spring-held, 0 free.
+double hangOffTwist(const SpatialModel& model, const TwistData& d);
+// The top spring's twist m_t at (kin, θ_0), unwrapped against f.top_mref [rad].
+double topSpringTwist(const Kinematics3& kin, double theta0, const TwistFrames& f);
+// Spring and damper constants per joint [N m/rad], [N m s/rad] and polar inertia of rfe i [kg m^2] (0 for
+// i = 0 unless the top is free).
 double twistStiffness(const SpatialModel& model);
 double twistDamping(const SpatialModel& model);
 double polarInertia(const SpatialModel& model, int i);
@@ -58,14 +75,18 @@ double polarInertia(const SpatialModel& model, int i);
 // Frames at the start: centres at e_i, the hang-off's axis e_0 with a reference ⟂ e_0, the references
 // transported down the line across the joints (so m_ref = 0 at the start).
 void initTwistFrames(const Kinematics3& kin, TwistFrames& f);
-// Between steps: every chart (i >= 1) centred at e_i; the references follow (the frames do not move) and
-// the reference twists are stored for unwrapping.
-void rechartTwistFrames(const Kinematics3& kin, TwistFrames& f);
+// Between steps: every chart (i >= first; rfe 0's is the hang-off's unless first = 0) centred at e_i; the
+// references follow (the frames do not move) and the reference twists are stored for unwrapping.
+void rechartTwistFrames(const Kinematics3& kin, TwistFrames& f, int first = 1);
+// Material director of rfe i: its reference at unit e turned by θ about e (frame-independent; for comparing
+// formulations with different charts).
+Vec3 materialDirector(const TwistFrames& f, int i, const Vec3& e, double theta);
 // m_k and kb_k per joint at (kin, θ), unwrapped against f.mref.
 void twistAngles(const Kinematics3& kin, const double* theta, const TwistFrames& f, double* m, Vec3* kb);
-// Spin rate of rfe 0, held by the hang-off: a(h, e_0)·e'_0.
+// Spin rate of rfe 0 held by the hang-off: a(h, e_0)·e'_0.
 double topSpinRate(const Kinematics3& kin, const TwistFrames& f);
 // Twist forces at (kin, θ, ω): adds the e part (twist, hang-off, gyroscopic J ω e × e') to Q (7 per rfe),
+// (a free top: θ_0, ω_0 are rfe 0's own, no hang-off part)
 // fills d.m, d.mdot, d.tau, d.kb, d.moment; returns the dampers' power [W] (<= 0).
 double addTwistForces(const SpatialModel& model, const Kinematics3& kin, const double* theta, const double* omega,
                       TwistData& d, VecX& Q);

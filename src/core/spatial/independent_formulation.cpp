@@ -51,8 +51,9 @@ Mat7 massBlock(const Rfe& r, double delta, const Vec3& e) {
 }  // namespace
 
 // llt sized in place: Eigen's LLT(Index) leaves its info unset, so it must not be copied from.
-IndependentData3::IndependentData3(const SpatialModel& model, int k) : kin(model.bodies()), llt(k * model.bodies()) {
-  const int nb = model.bodies(), p = k * nb;
+IndependentData3::IndependentData3(const SpatialModel& model, int k, int spins)
+    : kin(model.bodies()), llt(k * model.bodies() + spins) {
+  const int nb = model.bodies(), p = k * nb + spins;
   reactions.joint.assign(nb + 1, Vec3::Zero());
   Q.setZero(model.dofs());
   G.assign(nb, Mat32::Zero());
@@ -69,11 +70,18 @@ IndependentData3::IndependentData3(const SpatialModel& model, int k) : kin(model
   X.setZero(p, 3);
   for (const auto& term : model.terms())
     if (term->hasInertia()) added.assign(nb, AddedMass3());
+  if (model.hasTorsion()) {
+    twist.resize(nb);
+    phi.assign(nb, 0.0);
+    omega.assign(nb, 0.0);
+    conn.assign(nb, Vec3::Zero());
+  }
 }
 
 IndependentFormulation3::IndependentFormulation3(const SpatialModel& model, double stabilization)
     : model_(model), omega_(stabilization), k_(model.options().axial_flexibility ? 3 : 2),
-      ku_(model.options().axial_flexibility ? 1 : 0) {
+      ku_(model.options().axial_flexibility ? 1 : 0), s0_(spatial::firstSpin(model)),
+      nt_(model.hasTorsion() ? model.bodies() - s0_ : 0) {
   if (model.bottomMoves())
     throw std::invalid_argument("spatial independent formulation: a fixed or free bottom only (not a moving one)");
 }
@@ -96,6 +104,14 @@ void IndependentFormulation3::packState(const Kinematics3& kin, SphereCharts& ch
     v[ku_] = charts.frame[i].col(0).dot(b.e_dot);  // at u = 0: e' = T u'
     v[ku_ + 1] = charts.frame[i].col(1).dot(b.e_dot);
   }
+  if (nt_ == 0) return;
+  charts.twist.centre.assign(nb, Vec3::Zero());
+  charts.twist.ref.assign(nb, Vec3::Zero());
+  charts.twist.mref.assign(nb - 1, 0.0);
+  charts.kin = kin;
+  initTwistFrames(kin, charts.twist);
+  y.segment(k_ * nb, nt_).setZero();
+  y.segment(p + k_ * nb, nt_).setZero();
 }
 
 void IndependentFormulation3::kinematics(const VecX& y, const SphereCharts& charts, const PointMotion3& top,
@@ -152,6 +168,7 @@ void IndependentFormulation3::derivative(double t, const VecX& y, const SphereCh
     for (const auto& term : model_.terms())
       if (term->hasInertia()) term->addInertia(model_, d.kin, d.added);
   }
+  if (nt_ > 0) addTwistForces(y, charts, d);
 
   // Per rfe: G, the e'' bias of the gnomonic chart, C, the natural acceleration biases and f = Q - h - M7 b.
   Vec3 Ab = top.a;
@@ -218,6 +235,7 @@ void IndependentFormulation3::derivative(double t, const VecX& y, const SphereCh
       for (int a = 0; a < k_; ++a)
         for (int c = 0; c < k_; ++c) d.M(k_ * kb + c, k_ * j + a) = d.M(k_ * j + a, k_ * kb + c) = blk(c0 + a, c0 + c);
     }
+  if (nt_ > 0) addSpinInertia(y, charts, d);
   d.llt.compute(d.M);
   d.theta_dd = d.llt.solve(d.rhs);
   // Pinned: M θ'' = r + Φᵀ μ, Φ θ'' = γ (Baumgarte on c = E_n - p_b) -> (Φ M⁻¹ Φᵀ) μ = γ - Φ M⁻¹ r.
@@ -274,6 +292,7 @@ int IndependentFormulation3::recentre(VecX& y, SphereCharts& charts, double thre
     ++moved;
   }
   charts.switches += moved;
+  if (moved > 0 && nt_ > 0) recentreTwist(y, charts);
   return moved;
 }
 
@@ -299,6 +318,11 @@ void IndependentSimulator3::reset(const Kinematics3& kin, double t0) {
   y_.setZero();
   charts_.switches = 0;
   formulation_.packState(kin, charts_, y_);
+  integrator_->restart();
+}
+
+void IndependentSimulator3::setTwist(const VecX& theta, const VecX& omega) {
+  formulation_.setSpins(theta, omega, y_);
   integrator_->restart();
 }
 
@@ -330,14 +354,14 @@ double IndependentSimulator3::constraintError() const {
 
 double IndependentSimulator3::kineticEnergy() const {
   kinematics(kin_);
-  double T = formulation_.kineticEnergy(kin_);
+  double T = formulation_.kineticEnergy(kin_) + formulation_.spinKineticEnergy(y_, charts_, kin_);
   for (const auto& term : model_->terms()) T += term->kineticEnergy(*model_, kin_);
   return T;
 }
 
 double IndependentSimulator3::potentialEnergy() const {
   kinematics(kin_);
-  double v = 0.0;
+  double v = formulation_.twistEnergy(y_, charts_, kin_, *data_);
   for (const auto& term : model_->terms()) v += term->potentialEnergy(*model_, kin_);
   return v;
 }

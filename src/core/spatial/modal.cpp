@@ -29,7 +29,10 @@ class RestLine {
     theta_ = y_.head(p_);
   }
   int size() const { return p_; }
-  bool isDelta(int c) const { return f_.coordinatesPerBody() == 3 && c % 3 == 0; }
+  bool isDelta(int c) const { return f_.coordinatesPerBody() == 3 && c < spinStart() && c % 3 == 0; }
+  // Torsion on: the spin angles are the last coordinates (IndependentFormulation3).
+  int spinStart() const { return p_ - f_.spinDofs(); }
+  bool isSpin(int c) const { return c >= spinStart(); }
   VecX& theta() { return theta_; }
   const VecX& forces(const VecX& theta) {
     y_.head(p_) = theta;
@@ -113,11 +116,16 @@ Kinematics3 spatialEquilibrium(const SpatialModel& model, const Kinematics3& gue
     return line.residual(theta, model) < 1e-12 && (!pinned || line.endGap(theta, model).norm() < gap_tol);
   };
   const int p = line.size();
+  // A free top in twist: K is singular along the rigid spin (Q_φ = 0 there); least-norm Newton steps.
+  const bool free_spin = model.hasTorsion() && model.torsion().free_top;
+  auto solve = [free_spin](const MatX& A, const VecX& b) -> VecX {
+    return free_spin ? VecX(A.completeOrthogonalDecomposition().solve(b)) : VecX(A.partialPivLu().solve(b));
+  };
   for (int it = 0; it < iterations; ++it) {
     if (converged()) return line.kinematics(theta, model);
     const MatX K = line.stiffness(theta, model);
     if (!pinned) {
-      theta += K.partialPivLu().solve(VecX(line.forces(theta)));  // Q(θ + δ) ≈ Q - K δ = 0
+      theta += solve(K, VecX(line.forces(theta)));  // Q(θ + δ) ≈ Q - K δ = 0
       continue;
     }
     // Pinned: Q - K δ + Φᵀ ν = 0 (ν: the anchor's force beyond the model's), E_n - p_b + Φ δ = 0.
@@ -129,7 +137,7 @@ Kinematics3 spatialEquilibrium(const SpatialModel& model, const Kinematics3& gue
     VecX b(p + 3);
     b.head(p) = line.forces(theta);
     b.tail(3) = -line.endGap(theta, model);
-    theta += A.partialPivLu().solve(b).head(p);
+    theta += solve(A, b).head(p);
   }
   if (converged()) return line.kinematics(theta, model);
   throw std::runtime_error("spatialEquilibrium: Newton did not converge");
@@ -138,7 +146,6 @@ Kinematics3 spatialEquilibrium(const SpatialModel& model, const Kinematics3& gue
 SpatialModalResult computeSpatialModes(const SpatialModel& model, const Kinematics3& equilibrium,
                                        const SpatialModalOptions& options) {
   if (!(options.fd_step > 0.0)) throw std::invalid_argument("spatial modal fd_step: must be > 0");
-  if (model.hasTorsion()) throw std::invalid_argument("spatial modal: no torsion yet");
   if (model.bottomMoves()) throw std::invalid_argument("spatial modal: a fixed or free bottom only (not a moving one)");
   RestLine line(model, equilibrium, options.fd_step);
   const VecX theta0 = line.theta();
@@ -172,8 +179,11 @@ SpatialModalResult computeSpatialModes(const SpatialModel& model, const Kinemati
     mode.omega = mode.omega2 > 0.0 ? std::sqrt(mode.omega2) : 0.0;
     mode.theta = pinned ? VecX(N * es.eigenvectors().col(m)) : VecX(es.eigenvectors().col(m));
     const VecX Mt = M * mode.theta;
-    for (int c = 0; c < line.size(); ++c)
+    for (int c = 0; c < line.size(); ++c) {
       if (line.isDelta(c)) mode.axial_fraction += mode.theta[c] * Mt[c];
+      if (line.isSpin(c)) mode.torsion_fraction += mode.theta[c] * Mt[c];
+    }
+    mode.torsional = mode.torsion_fraction > 0.5;
     mode.axial = mode.axial_fraction > 0.5;
     const double h = options.fd_step / std::max(mode.theta.cwiseAbs().maxCoeff(), 1e-300);
     const Kinematics3 kp = line.kinematics(theta0 + h * mode.theta, model);

@@ -196,7 +196,7 @@ void NaturalFormulation::derivative(double t, const VecX& y, const PointMotion3&
   if (nt > 0) {
     d.twist_y.head(nt) = y.segment(nq, nt);
     d.twist_y.tail(nt) = y.segment(vo + nq, nt);
-    d.twist_y[0] = d.twist_y[nt] = 0.0;  // rfe 0 is held by the hang-off
+    if (firstSpin(model_) > 0) d.twist_y[0] = d.twist_y[nt] = 0.0;  // rfe 0 is held by the hang-off
     d.term_power += addTwistForces(model_, d.kin, d.twist_y.data(), d.twist_y.data() + nt, d.twist, d.Q);
   }
   for (int i = 0; i < nb; ++i) {
@@ -279,15 +279,16 @@ void NaturalFormulation::derivative(double t, const VecX& y, const PointMotion3&
   d.acc = dy.segment(vo, nq);
   if (nt > 0) {  // θ' = ω - a(c, e)·e' (the chart's reference turns with e), J ω' = moment
     dy[nq] = dy[vo + nq] = 0.0;
-    for (int i = 1; i < nb; ++i) {
+    for (int i = firstSpin(model_); i < nb; ++i) {
       const BodyKinematics3& b = d.kin[i];
       dy[nq + i] = d.twist_y[nt + i] - spinConnection(d.twist.frames.centre[i], b.e / b.e.norm()).dot(b.e_dot);
       dy[vo + nq + i] = d.twist.moment[i] / polarInertia(model_, i);
     }
-    const Vec3& h = d.twist.frames.centre[0];
+    const Vec3& h = d.twist.frames.top_axis;
     const Vec3 n0 = d.kin[0].e / d.kin[0].e.norm();
-    d.reactions.top_twist = d.twist.moment[0];
-    d.reactions.top_twist_moment = d.twist.moment[0] / (1.0 + h.dot(n0)) * (h + n0);
+    const double held = hangOffTwist(model_, d.twist);
+    d.reactions.top_twist = held;
+    d.reactions.top_twist_moment = held / (1.0 + h.dot(n0)) * (h + n0);
   }
 }
 
@@ -301,7 +302,7 @@ void NaturalFormulation::initTwist(const VecX& y, NaturalData& d) const {
 void NaturalFormulation::rechartTwist(const VecX& y, NaturalData& d) const {
   if (!model_.hasTorsion()) return;
   kinematics(y, d.kin);
-  rechartTwistFrames(d.kin, d.twist.frames);
+  rechartTwistFrames(d.kin, d.twist.frames, firstSpin(model_));
   d.t = std::numeric_limits<double>::quiet_NaN();
 }
 
@@ -311,7 +312,7 @@ double NaturalFormulation::twistEnergy(const VecX& y, NaturalData& d) const {
   kinematics(y, d.kin);
   d.t = std::numeric_limits<double>::quiet_NaN();
   d.twist_y.head(nt) = y.segment(model_.dofs(), nt);
-  d.twist_y[0] = 0.0;
+  if (firstSpin(model_) > 0) d.twist_y[0] = 0.0;
   return spatial::twistEnergy(model_, d.kin, d.twist_y.data(), d.twist);
 }
 
@@ -322,7 +323,7 @@ std::unique_ptr<ShiftedSolver3> NaturalFormulation::makeShifted() const {
 bool NaturalFormulation::evaluatedAt(double t, const VecX& y, const NaturalData& d) const {
   if (d.t != t) return false;
   const int nt = twistDofs(), nq = model_.dofs();
-  for (int i = 1; i < nt; ++i)
+  for (int i = firstSpin(model_); i < nt; ++i)
     if (y[nq + i] != d.twist_y[i] || y[positionSize() + nq + i] != d.twist_y[nt + i]) return false;
   for (int i = 0; i < model_.bodies(); ++i) {
     const BodyKinematics3 b = body(y, i);

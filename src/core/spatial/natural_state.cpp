@@ -20,7 +20,7 @@ double NaturalFormulation::kineticEnergy(const VecX& y) const {
     }
   }
   const int nt = twistDofs();
-  for (int i = 1; i < nt; ++i) {
+  for (int i = firstSpin(model_); i < nt; ++i) {
     const double w = y[positionSize() + model_.dofs() + i];
     T += 0.5 * polarInertia(model_, i) * w * w;
   }

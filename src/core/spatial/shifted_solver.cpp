@@ -261,11 +261,13 @@ void ShiftedSolver3::factor(double c) {
     }
     Sm_inv_ = (body_[nb_ - 1].Gam * body_[nb_ - 1].Xmu).inverse();
   }
-  if (nt_ > 0) {  // spins: diagonal J_i + s (joints at i), off-diagonal -s between rows i, i+1 >= 1
+  if (nt_ > 0) {  // spins: diagonal J_i + s (joints at i), off-diagonal -s between spinning rows i, i+1
     const double s = c * twistDamping(model_) + c * c * twistStiffness(model_);
-    for (int i = 1; i < nt_; ++i) {
-      t_diag_[i] = polarInertia(model_, i) + s * (i + 1 < nt_ ? 2.0 : 1.0);
-      if (i > 1) {
+    const int f0 = firstSpin(model_);  // 0: rfe 0 spins (free top; a top spring k_t adds c² k_t)
+    for (int i = f0; i < nt_; ++i) {
+      const int joints = (i > 0 ? 1 : 0) + (i + 1 < nt_ ? 1 : 0);
+      t_diag_[i] = polarInertia(model_, i) + s * joints + (i == 0 ? c * c * model_.torsion().top_stiffness : 0.0);
+      if (i > f0) {
         t_mul_[i] = -s / t_diag_[i - 1];
         t_diag_[i] -= t_mul_[i] * -s;
       }
@@ -334,24 +336,25 @@ void ShiftedSolver3::solve(const VecX& b, VecX& x) {
     x.segment<7>(kDofPerBody3 * i) = b.segment<7>(kDofPerBody3 * i) + c_ * xv;
   }
   if (nt_ == 0) return;
-  // Spins: rows 1..n (rfe 0 held: x = b there), r_i = J_i b_ω,i - c (K_t b_θ)_i, then Thomas.
+  // Spins: rows firstSpin()..n (a held rfe 0: x = b there), r_i = J_i b_ω,i - c (K_t b_θ)_i, then Thomas.
   const double k = twistStiffness(model_), s = c_ * twistDamping(model_) + c_ * c_ * k;
-  auto bth = [&](int i) { return i > 0 && i < nt_ ? b[nq_ + i] : 0.0; };
+  const int f0 = firstSpin(model_);
+  auto bth = [&](int i) { return i >= f0 && i < nt_ ? b[nq_ + i] : 0.0; };
   x[nq_] = b[nq_];
   x[vo_ + nq_] = b[vo_ + nq_];
-  for (int i = 1; i < nt_; ++i) {
-    double kq = k * (bth(i) - bth(i - 1));
+  for (int i = f0; i < nt_; ++i) {
+    double kq = i > 0 ? k * (bth(i) - bth(i - 1)) : model_.torsion().top_stiffness * bth(0);
     if (i + 1 < nt_) kq += k * (bth(i) - bth(i + 1));
     double r = polarInertia(model_, i) * b[vo_ + nq_ + i] - c_ * kq;
-    if (i > 1) r -= t_mul_[i] * x[vo_ + nq_ + i - 1];
+    if (i > f0) r -= t_mul_[i] * x[vo_ + nq_ + i - 1];
     x[vo_ + nq_ + i] = r;
   }
-  for (int i = nt_ - 1; i >= 1; --i) {
+  for (int i = nt_ - 1; i >= f0; --i) {
     double r = x[vo_ + nq_ + i];
     if (i + 1 < nt_) r += s * x[vo_ + nq_ + i + 1];
     x[vo_ + nq_ + i] = r / t_diag_[i];
   }
-  for (int i = 1; i < nt_; ++i) x[nq_ + i] = b[nq_ + i] + c_ * x[vo_ + nq_ + i];
+  for (int i = f0; i < nt_; ++i) x[nq_ + i] = b[nq_ + i] + c_ * x[vo_ + nq_ + i];
 }
 
 }  // namespace spatial

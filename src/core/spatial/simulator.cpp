@@ -44,7 +44,7 @@ void SpatialSimulator::setTwist(const VecX& theta, const VecX& omega) {
     throw std::invalid_argument("SpatialSimulator::setTwist: torsion off, or not one angle and rate per rfe");
   y_.segment(nq, nt) = theta;
   y_.segment(p + nq, nt) = omega;
-  y_[nq] = y_[p + nq] = 0.0;  // rfe 0 is held by the hang-off
+  if (firstSpin(*model_) > 0) y_[nq] = y_[p + nq] = 0.0;  // rfe 0 is held by the hang-off
   integrator_->restart();
 }
 

@@ -36,8 +36,15 @@ void TwistData::resize(int bodies) {
 
 double twistStiffness(const SpatialModel& model) { return model.torsion().stiffness / model.line().segmentLength(); }
 double twistDamping(const SpatialModel& model) { return model.torsion().damping / model.line().segmentLength(); }
+int firstSpin(const SpatialModel& model) {
+  const TorsionProperties& t = model.torsion();
+  return t.free_top || t.top_stiffness > 0.0 ? 0 : 1;
+}
+double hangOffTwist(const SpatialModel& model, const TwistData& d) {
+  return firstSpin(model) > 0 ? d.moment[0] : d.top_tau;
+}
 double polarInertia(const SpatialModel& model, int i) {
-  if (i == 0) return 0.0;
+  if (i < firstSpin(model)) return 0.0;
   const TorsionProperties& t = model.torsion();
   return t.polar_inertia * model.rfe(i).length + (i == model.bodies() - 1 ? t.end_polar_inertia : 0.0);
 }
@@ -55,23 +62,38 @@ void initTwistFrames(const Kinematics3& kin, TwistFrames& f) {
     f.ref[i] = unitPerp(minimalRotation(np, n, reference(f, i - 1, np)), n);
   }
   for (double& m : f.mref) m = 0.0;
+  f.top_axis = n0;
+  f.top_ref = f.ref[0];
+  f.top_mref = 0.0;
 }
 
-void rechartTwistFrames(const Kinematics3& kin, TwistFrames& f) {
+double topSpringTwist(const Kinematics3& kin, double theta0, const TwistFrames& f) {
+  const Vec3 n0 = dir(kin[0]);
+  const double raw = angleAbout(minimalRotation(f.top_axis, n0, f.top_ref), reference(f, 0, n0), n0);
+  return theta0 + f.top_mref + std::remainder(raw - f.top_mref, 2.0 * M_PI);
+}
+
+void rechartTwistFrames(const Kinematics3& kin, TwistFrames& f, int first) {
   const int nb = int(kin.size());
   for (int k = 0; k + 1 < nb; ++k) f.mref[k] = referenceTwist(f, k, dir(kin[k]), dir(kin[k + 1]));
-  for (int i = 1; i < nb; ++i) {
+  if (first == 0) f.top_mref = topSpringTwist(kin, 0.0, f);
+  for (int i = first; i < nb; ++i) {
     const Vec3 n = dir(kin[i]);
     f.ref[i] = unitPerp(reference(f, i, n), n);
     f.centre[i] = n;
   }
 }
 
+Vec3 materialDirector(const TwistFrames& f, int i, const Vec3& e, double theta) {
+  const Vec3 u = unitPerp(reference(f, i, e), e);
+  return std::cos(theta) * u + std::sin(theta) * e.cross(u);
+}
+
 void twistAngles(const Kinematics3& kin, const double* theta, const TwistFrames& f, double* m, Vec3* kb) {
   const int nb = int(kin.size());
   for (int k = 0; k + 1 < nb; ++k) {
     const Vec3 n0 = dir(kin[k]), n1 = dir(kin[k + 1]);
-    m[k] = (k + 1 < nb ? theta[k + 1] : 0.0) - (k > 0 ? theta[k] : 0.0) + referenceTwist(f, k, n0, n1);
+    m[k] = theta[k + 1] - theta[k] + referenceTwist(f, k, n0, n1);  // θ_0 = 0 when the hang-off holds it
     kb[k] = n0.cross(n1) / (1.0 + n0.dot(n1));
   }
 }
@@ -85,20 +107,27 @@ double addTwistForces(const SpatialModel& model, const Kinematics3& kin, const d
   const int nb = model.bodies(), nj = nb - 1;
   const double k = twistStiffness(model), c = twistDamping(model);
   twistAngles(kin, theta, d.frames, d.m.data(), d.kb.data());
-  const double w0 = topSpinRate(kin, d.frames);
+  const bool held = firstSpin(model) > 0;
+  const double w0 = held ? topSpinRate(kin, d.frames) : omega[0];
   double power = 0.0;
   for (int j = 0; j < nj; ++j) {
     d.mdot[j] = omega[j + 1] - (j == 0 ? w0 : omega[j]) + d.kb[j].dot(kin[j].e_dot + kin[j + 1].e_dot);
     d.tau[j] = k * d.m[j] + c * d.mdot[j];
     power -= c * d.mdot[j] * d.mdot[j];
   }
+  const double kt = model.torsion().top_stiffness;
+  if (kt > 0.0) {  // the top spring: moment -k_t m_t on θ_0; on e_0 +k_t m_t a(h, e_0) (∂m_t/∂e_0 = -a(h, e_0))
+    d.top_twist = topSpringTwist(kin, theta[0], d.frames);
+    d.top_tau = kt * d.top_twist;
+    Q.segment<3>(kE) += d.top_tau * spinConnection(d.frames.top_axis, dir(kin[0]));
+  }
   for (int i = 0; i < nb; ++i) {
-    d.moment[i] = (i < nj ? d.tau[i] : 0.0) - (i > 0 ? d.tau[i - 1] : 0.0);
+    d.moment[i] = (i < nj ? d.tau[i] : 0.0) - (i > 0 ? d.tau[i - 1] : 0.0) - (i == 0 ? d.top_tau : 0.0);
     Vec3 qe = Vec3::Zero();
     if (i < nj) qe -= d.tau[i] * d.kb[i];
     if (i > 0) qe -= d.tau[i - 1] * d.kb[i - 1];
     const BodyKinematics3& b = kin[i];
-    if (i == 0)  // the hang-off turns rfe 0 about e_0 at a(h, e_0)·e'_0
+    if (i == 0 && held)  // the hang-off turns rfe 0 about e_0 at a(h, e_0)·e'_0
       qe += d.moment[0] * spinConnection(d.frames.centre[0], dir(b));
     else  // gyroscopic: d/dt of the spin's angular momentum J ω e has J ω e' across e
       qe += polarInertia(model, i) * omega[i] * b.e.cross(b.e_dot);
@@ -111,6 +140,11 @@ double twistEnergy(const SpatialModel& model, const Kinematics3& kin, const doub
   twistAngles(kin, theta, d.frames, d.m.data(), d.kb.data());
   double v = 0.0;
   for (double m : d.m) v += m * m;
+  const double kt = model.torsion().top_stiffness;
+  if (kt > 0.0) {
+    const double mt = topSpringTwist(kin, theta[0], d.frames);
+    return 0.5 * twistStiffness(model) * v + 0.5 * kt * mt * mt;
+  }
   return 0.5 * twistStiffness(model) * v;
 }
 
