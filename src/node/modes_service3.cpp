@@ -26,6 +26,7 @@ double outOfPlane(const SpatialMode& a, const SpatialMode& b, const Vec3& n) {
 }
 
 std::string character(const SpatialMode& m, const Vec3& n) {
+  if (m.torsional) return "torsional";  // most of the kinetic energy in the spins (line.torsion)
   if (m.along_fraction > 0.5) return "axial";
   double t = 0.0;
   for (const Vec3& v : m.displacement) t += v.squaredNorm();
@@ -53,10 +54,6 @@ void computeModesResponse3(const riser_sim::Scene& scene, const riser_sim::spati
     res.message = "count: must be >= 1, got " + std::to_string(count);
     return;
   }
-  if (scene.torsion.enabled) {
-    res.message = "line.torsion: ~modes in 3D has no torsion yet (bending and axial modes only)";
-    return;
-  }
   if (scene.bottom == riser_sim::BottomBoundary::kPinned && scene.bottom_motion.type != riser_sim::MotionKind::kFixed) {
     res.message = "bottom.motion: ~modes in 3D needs a fixed or free bottom (the modes are about a static state)";
     return;
@@ -82,8 +79,8 @@ void computeModesResponse3(const riser_sim::Scene& scene, const riser_sim::spati
   const Vec3 n = Vec3::UnitZ().cross(initial.plane_direction).normalized();  // the statics' plane's normal
   std::vector<SpatialMode>& modes = r.modes;
   for (size_t k = 0; k + 1 < modes.size(); ++k)
-    if (character(modes[k], n) != "axial" && character(modes[k + 1], n) != "axial" &&
-        std::abs(modes[k + 1].omega2 - modes[k].omega2) <= kPairTolerance * std::abs(modes[k + 1].omega2)) {
+    if (character(modes[k], n) != "axial" && character(modes[k + 1], n) != "axial" && !modes[k].torsional &&
+        !modes[k + 1].torsional && std::abs(modes[k + 1].omega2 - modes[k].omega2) <= kPairTolerance * std::abs(modes[k + 1].omega2)) {
       alignPair(modes[k], modes[k + 1], n);
       ++k;
     }

@@ -277,7 +277,7 @@ solver: {dt: 0.001}
   }
 }
 
-// 3D ~modes refuses what the 3D modal analysis has not (torsion) and bad counts, naming the field; a
+// 3D ~modes refuses bad counts, naming the field; a
 // hanging line's lowest transverse modes come in degenerate pairs turned into and across the statics' plane.
 TEST(SpatialModes, RefusalsNameTheFieldAndPairsSplitByPlane) {
   riser_sim::Scene s = scene(R"(
@@ -303,13 +303,39 @@ solver: {dt: 0.001}
   EXPECT_NEAR(r.periods[0], r.periods[1], 1e-6 * r.periods[0]);  // a pair across the vertical
   EXPECT_NE(r.characters[0], r.characters[1]);                   // one in the plane, one across it
   for (size_t k = 0; k < 4; ++k) EXPECT_NE(r.characters[k], "axial");  // inextensible
-  riser_sim::Scene t = s;
-  t.torsion.enabled = true;
-  r = riser_sim::Modes::Response();
-  computeModesResponse3(t, run.initial(), 2, r);
-  EXPECT_FALSE(r.success);
-  EXPECT_EQ(r.message.rfind("line.torsion: ", 0), 0u) << r.message;
-  EXPECT_TRUE(r.periods.empty());
+}
+
+// With line.torsion the same line gains torsional modes (spins, as the CLI's --modes names them); its
+// bending modes are those without torsion (the spins do not couple at a straight, untwisted equilibrium: the
+// core's modal test measures 6e-14 in ω²).
+TEST(SpatialModes, TorsionAddsTorsionalModesAndKeepsTheBendingOnes) {
+  const char* yaml = R"(
+name: hang
+space: spatial
+line: {length: 20.0, elements: 6, mass_per_length: 5.0, EI: 100.0, end_mass: 50.0, axial_flexibility: false%s}
+top: {position: [0.0, 0.0, 0.0]}
+solver: {dt: 0.001}
+)";
+  char with[600], without[600];
+  std::snprintf(with, sizeof(with), yaml, ",\n       torsion: {stiffness: 200.0, polar_inertia: 0.5}");
+  std::snprintf(without, sizeof(without), yaml, "");
+  const riser_sim::Scene st = scene(with), s0 = scene(without);
+  const riser_sim::spatial::SpatialRun rt(st), r0(s0);
+  riser_sim::Modes::Response mt, m0;
+  computeModesResponse3(s0, r0.initial(), 4, m0);
+  ASSERT_TRUE(m0.success) << m0.message;
+  computeModesResponse3(st, rt.initial(), m0.dofs + 6, mt);  // every mode: the spins of rfes 1..6 on top
+  ASSERT_TRUE(mt.success) << mt.message;
+  EXPECT_GE(mt.dofs, m0.dofs + 6);  // the top rfe's spin is held (top.torsion: fixed)
+  std::vector<double> bending;
+  int torsional = 0;
+  for (size_t k = 0; k < mt.characters.size(); ++k) {
+    if (mt.characters[k] == "torsional") ++torsional;
+    else if (bending.size() < 4) bending.push_back(mt.periods[k]);
+  }
+  EXPECT_GE(torsional, 6);
+  ASSERT_EQ(bending.size(), 4u);
+  for (size_t k = 0; k < 4; ++k) EXPECT_NEAR(bending[k], m0.periods[k], 1e-9 * m0.periods[k]) << k;
 }
 
 }  // namespace
