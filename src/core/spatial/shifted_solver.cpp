@@ -50,10 +50,20 @@ void luSolve(const Eigen::Matrix<double, N, N>& A, const int* piv, double* b) {
   }
 }
 
-// X <- A⁻¹ X, column by column (X column-major).
-template <int N, int K>
-void luSolveCols(const Eigen::Matrix<double, N, N>& A, const int* piv, Eigen::Matrix<double, N, K>& X) {
-  for (int j = 0; j < K; ++j) luSolve<N>(A, piv, X.col(j).data());
+// Only the e-e block of a 7x7 coupling is nonzero.
+bool eeOnly(const Mat7& X) { return X.topRows<4>().isZero(0.0) && X.bottomLeftCorner<3, 4>().isZero(0.0); }
+
+// The first Nr rows of A⁻¹ (A overwritten by its LU): N solves on unit columns.
+template <int N, int Nr>
+void invRows(Eigen::Matrix<double, N, N>& A, Eigen::Matrix<double, Nr, N>& out) {
+  int piv[N];
+  luFactor<N>(A, piv);
+  for (int j = 0; j < N; ++j) {
+    double col[N] = {};
+    col[j] = 1.0;
+    luSolve<N>(A, piv, col);
+    for (int i = 0; i < Nr; ++i) out(i, j) = col[i];
+  }
 }
 }  // namespace
 
@@ -73,8 +83,7 @@ ShiftedSolver3::ShiftedSolver3(const SpatialModel& model, double stabilization)
     B.Gam.setZero();
     B.W.setZero();
     B.Up.setZero();
-    B.R.setIdentity();
-    for (int k = 0; k < 5; ++k) B.piv[k] = k;
+    B.Ri.setZero();
     B.RN.setZero();
     B.Xmu.setZero();
     B.x.setZero();
@@ -174,6 +183,9 @@ void ShiftedSolver3::setLinearization(const NaturalData& d, const Eigen::Ref<con
   }
   // K(i, i+1) once per linearisation (after the locked-Δ rows and columns are cleared above).
   for (int i = 0; i + 1 < nb_; ++i) body_[i].Kup = S_.K_sub[i + 1].transpose() + S_.K_sup[i + 1];
+  // The shipped terms couple neighbours in e-e only (bending): the sweep skips the zero blocks then (exact).
+  body_[0].ee = false;
+  for (int i = 1; i < nb_; ++i) body_[i].ee = eeOnly(S_.K_sub[i]) && eeOnly(S_.K_sup[i]) && eeOnly(S_.C_sub[i]);
   linearized_ = true;
   factored_ = false;
 }
@@ -181,13 +193,8 @@ void ShiftedSolver3::setLinearization(const NaturalData& d, const Eigen::Ref<con
 template <typename In, typename Out>
 void ShiftedSolver3::applyPhi(int i, const In& v, Out& out) const {
   out.template topRows<3>().noalias() = (1.0 / s_) * (body_[i - 1].Gam * v);
-  out.template bottomRows<4>().noalias() = -body_[i].RN.template topRows<4>() * v;
+  out.template bottomRows<4>().noalias() = -body_[i].RN * v;
 }
-
-namespace {
-// Only the e-e block of a 7x7 coupling is nonzero.
-bool eeOnly(const Mat7& X) { return X.topRows<4>().isZero(0.0) && X.bottomLeftCorner<3, 4>().isZero(0.0); }
-}  // namespace
 
 // Backward sweep from the free (or pinned) end. The rfes below i act on rfe i's momentum rows as
 // -g_iᵀ λ_{i+1} + Up_i x_{i+1} = S_{i+1} x_i + s_{i+1}. Per rfe, with W = H_i + S_{i+1}: the joint row gives
@@ -200,37 +207,41 @@ void ShiftedSolver3::factor(double c) {
   for (int i = 0; i < nb_; ++i) {
     Body& B = body_[i];
     B.Gam = B.gE + c * B.pE + c2 * B.rE;
-    if (i + 1 < nb_) B.Up = (c * S_.C_sub[i + 1]).transpose() + c2 * B.Kup;
+    if (i + 1 >= nb_) continue;
+    if (body_[i + 1].ee)
+      B.Up.block<3, 3>(kE, kE) = (c * S_.C_sub[i + 1].block<3, 3>(kE, kE)).transpose() + c2 * B.Kup.block<3, 3>(kE, kE);
+    else
+      B.Up = (c * S_.C_sub[i + 1]).transpose() + c2 * B.Kup;
   }
   Mat7 Snext = Mat7::Zero();
   Mat73 T = Mat73::Zero();
   if (pinned_) T = -body_[nb_ - 1].gE.transpose();
-  Mat57 N;
+  Mat5 R;
+  Eigen::Matrix<double, 4, 7> N;
   Mat7 Phi;
-  Eigen::Matrix<double, 5, 3> RT;
   for (int i = nb_ - 1; i >= 0; --i) {
     Body& B = body_[i];
     B.W = B.M + c * S_.C_diag[i] + c2 * S_.K_diag[i] + Snext;
-    B.R.topLeftCorner<4, 4>() = B.W.block<4, 4>(kDelta3, kDelta3);
-    B.R.block<4, 1>(0, 4) = B.gu.segment<4>(kDelta3);
-    B.R.block<1, 4>(4, 0) = (B.gu + c * B.pu + c2 * B.ru).segment<4>(kDelta3).transpose();
-    B.R(4, 4) = 0.0;
-    luFactor<5>(B.R, B.piv);
+    R.topLeftCorner<4, 4>() = B.W.block<4, 4>(kDelta3, kDelta3);
+    R.block<4, 1>(0, 4) = B.gu.segment<4>(kDelta3);
+    R.block<1, 4>(4, 0) = (B.gu + c * B.pu + c2 * B.ru).segment<4>(kDelta3).transpose();
+    R(4, 4) = 0.0;
+    invRows<5, 4>(R, B.Ri);
     Eigen::Matrix<double, 3, 7> Lam;
-    bool ee = false;
+    const bool ee = B.ee;
     if (i > 0) {
       const Body& P = body_[i - 1];
-      const Mat7 Lo = c * S_.C_sub[i] + c2 * S_.K_sub[i];
-      // The shipped terms couple neighbours in e-e only (bending): skip the zero blocks then (exact).
-      ee = eeOnly(Lo) && eeOnly(P.Up);
-      N.topRows<4>().noalias() = (1.0 / s) * (B.W.block<4, 3>(kDelta3, kA) * P.Gam);
-      if (ee) N.block<3, 3>(1, kE) += Lo.block<3, 3>(kE, kE);
-      else N.topRows<4>() += Lo.bottomRows<4>();
-      N.row(4).setZero();
-      luSolveCols<5, 7>(B.R, B.piv, N);
-      B.RN = N;
+      N.noalias() = (1.0 / s) * (B.W.block<4, 3>(kDelta3, kA) * P.Gam);
+      Mat7 Lo;
+      if (ee) {
+        N.block<3, 3>(1, kE) += c * S_.C_sub[i].block<3, 3>(kE, kE) + c2 * S_.K_sub[i].block<3, 3>(kE, kE);
+      } else {
+        Lo = c * S_.C_sub[i] + c2 * S_.K_sub[i];
+        N += Lo.bottomRows<4>();
+      }
+      B.RN.noalias() = B.Ri.leftCols<4>() * N;  // N's row 5 (the unit-length row) is zero
       Phi.topRows<3>() = (1.0 / s) * P.Gam;
-      Phi.bottomRows<4>() = -N.topRows<4>();
+      Phi.bottomRows<4>() = -B.RN;
       Lam.noalias() = -(B.W.topRows<3>() * Phi);
       if (!ee) Lam -= Lo.topRows<3>();
       Snext.noalias() = -(P.gE.transpose() * Lam);
@@ -238,11 +249,8 @@ void ShiftedSolver3::factor(double c) {
       else Snext.noalias() += P.Up * Phi;
     }
     if (pinned_) {  // f_i's and s_i's dependence on μ
-      RT.topRows<4>() = -T.bottomRows<4>();
-      RT.row(4).setZero();
-      luSolveCols<5, 3>(B.R, B.piv, RT);
       B.Xmu.topRows<3>().setZero();
-      B.Xmu.bottomRows<4>() = RT.topRows<4>();
+      B.Xmu.bottomRows<4>().noalias() = -(B.Ri.leftCols<4>() * T.bottomRows<4>());
       if (i > 0) {
         Eigen::Matrix<double, 3, 3> Tl = -T.topRows<3>();
         Tl.noalias() -= B.W.topRows<3>() * B.Xmu;
@@ -289,8 +297,14 @@ void ShiftedSolver3::assembleRhs(int blk, const VecX& b, Vec11& r) const {
   const Body& B = body_[blk];
   r.head<3>() += bv(blk).segment<3>(kA) - (c * w2) * bq(blk).segment<3>(kA);
   Vec7 kq = S_.K_diag[blk] * bq(blk);
-  if (blk > 0) kq.noalias() += S_.K_sub[blk] * bq(blk - 1);
-  if (blk + 1 < nb_) kq.noalias() += B.Kup * bq(blk + 1);
+  if (blk > 0) {
+    if (B.ee) kq.tail<3>().noalias() += S_.K_sub[blk].block<3, 3>(kE, kE) * bq(blk - 1).tail<3>();
+    else kq.noalias() += S_.K_sub[blk] * bq(blk - 1);
+  }
+  if (blk + 1 < nb_) {
+    if (body_[blk + 1].ee) kq.tail<3>().noalias() += B.Kup.block<3, 3>(kE, kE) * bq(blk + 1).tail<3>();
+    else kq.noalias() += B.Kup * bq(blk + 1);
+  }
   r.segment<7>(3).noalias() = B.M * bv(blk) - c * kq;
   r[10] = B.gu.dot(bv(blk)) - c * B.ru.dot(bq(blk));
 }
@@ -307,15 +321,15 @@ void ShiftedSolver3::solve(const VecX& b, VecX& x) {
     y.head<4>() = phi.segment<4>(kDelta3);
     y.head<4>().noalias() -= B.W.block<4, 3>(kDelta3, kA) * a;
     y[4] = r[10];
-    luSolve<5>(B.R, B.piv, y.data());
     B.x.head<3>() = a;
-    B.x.tail<4>() = y.head<4>();
+    B.x.tail<4>().noalias() = B.Ri * y;
     if (i > 0) {
       Vec3 l = phi.head<3>();
       l.noalias() -= B.W.topRows<3>() * B.x;
       const Body& P = body_[i - 1];
       snext.noalias() = -(P.gE.transpose() * l);
-      snext.noalias() += P.Up * B.x;
+      if (B.ee) snext.tail<3>().noalias() += P.Up.block<3, 3>(kE, kE) * B.x.tail<3>();
+      else snext.noalias() += P.Up * B.x;
     }
   }
   Vec7 px;
