@@ -79,8 +79,8 @@ class SpatialSimulator : private OdeSystem {
   void rhs(double t, const VecX& y, VecX& dy) override;
   bool hasShiftedSolve() const override { return true; }
   void linearize(double t, const VecX& y) override;
-  void factorShifted(double c) override { formulation_.factorShifted(c, *shifted_); }
-  void solveShifted(const VecX& b, VecX& x) override { formulation_.solveShifted(b, x, *shifted_); }
+  void factorShifted(double c) override;
+  void solveShifted(const VecX& b, VecX& x) override;
 
   std::shared_ptr<const SpatialModel> model_;
   std::unique_ptr<TopMotion3> top_;
@@ -89,6 +89,11 @@ class SpatialSimulator : private OdeSystem {
   std::unique_ptr<ShiftedSolver3> shifted_;
   std::unique_ptr<Integrator> integrator_;
   VecX y_, dy_;
+  // The structured solves' linearisation, deferred to the first solve after linearize() (simulator.cpp).
+  VecX y_lin_;
+  double t_lin_ = 0.0, c_pending_ = 0.0;
+  long evaluations_ = 0, evaluations_at_lin_ = 0;
+  bool lin_pending_ = false;
   Kinematics3 kin_;
   double t_ = 0.0;
   double projection_tol_ = 0.0;

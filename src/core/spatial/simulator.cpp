@@ -26,6 +26,7 @@ SpatialSimulator::SpatialSimulator(std::shared_ptr<const SpatialModel> model, st
   const int n = 2 * formulation_.positionSize() + 1;  // [q; v; W]
   y_.setZero(n);
   dy_.setZero(n);
+  y_lin_.setZero(n);
   integrator_->reset(StateLayout{n, formulation_.positionSize()});
 }
 
@@ -51,6 +52,7 @@ void SpatialSimulator::setTwist(const VecX& theta, const VecX& omega) {
 void SpatialSimulator::rhs(double t, const VecX& y, VecX& dy) {
   const PointMotion3 top = top_->at(t);
   formulation_.derivative(t, y, top, dy, *data_);
+  ++evaluations_;
   // dW/dt: power of the top motion (force on rfe 0 at A_0 is -λ_0), of a moving bottom (force on rfe n at
   // E_n is λ_{n+1} = -reactions.bottom; 0 when fixed or free) and of the non-conservative terms.
   double p_bottom = 0.0;
@@ -58,8 +60,31 @@ void SpatialSimulator::rhs(double t, const VecX& y, VecX& dy) {
   dy[dy.size() - 1] = -data_->reactions.top.dot(top.v) + p_bottom + data_->term_power;
 }
 
+// Deferred to the first solve: linearised there at the last evaluation when one was made since (the
+// implicit schemes' Newton predictor z0, where the stage is solved: fewer iterations than at (t, y)),
+// else at (t, y) (Rosenbrock2: its step's first solve follows the linearisation directly).
 void SpatialSimulator::linearize(double t, const VecX& y) {
-  formulation_.linearize(t, y, top_->at(t), *data_, *shifted_);
+  t_lin_ = t;
+  y_lin_ = y;
+  evaluations_at_lin_ = evaluations_;
+  lin_pending_ = true;
+}
+
+void SpatialSimulator::factorShifted(double c) {
+  c_pending_ = c;
+  if (!lin_pending_) formulation_.factorShifted(c, *shifted_);
+}
+
+void SpatialSimulator::solveShifted(const VecX& b, VecX& x) {
+  if (lin_pending_) {
+    if (evaluations_ != evaluations_at_lin_)
+      shifted_->setLinearization(*data_, data_->acc);
+    else
+      formulation_.linearize(t_lin_, y_lin_, top_->at(t_lin_), *data_, *shifted_);
+    formulation_.factorShifted(c_pending_, *shifted_);
+    lin_pending_ = false;
+  }
+  formulation_.solveShifted(b, x, *shifted_);
 }
 
 bool SpatialSimulator::step(double h) {
