@@ -46,6 +46,11 @@ class ShiftedSolver3 {
   bool factored() const { return factored_; }
   double c() const { return c_; }
 
+  // A 3x7 block [a I, d, b I] on (A, Δ, e): the rows of E_i = A_i + len e_i and of its Baumgarte law.
+  struct Row3 {
+    double a = 0.0, b = 0.0;
+    Vec3 d = Vec3::Zero();
+  };
   using Vec11 = Eigen::Matrix<double, 11, 1>;
   using Mat37 = Eigen::Matrix<double, 3, 7>;
   using Mat5 = Eigen::Matrix<double, 5, 5>;
@@ -57,13 +62,13 @@ class ShiftedSolver3 {
   struct Body {
     Mat7 M;                 // mass (K, C, K_sub, K_sup, C_sub live in S_: K(i, i), C(i, i), rows i / columns i-1)
     Mat7 Kup;               // K(i, i+1) = K_sub[i+1]ᵀ + K_sup[i+1] (the right side's coupling to rfe i+1)
-    Mat37 gE, pE, rE;       // Baumgarte law of E_i: g δa + p δv + r δq (g = B_E = ∂E/∂q)
+    Row3 gE, pE, rE;        // Baumgarte law of E_i: g δa + p δv + r δq (g = B_E = ∂E/∂q)
     Vec7 gu, pu, ru;        // Baumgarte law of the unit length
     // Sweep (factor): Γ = g + c p + c² r of E_i; W = M + cC + c²K + S_{i+1} (the rfes below, as seen by x_i);
     // R = [W_uu g_u; γ_uᵀ 0] (u = Δ, e), Ri = the first 4 rows of R⁻¹ (LU with partial pivoting on unit
     // columns), RN = the u rows of R⁻¹ N (x_i's dependence on x_{i-1});
     // Up = the coupling to x_{i+1}; Xmu = ∂x_i/∂λ_n (pinned end).
-    Mat37 Gam;
+    Row3 Gam;
     Mat7 W, Up;
     Mat45 Ri;
     Mat47 RN;
