@@ -5,7 +5,8 @@
 // planar absolute formulation does not either).
 // The implicit schemes (rosenbrock2, midpoint, generalized_alpha) use options.jacobian: "structured" (the
 // default) solves with the formulation's O(n) block-tridiagonal KKT factorisation (shifted_solver.h),
-// relinearised every step; "dense" uses their finite-difference Jacobian (O(p²) per solve, O(p³) per refresh).
+// relinearised every step (at its first solve: the Newton predictor, simulator.cpp); "dense" uses their
+// finite-difference Jacobian (O(p²) per solve, O(p³) per refresh).
 #pragma once
 #include <cmath>
 #include <memory>
