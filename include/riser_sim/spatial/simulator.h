@@ -90,11 +90,14 @@ class SpatialSimulator : private OdeSystem {
   std::unique_ptr<ShiftedSolver3> shifted_;
   std::unique_ptr<Integrator> integrator_;
   VecX y_, dy_;
-  // The structured solves' linearisation, deferred to the first solve after linearize() (simulator.cpp).
+  // The structured solves' linearisation, deferred to the first solve after linearize() or kept from the
+  // last steps (simulator.cpp).
+  static constexpr int kReuseSolves = 2, kReuseSteps = 8;
   VecX y_lin_;
   double t_lin_ = 0.0, c_pending_ = 0.0;
-  long evaluations_ = 0, evaluations_at_lin_ = 0;
-  bool lin_pending_ = false;
+  long evaluations_ = 0, evaluations_at_lin_ = 0, evaluations_at_solve_ = 0;
+  int solves_ = 0, age_ = 0, backoff_ = 0, wait_ = 0;
+  bool lin_pending_ = false, newton_ = false, reused_ = false, force_lin_ = true;
   Kinematics3 kin_;
   double t_ = 0.0;
   double projection_tol_ = 0.0;
