@@ -92,7 +92,7 @@ class SpatialSimulator : private OdeSystem {
   VecX y_, dy_;
   // The structured solves' linearisation, deferred to the first solve after linearize() or kept from the
   // last steps (simulator.cpp).
-  static constexpr int kReuseSolves = 2, kReuseSteps = 8;
+  static constexpr int kReuseSolves = 3, kReuseSteps = 8;
   VecX y_lin_;
   double t_lin_ = 0.0, c_pending_ = 0.0;
   long evaluations_ = 0, evaluations_at_lin_ = 0, evaluations_at_solve_ = 0;

@@ -67,7 +67,7 @@ void SpatialSimulator::rhs(double t, const VecX& y, VecX& dy) {
 // Deferred to the first solve: linearised there at the last evaluation when one was made since (the
 // implicit schemes' Newton predictor z0, where the stage is solved: fewer iterations than at (t, y)),
 // else at (t, y) (Rosenbrock2: its step's first solve follows the linearisation directly).
-// Newton schemes keep the last factor instead while the steps converge in kReuseSolves solves, for at most
+// Newton schemes keep the last factor instead while the steps converge in kReuseSolves (3) solves, for at most
 // kReuseSteps steps (simplified Newton across steps: the same solution to Newton's tolerance); a step
 // that needs more is relinearised at its current iterate, and reuse waits 1, 3, 7, ... 63 steps after it.
 void SpatialSimulator::linearize(double t, const VecX& y) {
