@@ -293,8 +293,8 @@ void spatialRows(const std::string& out_dir, double target, int max_n, bool quic
   std::FILE* csv = std::fopen((out_dir + "/step_cost_3d.csv").c_str(), "w");
   if (csv) std::fprintf(csv, "integrator,n,h,us_per_step_2d,us_per_step_3d,ratio,ratio_q1,ratio_q3,newton_2d,newton_3d\n");
   std::printf("\n3D against 2D, the same planar line (thread CPU time per step, interleaved blocks, medians; ratio "
-              "3D/2D with its quartiles over the blocks):\n\n| integrator | n | h [s] | 2D [us] | 3D [us] | ratio | "
-              "ratio q1..q3 |\n|---|---|---|---|---|---|---|\n");
+              "3D/2D with its quartiles over the blocks; Newton iterations per step 2D / 3D):\n\n| integrator | n | h [s] | "
+              "2D [us] | 3D [us] | ratio | ratio q1..q3 | Newton |\n|---|---|---|---|---|---|---|---|\n");
   for (const bool implicit : {false, true}) {
     const char* name = implicit ? "midpoint structured (2D recursive)" : "rk4 (2D absolute)";
     std::vector<double> xs, y2, y3;
@@ -302,18 +302,18 @@ void spatialRows(const std::string& out_dir, double target, int max_n, bool quic
       if (n > max_n) continue;
       const Pair3 r = timePair(n, implicit, std::max(target, 0.5));
       if (!r.ok) {
-        std::printf("| %s | %d | - | failed: %s | | | |\n", name, n, r.why.c_str());
+        std::printf("| %s | %d | - | failed: %s | | | | |\n", name, n, r.why.c_str());
         continue;
       }
-      std::printf("| %s | %d | %.3g | %.3g | %.3g | %.2f | %.2f..%.2f |\n", name, n, r.h, r.us2, r.us3, r.ratio,
-                  r.ratio_lo, r.ratio_hi);
+      std::printf("| %s | %d | %.3g | %.3g | %.3g | %.2f | %.2f..%.2f | %.2f / %.2f |\n", name, n, r.h, r.us2, r.us3,
+                  r.ratio, r.ratio_lo, r.ratio_hi, r.newton2, r.newton3);
       std::fflush(stdout);
       if (csv)
         std::fprintf(csv, "%s,%d,%.6g,%.6g,%.6g,%.4g,%.4g,%.4g,%.3g,%.3g\n", implicit ? "midpoint" : "rk4", n, r.h,
                      r.us2, r.us3, r.ratio, r.ratio_lo, r.ratio_hi, r.newton2, r.newton3);
       if (n >= 100) xs.push_back(n + 1), y2.push_back(r.us2), y3.push_back(r.us3);
     }
-    std::printf("| %s | exponent n = 100..1000 | | %.2f | %.2f | | |\n", name, slope(xs, y2), slope(xs, y3));
+    std::printf("| %s | exponent n = 100..1000 | | %.2f | %.2f | | | |\n", name, slope(xs, y2), slope(xs, y3));
   }
   if (csv) std::fclose(csv);
   std::printf("\nwrote %s/step_cost_3d.csv\n", out_dir.c_str());

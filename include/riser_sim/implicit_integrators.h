@@ -23,9 +23,13 @@ class ImplicitIntegrator : public Integrator {
  public:
   explicit ImplicitIntegrator(const IntegratorOptions& options) : options_(options) {}
   void reset(const StateLayout& layout) override;
-  void restart() override { jac_valid_ = false; f0_valid_ = false; failure_.clear(); }
-  void forcesChanged() override { f0_valid_ = false; }
-  void stateProjected(const VecX& y) override { y_end_ = y; f0_valid_ = false; }
+  void restart() override { jac_valid_ = f0_valid_ = f0_projected_ = false; failure_.clear(); }
+  void forcesChanged() override { f0_valid_ = f0_projected_ = false; }
+  void stateProjected(const VecX& y) override {
+    y_end_ = y;
+    f0_projected_ = f0_valid_ || f0_projected_;
+    f0_valid_ = false;
+  }
   const std::string& failure() const override { return failure_; }
   Stats stats() const override { return stats_; }
 
@@ -50,6 +54,7 @@ class ImplicitIntegrator : public Integrator {
   VecX f0_, fp_, yp_, bu_, u_, y_end_;
   double jac_t_ = 0.0, c_ = -1.0, t_end_ = 0.0;
   bool jac_valid_ = false, f0_valid_ = false;
+  bool f0_projected_ = false;  // f0_ stale only by stateProjected() (the forces did not change)
   bool structured_ = false;  // options_.jacobian == "structured": the system's O(n) solves
   std::string failure_;
   Stats stats_;
@@ -76,6 +81,8 @@ class OneStageImplicit : public ImplicitIntegrator {
   // State beyond y (generalized-α's ẏ): taken up at the start of a step (f0_ current), saved before the
   // first try and put back before a retry in substeps.
   virtual void beginStep(double /*t*/, const VecX& /*y*/) {}
+  // Whether beginStep() reads f0_ at this start (else step() may leave f(t, y) out: see step()).
+  virtual bool historyNeedsF0(double /*t*/, const VecX& /*y*/) const { return false; }
   virtual void saveHistory() {}
   virtual void restoreHistory() {}
 
@@ -128,6 +135,7 @@ class GeneralizedAlpha : public OneStageImplicit {
   const VecX& stageBase(const VecX& y0, double h) override;
   void advance(VecX& y, double h) override;
   void beginStep(double t, const VecX& y) override;
+  bool historyNeedsF0(double t, const VecX& y) const override;
   void saveHistory() override { ydot_save_ = ydot_; }
   void restoreHistory() override { ydot_ = ydot_save_; }
 

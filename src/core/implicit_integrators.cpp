@@ -192,16 +192,28 @@ bool OneStageImplicit::single(OdeSystem& sys, double t, VecX& y, double h) {
 }
 
 bool OneStageImplicit::step(OdeSystem& sys, double t, VecX& y, double h) {
-  startValue(sys, t, y);
+  // Structured solves with the predictor at hand use no f(t, y) after a projection (the system linearises
+  // at its own evaluations): it is made only for a retry in substeps or a scheme's history. Otherwise
+  // f0_ is the last step's end evaluation, or f(t, y) is made (the forces changed).
+  bool lazy = structured_ && have_prev_ && t == t_end_ && h == h_prev_ && y == y_end_ && (f0_valid_ || f0_projected_) &&
+              !historyNeedsF0(t, y);
+  if (!lazy) {
+    startValue(sys, t, y);
+    f_save_ = f0_;
+  }
   beginStep(t, y);
   // Newton out of reach (a large h on a stiff, undamped mode): 2, 4, ... kMaxPieces equal substeps.
   y_save_ = y;
-  f_save_ = f0_;
   saveHistory();
   bool ok = false;
   for (int pieces = 1; pieces <= kMaxPieces && !ok; pieces *= 2) {
     if (pieces > 1) {
       y = y_save_;
+      if (lazy) {  // the substeps start without a predictor: f(t, y) now (kept when still valid)
+        startValue(sys, t, y);
+        f_save_ = f0_;
+        lazy = false;
+      }
       f0_ = f_save_;
       restoreHistory();
       ++stats_.rejected;
@@ -218,6 +230,7 @@ bool OneStageImplicit::step(OdeSystem& sys, double t, VecX& y, double h) {
     return false;
   }
   f0_valid_ = true;
+  f0_projected_ = false;
   y_end_ = y;
   t_end_ = t + h;
   return true;
@@ -255,9 +268,13 @@ void GeneralizedAlpha::reset(const StateLayout& layout) {
 // from the last step's t + h by round-off (a caller counting k h): ẏ is kept then - a reset to f(t, y) at
 // every step turns the scheme into another, first-order one (measured on the pendulum: order ~1, and
 // |R| → 0.875 instead of 0.5 at ρ∞ = 0.5).
-void GeneralizedAlpha::beginStep(double t, const VecX& y) {
+bool GeneralizedAlpha::historyNeedsF0(double t, const VecX& y) const {
   const bool continues = std::abs(t - t_end_) <= 1e-12 * std::max(std::abs(t), std::abs(t_end_));
-  if (ydot_valid_ && continues && y == y_end_) return;
+  return !(ydot_valid_ && continues && y == y_end_);
+}
+
+void GeneralizedAlpha::beginStep(double t, const VecX& y) {
+  if (!historyNeedsF0(t, y)) return;
   ydot_ = f0_;
   ydot_valid_ = true;
 }

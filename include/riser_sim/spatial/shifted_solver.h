@@ -11,7 +11,7 @@
 // The system is solved by a backward sweep from the bottom, as the planar chain solver's Riccati sweep: the
 // rfes below rfe i act on its momentum rows as an affine function of x_v,i (S_{i+1} x_v,i + s_{i+1}). Per rfe
 // the joint row gives x_A,i from x_v,i-1, the A momentum rows give λ_i, and (Δ, e) with the unit-length
-// multiplier ν_i solve a 5x5 system (LU with partial pivoting), so x_v,i = Φ_i x_v,i-1 + f_i; a forward pass
+// multiplier ν_i solve a 5x5 system (inverted once per factor), so x_v,i = Φ_i x_v,i-1 + f_i; a forward pass
 // applies Φ. The matrices need not be symmetric (damping couplings, Baumgarte rows against Gᵀ columns). A
 // pinned end's multiplier λ_n is carried through the sweep linearly (the sensitivities ∂x_v,i/∂λ_n) and fixed
 // by its 3x3 row at the end. For the
@@ -46,27 +46,34 @@ class ShiftedSolver3 {
   bool factored() const { return factored_; }
   double c() const { return c_; }
 
+  // A 3x7 block [a I, d, b I] on (A, Δ, e): the rows of E_i = A_i + len e_i and of its Baumgarte law.
+  struct Row3 {
+    double a = 0.0, b = 0.0;
+    Vec3 d = Vec3::Zero();
+  };
   using Vec11 = Eigen::Matrix<double, 11, 1>;
   using Mat37 = Eigen::Matrix<double, 3, 7>;
   using Mat5 = Eigen::Matrix<double, 5, 5>;
-  using Mat57 = Eigen::Matrix<double, 5, 7>;
+  using Mat45 = Eigen::Matrix<double, 4, 5>;
+  using Mat47 = Eigen::Matrix<double, 4, 7>;
   using Mat73 = Eigen::Matrix<double, 7, 3>;
 
  private:
   struct Body {
     Mat7 M;                 // mass (K, C, K_sub, K_sup, C_sub live in S_: K(i, i), C(i, i), rows i / columns i-1)
     Mat7 Kup;               // K(i, i+1) = K_sub[i+1]ᵀ + K_sup[i+1] (the right side's coupling to rfe i+1)
-    Mat37 gE, pE, rE;       // Baumgarte law of E_i: g δa + p δv + r δq (g = B_E = ∂E/∂q)
+    Row3 gE, pE, rE;        // Baumgarte law of E_i: g δa + p δv + r δq (g = B_E = ∂E/∂q)
     Vec7 gu, pu, ru;        // Baumgarte law of the unit length
     // Sweep (factor): Γ = g + c p + c² r of E_i; W = M + cC + c²K + S_{i+1} (the rfes below, as seen by x_i);
-    // R = [W_uu g_u; γ_uᵀ 0] (u = Δ, e; LU with partial pivoting), RN = R⁻¹ N (x_i's dependence on x_{i-1});
+    // R = [W_uu g_u; γ_uᵀ 0] (u = Δ, e), Ri = the first 4 rows of R⁻¹ (LU with partial pivoting on unit
+    // columns), RN = the u rows of R⁻¹ N (x_i's dependence on x_{i-1});
     // Up = the coupling to x_{i+1}; Xmu = ∂x_i/∂λ_n (pinned end).
-    Mat37 Gam;
+    Row3 Gam;
     Mat7 W, Up;
-    Mat5 R;
-    int piv[5];
-    Mat57 RN;
+    Mat45 Ri;
+    Mat47 RN;
     Mat73 Xmu;
+    bool ee = false;        // rfe i-1 and i couple in e-e only (K_sub, K_sup, C_sub): the other blocks are skipped
     Vec7 x;                 // solve: x_i's constant part (backward), then x_v,i (forward)
   };
   void assembleRhs(int blk, const VecX& b, Vec11& r) const;

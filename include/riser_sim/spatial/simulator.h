@@ -5,7 +5,8 @@
 // planar absolute formulation does not either).
 // The implicit schemes (rosenbrock2, midpoint, generalized_alpha) use options.jacobian: "structured" (the
 // default) solves with the formulation's O(n) block-tridiagonal KKT factorisation (shifted_solver.h),
-// relinearised every step; "dense" uses their finite-difference Jacobian (O(p²) per solve, O(p³) per refresh).
+// relinearised every step (at its first solve: the Newton predictor, simulator.cpp); "dense" uses their
+// finite-difference Jacobian (O(p²) per solve, O(p³) per refresh).
 #pragma once
 #include <cmath>
 #include <memory>
@@ -79,8 +80,8 @@ class SpatialSimulator : private OdeSystem {
   void rhs(double t, const VecX& y, VecX& dy) override;
   bool hasShiftedSolve() const override { return true; }
   void linearize(double t, const VecX& y) override;
-  void factorShifted(double c) override { formulation_.factorShifted(c, *shifted_); }
-  void solveShifted(const VecX& b, VecX& x) override { formulation_.solveShifted(b, x, *shifted_); }
+  void factorShifted(double c) override;
+  void solveShifted(const VecX& b, VecX& x) override;
 
   std::shared_ptr<const SpatialModel> model_;
   std::unique_ptr<TopMotion3> top_;
@@ -89,6 +90,14 @@ class SpatialSimulator : private OdeSystem {
   std::unique_ptr<ShiftedSolver3> shifted_;
   std::unique_ptr<Integrator> integrator_;
   VecX y_, dy_;
+  // The structured solves' linearisation, deferred to the first solve after linearize() or kept from the
+  // last steps (simulator.cpp).
+  static constexpr int kReuseSolves = 3, kReuseSteps = 8;
+  VecX y_lin_;
+  double t_lin_ = 0.0, c_pending_ = 0.0;
+  long evaluations_ = 0, evaluations_at_lin_ = 0, evaluations_at_solve_ = 0;
+  int solves_ = 0, age_ = 0, backoff_ = 0, wait_ = 0;
+  bool lin_pending_ = false, newton_ = false, reused_ = false, force_lin_ = true;
   Kinematics3 kin_;
   double t_ = 0.0;
   double projection_tol_ = 0.0;

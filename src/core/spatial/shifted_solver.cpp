@@ -50,10 +50,48 @@ void luSolve(const Eigen::Matrix<double, N, N>& A, const int* piv, double* b) {
   }
 }
 
-// X <- A⁻¹ X, column by column (X column-major).
-template <int N, int K>
-void luSolveCols(const Eigen::Matrix<double, N, N>& A, const int* piv, Eigen::Matrix<double, N, K>& X) {
-  for (int j = 0; j < K; ++j) luSolve<N>(A, piv, X.col(j).data());
+using Row3 = ShiftedSolver3::Row3;
+// G x for x with 7 rows (A, Δ, e).
+template <typename X>
+Eigen::Matrix<double, 3, X::ColsAtCompileTime> mul(const Row3& G, const Eigen::MatrixBase<X>& x) {
+  return G.a * x.template topRows<3>() + G.d * x.row(kDelta3) + G.b * x.template bottomRows<3>();
+}
+// Gᵀ l for l with 3 rows.
+template <typename X>
+Eigen::Matrix<double, 7, X::ColsAtCompileTime> mulT(const Row3& G, const Eigen::MatrixBase<X>& l) {
+  Eigen::Matrix<double, 7, X::ColsAtCompileTime> out;
+  out.template topRows<3>() = G.a * l;
+  out.row(kDelta3) = G.d.transpose() * l;
+  out.template bottomRows<3>() = G.b * l;
+  return out;
+}
+// x G for x with 3 columns.
+template <typename X>
+Eigen::Matrix<double, X::RowsAtCompileTime, 7> rmul(const Eigen::MatrixBase<X>& x, const Row3& G) {
+  Eigen::Matrix<double, X::RowsAtCompileTime, 7> out;
+  out.template leftCols<3>() = G.a * x;
+  out.col(kDelta3) = x * G.d;
+  out.template rightCols<3>() = G.b * x;
+  return out;
+}
+Row3 combine(const Row3& g, double cp, const Row3& p, double cr, const Row3& r) {
+  return Row3{g.a + cp * p.a + cr * r.a, g.b + cp * p.b + cr * r.b, g.d + cp * p.d + cr * r.d};
+}
+
+// Only the e-e block of a 7x7 coupling is nonzero.
+bool eeOnly(const Mat7& X) { return X.topRows<4>().isZero(0.0) && X.bottomLeftCorner<3, 4>().isZero(0.0); }
+
+// The first Nr rows of A⁻¹ (A overwritten by its LU): N solves on unit columns.
+template <int N, int Nr>
+void invRows(Eigen::Matrix<double, N, N>& A, Eigen::Matrix<double, Nr, N>& out) {
+  int piv[N];
+  luFactor<N>(A, piv);
+  for (int j = 0; j < N; ++j) {
+    double col[N] = {};
+    col[j] = 1.0;
+    luSolve<N>(A, piv, col);
+    for (int i = 0; i < Nr; ++i) out(i, j) = col[i];
+  }
 }
 }  // namespace
 
@@ -68,13 +106,11 @@ ShiftedSolver3::ShiftedSolver3(const SpatialModel& model, double stabilization)
   body_.resize(nb_ + 1);  // + the pinned end's block (used when the bottom is pinned)
   for (Body& B : body_) {
     for (Mat7* m : {&B.M, &B.Kup}) m->setZero();
-    for (Mat37* m : {&B.gE, &B.pE, &B.rE}) m->setZero();
+    B.gE = B.pE = B.rE = B.Gam = Row3();
     for (Vec7* v : {&B.gu, &B.pu, &B.ru}) v->setZero();
-    B.Gam.setZero();
     B.W.setZero();
     B.Up.setZero();
-    B.R.setIdentity();
-    for (int k = 0; k < 5; ++k) B.piv[k] = k;
+    B.Ri.setZero();
     B.RN.setZero();
     B.Xmu.setZero();
     B.x.setZero();
@@ -152,17 +188,13 @@ void ShiftedSolver3::setLinearization(const NaturalData& d, const Eigen::Ref<con
       M(kDelta3, kDelta3) = 1.0;
     }
     // E = A + len e: E'' = A'' + Δ'' e + len e'' + 2Δ' e', law E'' + 2ω E' + ω² E (+ prescribed).
-    B.gE.setZero();
-    B.gE.block<3, 3>(0, kA) = I3;
-    B.gE.block<3, 3>(0, kE) = b.len * I3;
-    if (axial_) B.gE.col(kDelta3) = b.e;
-    B.pE = 2.0 * w * B.gE;
-    B.rE = (w * w) * B.gE;
-    B.pE.block<3, 3>(0, kE) += 2.0 * b.delta_dot * I3;
-    B.rE.block<3, 3>(0, kE) += (Ddd + 2.0 * w * b.delta_dot) * I3;
+    const Vec3 ge = axial_ ? b.e : Vec3::Zero();
+    B.gE = Row3{1.0, b.len, ge};
+    B.pE = Row3{2.0 * w, 2.0 * w * b.len + 2.0 * b.delta_dot, 2.0 * w * ge};
+    B.rE = Row3{w * w, (w * w) * b.len + Ddd + 2.0 * w * b.delta_dot, (w * w) * ge};
     if (axial_) {
-      B.pE.col(kDelta3) += 2.0 * b.e_dot;
-      B.rE.col(kDelta3) += edd + 2.0 * w * b.e_dot;
+      B.pE.d += 2.0 * b.e_dot;
+      B.rE.d += edd + 2.0 * w * b.e_dot;
     }
     // ½(e·e - 1): e·e'' + e'·e' + 2ω e·e' + ω² ½(e·e - 1) = 0.
     B.gu.setZero();
@@ -174,20 +206,18 @@ void ShiftedSolver3::setLinearization(const NaturalData& d, const Eigen::Ref<con
   }
   // K(i, i+1) once per linearisation (after the locked-Δ rows and columns are cleared above).
   for (int i = 0; i + 1 < nb_; ++i) body_[i].Kup = S_.K_sub[i + 1].transpose() + S_.K_sup[i + 1];
+  // The shipped terms couple neighbours in e-e only (bending): the sweep skips the zero blocks then (exact).
+  body_[0].ee = false;
+  for (int i = 1; i < nb_; ++i) body_[i].ee = eeOnly(S_.K_sub[i]) && eeOnly(S_.K_sup[i]) && eeOnly(S_.C_sub[i]);
   linearized_ = true;
   factored_ = false;
 }
 
 template <typename In, typename Out>
 void ShiftedSolver3::applyPhi(int i, const In& v, Out& out) const {
-  out.template topRows<3>().noalias() = (1.0 / s_) * (body_[i - 1].Gam * v);
-  out.template bottomRows<4>().noalias() = -body_[i].RN.template topRows<4>() * v;
+  out.template topRows<3>() = (1.0 / s_) * mul(body_[i - 1].Gam, v);
+  out.template bottomRows<4>().noalias() = -body_[i].RN * v;
 }
-
-namespace {
-// Only the e-e block of a 7x7 coupling is nonzero.
-bool eeOnly(const Mat7& X) { return X.topRows<4>().isZero(0.0) && X.bottomLeftCorner<3, 4>().isZero(0.0); }
-}  // namespace
 
 // Backward sweep from the free (or pinned) end. The rfes below i act on rfe i's momentum rows as
 // -g_iᵀ λ_{i+1} + Up_i x_{i+1} = S_{i+1} x_i + s_{i+1}. Per rfe, with W = H_i + S_{i+1}: the joint row gives
@@ -199,55 +229,56 @@ void ShiftedSolver3::factor(double c) {
   s_ = s;
   for (int i = 0; i < nb_; ++i) {
     Body& B = body_[i];
-    B.Gam = B.gE + c * B.pE + c2 * B.rE;
-    if (i + 1 < nb_) B.Up = (c * S_.C_sub[i + 1]).transpose() + c2 * B.Kup;
+    B.Gam = combine(B.gE, c, B.pE, c2, B.rE);
+    if (i + 1 >= nb_) continue;
+    if (body_[i + 1].ee)
+      B.Up.block<3, 3>(kE, kE) = (c * S_.C_sub[i + 1].block<3, 3>(kE, kE)).transpose() + c2 * B.Kup.block<3, 3>(kE, kE);
+    else
+      B.Up = (c * S_.C_sub[i + 1]).transpose() + c2 * B.Kup;
   }
   Mat7 Snext = Mat7::Zero();
   Mat73 T = Mat73::Zero();
-  if (pinned_) T = -body_[nb_ - 1].gE.transpose();
-  Mat57 N;
+  if (pinned_) T = -mulT(body_[nb_ - 1].gE, Mat3::Identity());
+  Mat5 R;
+  Eigen::Matrix<double, 4, 7> N;
   Mat7 Phi;
-  Eigen::Matrix<double, 5, 3> RT;
   for (int i = nb_ - 1; i >= 0; --i) {
     Body& B = body_[i];
     B.W = B.M + c * S_.C_diag[i] + c2 * S_.K_diag[i] + Snext;
-    B.R.topLeftCorner<4, 4>() = B.W.block<4, 4>(kDelta3, kDelta3);
-    B.R.block<4, 1>(0, 4) = B.gu.segment<4>(kDelta3);
-    B.R.block<1, 4>(4, 0) = (B.gu + c * B.pu + c2 * B.ru).segment<4>(kDelta3).transpose();
-    B.R(4, 4) = 0.0;
-    luFactor<5>(B.R, B.piv);
+    R.topLeftCorner<4, 4>() = B.W.block<4, 4>(kDelta3, kDelta3);
+    R.block<4, 1>(0, 4) = B.gu.segment<4>(kDelta3);
+    R.block<1, 4>(4, 0) = (B.gu + c * B.pu + c2 * B.ru).segment<4>(kDelta3).transpose();
+    R(4, 4) = 0.0;
+    invRows<5, 4>(R, B.Ri);
     Eigen::Matrix<double, 3, 7> Lam;
-    bool ee = false;
+    const bool ee = B.ee;
     if (i > 0) {
       const Body& P = body_[i - 1];
-      const Mat7 Lo = c * S_.C_sub[i] + c2 * S_.K_sub[i];
-      // The shipped terms couple neighbours in e-e only (bending): skip the zero blocks then (exact).
-      ee = eeOnly(Lo) && eeOnly(P.Up);
-      N.topRows<4>().noalias() = (1.0 / s) * (B.W.block<4, 3>(kDelta3, kA) * P.Gam);
-      if (ee) N.block<3, 3>(1, kE) += Lo.block<3, 3>(kE, kE);
-      else N.topRows<4>() += Lo.bottomRows<4>();
-      N.row(4).setZero();
-      luSolveCols<5, 7>(B.R, B.piv, N);
-      B.RN = N;
-      Phi.topRows<3>() = (1.0 / s) * P.Gam;
-      Phi.bottomRows<4>() = -N.topRows<4>();
+      N = rmul((1.0 / s) * B.W.block<4, 3>(kDelta3, kA), P.Gam);
+      Mat7 Lo;
+      if (ee) {
+        N.block<3, 3>(1, kE) += c * S_.C_sub[i].block<3, 3>(kE, kE) + c2 * S_.K_sub[i].block<3, 3>(kE, kE);
+      } else {
+        Lo = c * S_.C_sub[i] + c2 * S_.K_sub[i];
+        N += Lo.bottomRows<4>();
+      }
+      B.RN.noalias() = B.Ri.leftCols<4>() * N;  // N's row 5 (the unit-length row) is zero
+      Phi.topRows<3>() = rmul((1.0 / s) * Mat3::Identity(), P.Gam);
+      Phi.bottomRows<4>() = -B.RN;
       Lam.noalias() = -(B.W.topRows<3>() * Phi);
       if (!ee) Lam -= Lo.topRows<3>();
-      Snext.noalias() = -(P.gE.transpose() * Lam);
+      Snext = mulT(P.gE, -Lam);
       if (ee) Snext.bottomRows<3>().noalias() += P.Up.block<3, 3>(kE, kE) * Phi.bottomRows<3>();
       else Snext.noalias() += P.Up * Phi;
     }
     if (pinned_) {  // f_i's and s_i's dependence on μ
-      RT.topRows<4>() = -T.bottomRows<4>();
-      RT.row(4).setZero();
-      luSolveCols<5, 3>(B.R, B.piv, RT);
       B.Xmu.topRows<3>().setZero();
-      B.Xmu.bottomRows<4>() = RT.topRows<4>();
+      B.Xmu.bottomRows<4>().noalias() = -(B.Ri.leftCols<4>() * T.bottomRows<4>());
       if (i > 0) {
         Eigen::Matrix<double, 3, 3> Tl = -T.topRows<3>();
         Tl.noalias() -= B.W.topRows<3>() * B.Xmu;
         const Body& P = body_[i - 1];
-        T.noalias() = -(P.gE.transpose() * Tl);
+        T = mulT(P.gE, -Tl);
         if (ee) T.bottomRows<3>().noalias() += P.Up.block<3, 3>(kE, kE) * B.Xmu.bottomRows<3>();
         else T.noalias() += P.Up * B.Xmu;
       }
@@ -259,7 +290,7 @@ void ShiftedSolver3::factor(double c) {
       applyPhi(i, body_[i - 1].Xmu, X);
       body_[i].Xmu += X;
     }
-    Sm_inv_ = (body_[nb_ - 1].Gam * body_[nb_ - 1].Xmu).inverse();
+    Sm_inv_ = mul(body_[nb_ - 1].Gam, body_[nb_ - 1].Xmu).inverse();
   }
   if (nt_ > 0) {  // spins: diagonal J_i + s (joints at i), off-diagonal -s between spinning rows i, i+1
     const double s = c * twistDamping(model_) + c * c * twistStiffness(model_);
@@ -285,14 +316,20 @@ void ShiftedSolver3::assembleRhs(int blk, const VecX& b, Vec11& r) const {
   r.setZero();
   if (blk > 0) {
     const Body& P = body_[blk - 1];
-    r.head<3>() = -(P.gE * bv(blk - 1) - c * (P.rE * bq(blk - 1)));
+    r.head<3>() = c * mul(P.rE, bq(blk - 1)) - mul(P.gE, bv(blk - 1));
   }
   if (blk == nb_) return;  // the pinned end's block
   const Body& B = body_[blk];
   r.head<3>() += bv(blk).segment<3>(kA) - (c * w2) * bq(blk).segment<3>(kA);
   Vec7 kq = S_.K_diag[blk] * bq(blk);
-  if (blk > 0) kq.noalias() += S_.K_sub[blk] * bq(blk - 1);
-  if (blk + 1 < nb_) kq.noalias() += B.Kup * bq(blk + 1);
+  if (blk > 0) {
+    if (B.ee) kq.tail<3>().noalias() += S_.K_sub[blk].block<3, 3>(kE, kE) * bq(blk - 1).tail<3>();
+    else kq.noalias() += S_.K_sub[blk] * bq(blk - 1);
+  }
+  if (blk + 1 < nb_) {
+    if (body_[blk + 1].ee) kq.tail<3>().noalias() += B.Kup.block<3, 3>(kE, kE) * bq(blk + 1).tail<3>();
+    else kq.noalias() += B.Kup * bq(blk + 1);
+  }
   r.segment<7>(3).noalias() = B.M * bv(blk) - c * kq;
   r[10] = B.gu.dot(bv(blk)) - c * B.ru.dot(bq(blk));
 }
@@ -309,15 +346,15 @@ void ShiftedSolver3::solve(const VecX& b, VecX& x) {
     y.head<4>() = phi.segment<4>(kDelta3);
     y.head<4>().noalias() -= B.W.block<4, 3>(kDelta3, kA) * a;
     y[4] = r[10];
-    luSolve<5>(B.R, B.piv, y.data());
     B.x.head<3>() = a;
-    B.x.tail<4>() = y.head<4>();
+    B.x.tail<4>().noalias() = B.Ri * y;
     if (i > 0) {
       Vec3 l = phi.head<3>();
       l.noalias() -= B.W.topRows<3>() * B.x;
       const Body& P = body_[i - 1];
-      snext.noalias() = -(P.gE.transpose() * l);
-      snext.noalias() += P.Up * B.x;
+      snext = mulT(P.gE, -l);
+      if (B.ee) snext.tail<3>().noalias() += P.Up.block<3, 3>(kE, kE) * B.x.tail<3>();
+      else snext.noalias() += P.Up * B.x;
     }
   }
   Vec7 px;
@@ -327,7 +364,7 @@ void ShiftedSolver3::solve(const VecX& b, VecX& x) {
   }
   if (pinned_) {
     assembleRhs(nb_, b, r);
-    const Vec3 mu = -(Sm_inv_ * (r.head<3>() + body_[nb_ - 1].Gam * body_[nb_ - 1].x));
+    const Vec3 mu = -(Sm_inv_ * (r.head<3>() + mul(body_[nb_ - 1].Gam, body_[nb_ - 1].x)));
     for (int i = 0; i < nb_; ++i) body_[i].x.noalias() += body_[i].Xmu * mu;
   }
   for (int i = 0; i < nb_; ++i) {

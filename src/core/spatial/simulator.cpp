@@ -3,6 +3,7 @@
 #include "riser_sim/spatial/force_term.h"
 #include "riser_sim/stability_estimate.h"
 
+#include <algorithm>
 #include <limits>
 #include <stdexcept>
 
@@ -26,6 +27,8 @@ SpatialSimulator::SpatialSimulator(std::shared_ptr<const SpatialModel> model, st
   const int n = 2 * formulation_.positionSize() + 1;  // [q; v; W]
   y_.setZero(n);
   dy_.setZero(n);
+  y_lin_.setZero(n);
+  newton_ = kind == IntegratorKind::kMidpoint || kind == IntegratorKind::kGeneralizedAlpha;
   integrator_->reset(StateLayout{n, formulation_.positionSize()});
 }
 
@@ -36,6 +39,7 @@ void SpatialSimulator::reset(const Kinematics3& kin, double t0) {
   formulation_.project(y_);
   formulation_.initTwist(y_, *data_);
   integrator_->restart();
+  force_lin_ = true;
 }
 
 void SpatialSimulator::setTwist(const VecX& theta, const VecX& omega) {
@@ -46,11 +50,13 @@ void SpatialSimulator::setTwist(const VecX& theta, const VecX& omega) {
   y_.segment(p + nq, nt) = omega;
   if (firstSpin(*model_) > 0) y_[nq] = y_[p + nq] = 0.0;  // rfe 0 is held by the hang-off
   integrator_->restart();
+  force_lin_ = true;
 }
 
 void SpatialSimulator::rhs(double t, const VecX& y, VecX& dy) {
   const PointMotion3 top = top_->at(t);
   formulation_.derivative(t, y, top, dy, *data_);
+  ++evaluations_;
   // dW/dt: power of the top motion (force on rfe 0 at A_0 is -λ_0), of a moving bottom (force on rfe n at
   // E_n is λ_{n+1} = -reactions.bottom; 0 when fixed or free) and of the non-conservative terms.
   double p_bottom = 0.0;
@@ -58,8 +64,57 @@ void SpatialSimulator::rhs(double t, const VecX& y, VecX& dy) {
   dy[dy.size() - 1] = -data_->reactions.top.dot(top.v) + p_bottom + data_->term_power;
 }
 
+// Deferred to the first solve: linearised there at the last evaluation when one was made since (the
+// implicit schemes' Newton predictor z0, where the stage is solved: fewer iterations than at (t, y)),
+// else at (t, y) (Rosenbrock2: its step's first solve follows the linearisation directly).
+// Newton schemes keep the last factor instead while the steps converge in kReuseSolves (3) solves, for at most
+// kReuseSteps steps (simplified Newton across steps: the same solution to Newton's tolerance); a step
+// that needs more is relinearised at its current iterate, and reuse waits 1, 3, 7, ... 63 steps after it.
 void SpatialSimulator::linearize(double t, const VecX& y) {
-  formulation_.linearize(t, y, top_->at(t), *data_, *shifted_);
+  if (reused_) backoff_ = 0;  // the last step converged on the kept factor
+  if (wait_ > 0) --wait_;
+  const bool reuse = newton_ && !force_lin_ && shifted_->factored() && solves_ <= kReuseSolves &&
+                     age_ < kReuseSteps && wait_ == 0;
+  solves_ = 0;
+  reused_ = reuse;
+  force_lin_ = false;
+  if (reuse) {
+    ++age_;
+    return;
+  }
+  age_ = 0;
+  t_lin_ = t;
+  y_lin_ = y;
+  evaluations_at_lin_ = evaluations_;
+  lin_pending_ = true;
+}
+
+void SpatialSimulator::factorShifted(double c) {
+  c_pending_ = c;
+  if (!lin_pending_ && !(shifted_->factored() && shifted_->c() == c)) formulation_.factorShifted(c, *shifted_);
+}
+
+void SpatialSimulator::solveShifted(const VecX& b, VecX& x) {
+  if (reused_ && ++solves_ > kReuseSolves && evaluations_ != evaluations_at_solve_) {  // converging slowly
+    shifted_->setLinearization(*data_, data_->acc);
+    formulation_.factorShifted(c_pending_, *shifted_);
+    reused_ = false;
+    age_ = 0;
+    backoff_ = std::min(2 * backoff_ + 1, 63);
+    wait_ = backoff_;
+  } else if (!reused_) {
+    ++solves_;
+  }
+  evaluations_at_solve_ = evaluations_;
+  if (lin_pending_) {
+    if (evaluations_ != evaluations_at_lin_)
+      shifted_->setLinearization(*data_, data_->acc);
+    else
+      formulation_.linearize(t_lin_, y_lin_, top_->at(t_lin_), *data_, *shifted_);
+    formulation_.factorShifted(c_pending_, *shifted_);
+    lin_pending_ = false;
+  }
+  formulation_.solveShifted(b, x, *shifted_);
 }
 
 bool SpatialSimulator::step(double h) {
