@@ -59,6 +59,21 @@ inline std::shared_ptr<spatial::SpatialModel> spatialModel(const LineSpec& s, co
   return m;
 }
 
+// The twist-only shaft of the torsion tests: a 10 m line of 10 kg/m hanging straight, inextensible, no bending,
+// a 50 kg end; torsion t when t.stiffness > 0 (GJ, polar inertias, top: held, free or spring-held).
+inline std::shared_ptr<spatial::SpatialModel> twistShaft(int n, const spatial::TorsionProperties& t) {
+  LineSpec s;
+  s.length = 10.0;
+  s.segments = n;
+  s.props.mass_per_length = 10.0;
+  s.options.bending = false;
+  s.options.axial_flexibility = false;
+  s.end_mass = 50.0;
+  auto m = spatialModel(s, Vec3(0, 0, -s.g));
+  if (t.stiffness > 0.0) m->setTorsion(t);
+  return m;
+}
+
 // Planar chain at rest with Δ = 0, A_0 = top, rfe i at angle phi[i] from the x axis.
 inline Kinematics planarChain(const Model& m, const Vec2& top, const std::vector<double>& phi) {
   Kinematics kin(m.bodies());

@@ -34,20 +34,11 @@ double firstRoot(double mu) {
 constexpr double kL = 10.0, kGJ = 1e4, kJend = 10.0;
 
 std::shared_ptr<SpatialModel> pendulumModel(int n, double rho_ip) {
-  spatial_test::LineSpec s;
-  s.length = kL;
-  s.segments = n;
-  s.props.mass_per_length = 10.0;
-  s.options.bending = false;
-  s.options.axial_flexibility = false;
-  s.end_mass = 50.0;
-  auto m = spatial_test::spatialModel(s, Vec3(0, 0, -s.g));
   TorsionProperties t;
   t.stiffness = kGJ;
   t.polar_inertia = rho_ip;
   t.end_polar_inertia = kJend;
-  m->setTorsion(t);
-  return m;
+  return spatial_test::twistShaft(n, t);  // L = kL
 }
 
 // Period [s] of the end's twist, from upward zero crossings over `periods` periods, starting in the

@@ -19,22 +19,13 @@ using namespace spatial;
 constexpr double kL = 10.0, kGJ = 1e4, kRhoIp = 1.0, kJend = 10.0;
 
 std::shared_ptr<SpatialModel> freeShaft(int n, double damping) {
-  spatial_test::LineSpec s;
-  s.length = kL;
-  s.segments = n;
-  s.props.mass_per_length = 10.0;
-  s.options.bending = false;
-  s.options.axial_flexibility = false;
-  s.end_mass = 50.0;
-  auto m = spatial_test::spatialModel(s, Vec3(0, 0, -s.g));
   TorsionProperties t;
   t.stiffness = kGJ;
   t.polar_inertia = kRhoIp;
   t.damping = damping;
   t.end_polar_inertia = kJend;
   t.free_top = true;
-  m->setTorsion(t);
-  return m;
+  return spatial_test::twistShaft(n, t);  // L = kL
 }
 
 Kinematics3 straightDown(const SpatialModel& m) {

@@ -57,24 +57,15 @@ std::vector<double> springRoots(double mu, double kappa, int count) {
 }
 
 std::shared_ptr<SpatialModel> shaft(int n, bool torsion, bool free_top = false, double top_stiffness = 0.0) {
-  spatial_test::LineSpec s;
-  s.length = kL;
-  s.segments = n;
-  s.props.mass_per_length = 10.0;
-  s.options.bending = false;
-  s.options.axial_flexibility = false;
-  s.end_mass = 50.0;
-  auto m = spatial_test::spatialModel(s, Vec3(0, 0, -s.g));
+  TorsionProperties t;  // stiffness 0: torsion off
   if (torsion) {
-    TorsionProperties t;
     t.stiffness = kGJ;
     t.polar_inertia = kRhoIp;
     t.end_polar_inertia = kJend;
     t.free_top = free_top;
     t.top_stiffness = top_stiffness;
-    m->setTorsion(t);
   }
-  return m;
+  return spatial_test::twistShaft(n, t);  // L = kL
 }
 
 SpatialModalResult modes(const SpatialModel& m) {
