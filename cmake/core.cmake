@@ -38,6 +38,7 @@ add_library(riser_sim_core
   src/core/run_builder.cpp
   src/core/scene_sections.cpp
   src/core/scene_sea_sections.cpp
+  src/core/scene_end_sections.cpp
   src/core/scene_yaml.cpp
   src/core/spatial/run_builder.cpp
   src/core/spatial/external_motion3.cpp

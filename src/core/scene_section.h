@@ -194,5 +194,9 @@ void parseHydrodynamics(const Section& root, Scene& s);
 void parseSeabed(const Section& root, Scene& s);
 void parseInternalFluid(const Section& root, Scene& s);
 
+// The ends' sections (scene_end_sections.cpp): top, bottom.
+void parseTop(const Section& root, Scene& s);
+void parseBottom(const Section& root, Scene& s);
+
 }  // namespace scene_detail
 }  // namespace riser_sim
