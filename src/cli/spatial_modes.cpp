@@ -1,6 +1,5 @@
 #include "spatial_modes.h"
 
-#include <Eigen/Eigenvalues>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -9,6 +8,7 @@
 #include "output_file.h"
 #include "riser_sim/spatial/forces/end_load.h"
 #include "riser_sim/spatial/modal.h"
+#include "riser_sim/spatial/modal_characters.h"
 #include "riser_sim/spatial/run_builder.h"
 
 namespace riser_sim {
@@ -17,52 +17,11 @@ namespace cli {
 namespace {
 
 using spatial::Vec3;
+using spatial::kZeroOmega2;
 
 int fail(int code, const std::string& message) {
   std::fprintf(stderr, "riser_sim_cli: error: %s\n", message.c_str());
   return code;
-}
-
-constexpr double kZeroOmega2 = 1e-12;  // as the planar table: ω² below this share of the largest is zero
-constexpr double kPairTolerance = 1e-6;  // relative ω² gap of a degenerate pair
-
-// Σ_p (d_p·n)² and the cross term of two modes' displacements: the out-of-plane quadratic form.
-double outOfPlane(const spatial::SpatialMode& a, const spatial::SpatialMode& b, const Vec3& n) {
-  double s = 0.0;
-  for (size_t p = 0; p < a.displacement.size(); ++p) s += a.displacement[p].dot(n) * b.displacement[p].dot(n);
-  return s;
-}
-
-double total(const spatial::SpatialMode& a) {
-  double s = 0.0;
-  for (const Vec3& v : a.displacement) s += v.squaredNorm();
-  return s;
-}
-
-// A degenerate pair's modes span a plane of shapes; any rotation of the pair is as good (M-orthonormal).
-// Rotate it so one is in the statics' plane and the other across it (eigenvectors of the out-of-plane form).
-void alignPair(spatial::SpatialMode& a, spatial::SpatialMode& b, const Vec3& n) {
-  Eigen::Matrix2d P;
-  P << outOfPlane(a, a, n), outOfPlane(a, b, n), outOfPlane(a, b, n), outOfPlane(b, b, n);
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> es(P);
-  const Eigen::Matrix2d R = es.eigenvectors();  // column 0: least out of plane
-  const VecX ta = a.theta, tb = b.theta;
-  const spatial::SpatialMode a0 = a, b0 = b;
-  a.theta = R(0, 0) * ta + R(1, 0) * tb;
-  b.theta = R(0, 1) * ta + R(1, 1) * tb;
-  for (size_t p = 0; p < a.displacement.size(); ++p) {
-    a.displacement[p] = R(0, 0) * a0.displacement[p] + R(1, 0) * b0.displacement[p];
-    b.displacement[p] = R(0, 1) * a0.displacement[p] + R(1, 1) * b0.displacement[p];
-  }
-}
-
-// As the planar table: axial when most of the kinetic energy moves along the line; torsional (line.torsion)
-// when most of it is in the spins.
-std::string character(const spatial::SpatialMode& m, const Vec3& n) {
-  if (m.torsional) return "torsional";
-  if (m.along_fraction > 0.5) return "axial";
-  const double t = total(m);
-  return t > 0.0 && outOfPlane(m, m, n) > 0.5 * t ? "out-of-plane" : "in-plane";
 }
 
 }  // namespace
@@ -89,13 +48,7 @@ int runSpatialModes(const Scene& scene, int count, const std::string& csv_path, 
   }
   const Vec3 n = Vec3::UnitZ().cross(init.plane_direction).normalized();  // normal of the statics' plane
   std::vector<spatial::SpatialMode>& modes = r.modes;
-  for (size_t k = 0; k + 1 < modes.size(); ++k)
-    if (character(modes[k], n) != "axial" && character(modes[k + 1], n) != "axial" && !modes[k].torsional &&
-        !modes[k + 1].torsional &&
-        std::abs(modes[k + 1].omega2 - modes[k].omega2) <= kPairTolerance * std::abs(modes[k + 1].omega2)) {
-      alignPair(modes[k], modes[k + 1], n);
-      ++k;
-    }
+  spatial::alignDegeneratePairs(modes, n);
   if (!quiet)
     std::fprintf(stderr,
                  "riser_sim_cli: 3D modes about the static state (%s, %s), %d coordinates; plane of in-plane modes "
@@ -119,7 +72,7 @@ int runSpatialModes(const Scene& scene, int count, const std::string& csv_path, 
       continue;
     }
     std::printf("%4zu %14.6g %16.6g %14.6g  %-12s %11.3f\n", k + 1, 2.0 * M_PI / m.omega, m.omega / (2.0 * M_PI),
-                m.omega, character(m, n).c_str(), m.along_fraction);
+                m.omega, spatial::modeCharacter(m, n), m.along_fraction);
   }
   if (!table.close()) return fail(kExitWriteFailed, "--modes: " + table.error());
   if (csv_path.empty()) return kExitOk;
@@ -140,7 +93,7 @@ int runSpatialModes(const Scene& scene, int count, const std::string& csv_path, 
       const double s = p < nb ? model->rfe(p).s_begin : scene.length;  // arc length, unstretched [m]
       const Vec3 u = scale * m.displacement[p];
       std::fprintf(f, "%zu,%.10g,%.10g,%s,%d,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g\n", k + 1, period, freq,
-                   character(m, n).c_str(), p, s, x.x() + 0.0, x.y() + 0.0, x.z() + 0.0, u.x() + 0.0, u.y() + 0.0,
+                   spatial::modeCharacter(m, n), p, s, x.x() + 0.0, x.y() + 0.0, x.z() + 0.0, u.x() + 0.0, u.y() + 0.0,
                    u.z() + 0.0);
     }
   }

@@ -1,50 +1,19 @@
 // ~modes for a 3D scene: the same analysis as riser_sim_cli --modes with space: spatial (src/cli/
 // spatial_modes.cpp), its table's periods, characters and axial shares, and its CSV's shapes.
-#include <Eigen/Eigenvalues>
 #include <cmath>
 #include <cstdio>
 #include <exception>
 
 #include "riser_sim/spatial/forces/end_load.h"
 #include "riser_sim/spatial/modal.h"
+#include "riser_sim/spatial/modal_characters.h"
 #include "riser_sim_ros/modes_service.h"
 
 namespace riser_sim_ros {
 
-namespace {
+using riser_sim::spatial::kZeroOmega2;
 using riser_sim::spatial::SpatialMode;
 using Vec3 = Eigen::Vector3d;
-
-constexpr double kZeroOmega2 = 1e-12;    // ω² below this share of the largest: no oscillation (the CLI's)
-constexpr double kPairTolerance = 1e-6;  // relative ω² gap of a degenerate pair (the CLI's)
-
-// Σ_p (d_p·n)(d'_p·n): the out-of-plane form of two modes' displacements.
-double outOfPlane(const SpatialMode& a, const SpatialMode& b, const Vec3& n) {
-  double s = 0.0;
-  for (size_t p = 0; p < a.displacement.size(); ++p) s += a.displacement[p].dot(n) * b.displacement[p].dot(n);
-  return s;
-}
-
-std::string character(const SpatialMode& m, const Vec3& n) {
-  if (m.torsional) return "torsional";  // most of the kinetic energy in the spins (line.torsion)
-  if (m.along_fraction > 0.5) return "axial";
-  double t = 0.0;
-  for (const Vec3& v : m.displacement) t += v.squaredNorm();
-  return t > 0.0 && outOfPlane(m, m, n) > 0.5 * t ? "out-of-plane" : "in-plane";
-}
-
-// A degenerate pair spans a plane of shapes: turned so one lies in the statics' plane, one across it.
-void alignPair(SpatialMode& a, SpatialMode& b, const Vec3& n) {
-  Eigen::Matrix2d P;
-  P << outOfPlane(a, a, n), outOfPlane(a, b, n), outOfPlane(a, b, n), outOfPlane(b, b, n);
-  const Eigen::Matrix2d R = Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(P).eigenvectors();
-  const SpatialMode a0 = a, b0 = b;
-  for (size_t p = 0; p < a.displacement.size(); ++p) {
-    a.displacement[p] = R(0, 0) * a0.displacement[p] + R(1, 0) * b0.displacement[p];
-    b.displacement[p] = R(0, 1) * a0.displacement[p] + R(1, 1) * b0.displacement[p];
-  }
-}
-}  // namespace
 
 void computeModesResponse3(const riser_sim::Scene& scene, const riser_sim::spatial::InitialState3& initial, int count,
                            riser_sim::Modes::Response& res) {
@@ -78,12 +47,7 @@ void computeModesResponse3(const riser_sim::Scene& scene, const riser_sim::spati
   }
   const Vec3 n = Vec3::UnitZ().cross(initial.plane_direction).normalized();  // the statics' plane's normal
   std::vector<SpatialMode>& modes = r.modes;
-  for (size_t k = 0; k + 1 < modes.size(); ++k)
-    if (character(modes[k], n) != "axial" && character(modes[k + 1], n) != "axial" && !modes[k].torsional &&
-        !modes[k + 1].torsional && std::abs(modes[k + 1].omega2 - modes[k].omega2) <= kPairTolerance * std::abs(modes[k + 1].omega2)) {
-      alignPair(modes[k], modes[k + 1], n);
-      ++k;
-    }
+  sp::alignDegeneratePairs(modes, n);
   double big = 0.0;
   for (const SpatialMode& m : modes) big = std::max(big, std::abs(m.omega2));
   const int nb = model->bodies();
@@ -99,7 +63,7 @@ void computeModesResponse3(const riser_sim::Scene& scene, const riser_sim::spati
     const bool oscillates = m.omega2 > kZeroOmega2 * big && m.omega > 0.0;
     res.periods.push_back(oscillates ? 2.0 * M_PI / m.omega : 0.0);
     res.frequencies.push_back(oscillates ? m.omega / (2.0 * M_PI) : 0.0);
-    res.characters.push_back(character(m, n));
+    res.characters.push_back(sp::modeCharacter(m, n));
     res.axial_share.push_back(m.along_fraction);
     double scale = 0.0;
     for (const Vec3& v : m.displacement) scale = std::max(scale, v.norm());
