@@ -8,6 +8,7 @@
 //   Gentle (tan θ < μ): at the creep speed v_c = v_s r / sqrt(1 - r²), r = tan θ / μ, it needs ~0; held still it
 //   carries m g sin θ (the smoothed friction vanishes at rest: a free line creeps at v_c, never faster);
 // - turning the heading turns the run; a line hanging onto the slope starts in a checked equilibrium and stays;
+// - a pinned end on the slope (downhill, uphill, across the fall line) starts at rest, its forces balanced;
 // - the keys refused where they do not apply, naming them.
 #include <gtest/gtest.h>
 
@@ -284,17 +285,86 @@ TEST(SpatialSeabedSlope, KeysRefusedWhereTheyDoNotApply) {
   refused("space: spatial\nseabed: {level: -50.0, stiffness_normal: 1.0e5, slope: -1.0}\n", "seabed.slope");
   // A planar scene takes slope 0 (the level seabed), whatever the heading.
   EXPECT_NO_THROW(loadSceneText(base + "seabed: {level: -50.0, stiffness_normal: 1.0e5, slope: 0.0, slope_heading: 20.0}\n", "ok"));
-  // Ends other than free are not solved on a slope: said naming the key.
-  const Scene pinned = loadSceneText(base + R"(space: spatial
-bottom: {type: pinned, position: [50.0, 0.0, -45.0]}
-initial: {type: between_points}
+  // A displaced end is solved clear of the slope only (its end force is the planar one): said naming the key.
+  const Scene displaced = loadSceneText(base + R"(space: spatial
+initial: {type: displaced, end_offset: [20.0, 0.0]}
 seabed: {level: -50.0, stiffness_normal: 1.0e5, slope: 5.0}
-)", "pinned");
+)", "displaced");
   try {
-    SpatialRun run(pinned);
-    ADD_FAILURE() << "a pinned end on a slope was solved";
+    SpatialRun run(displaced);
+    ADD_FAILURE() << "a displaced end touching a slope was solved";
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("seabed.slope"), std::string::npos) << e.what();
+  }
+  // Clear of it, the planar equilibrium holds (the slope below the end, 30 m down).
+  EXPECT_NO_THROW(SpatialRun(loadSceneText(base + R"(space: spatial
+initial: {type: displaced, end_offset: [20.0, 0.0]}
+seabed: {level: -90.0, stiffness_normal: 1.0e5, slope: 5.0}
+)", "clear")));
+}
+
+// 85 m between the top at z = 0 and an anchor on a seabed 40 m down at the top's vertical, rising 8 deg towards
+// 30 deg, 60 m away horizontally downhill, uphill or across the fall line: the planar statics on a level seabed at
+// the anchor, relaxed in 3D. At rest the friction is zero, so the forces on the line (the holders', the weight)
+// less the seabed's, which is along the normal, sum to at most M a_max (the rest check): their part in the plane
+// is that small. Uphill the laid part hangs in tension down the fall line, in the vertical plane; across it, it
+// bows downhill out of that plane; downhill its weight pushes it onto the anchor (frictionless at rest, it may
+// buckle sideways: not checked).
+TEST(SpatialSeabedSlope, PinnedOnTheSlopeStartsAtRest) {
+  const double theta = 8.0 * kDeg, psi = 30.0 * kDeg, level = -40.0, span = 60.0, M = 80.0 * 85.0, g = 9.81;
+  const Vec3 n = normalOf(theta, psi), uphill(std::cos(psi), std::sin(psi), 0.0);
+  const Vec3 across = Vec3::UnitZ().cross(uphill);
+  for (const char* where : {"downhill", "uphill", "across"}) {
+    const std::string w = where;
+    const Vec3 u = w == "downhill" ? Vec3(-uphill) : w == "uphill" ? uphill : across;
+    Vec3 anchor = span * u;
+    anchor.z() = level + std::tan(theta) * uphill.dot(anchor);
+    const Scene s = loadSceneText(R"(space: spatial
+line: {length: 85.0, elements: 17, EA: 1.0e7, EI: 1.0e4, mass_per_length: 80.0, axial_damping: 1.0e4, bending_damping: 100.0}
+top: {position: [0.0, 0.0, 0.0]}
+bottom: {type: pinned, position: )" + vec(anchor) + R"(}
+initial: {type: between_points}
+seabed: {level: -40.0, stiffness_normal: 2.0e5, damping_normal: 2.0e3, friction_axial: 0.5, friction_lateral: 0.8, slope: 8.0, slope_heading: 30.0}
+solver: {integrator: midpoint, dt: 0.01}
+)", where);
+    SpatialRun run(s);
+    const InitialState3& init = run.initial();
+    EXPECT_TRUE(init.equilibrium) << where;
+    EXPECT_LE(init.max_acceleration, init.acceleration_bound) << where;
+    const Seabed3 bed(s.seabed, Vec3(0.0, 0.0, -g));
+    const LineOutputs3& o = run.outputs();
+    int on = 0;
+    double deepest = 0.0, bow = 0.0;
+    const Vec3 side = Vec3::UnitZ().cross(u);  // normal to the vertical plane through the top and the anchor
+    for (const Vec3& p : o.points) {
+      on += bed.penetration(p) > 0.0;
+      deepest = std::max(deepest, bed.penetration(p));
+      // Off the plane, downhill positive (across) or either way (along the fall line: the problem is planar).
+      const double off = w == "across" ? -side.dot(p) * (side.dot(uphill) > 0.0 ? 1.0 : -1.0) : std::abs(side.dot(p));
+      // (downhill: printed)
+      bow = std::max(bow, off);
+    }
+    EXPECT_GE(on, 4) << where;
+    EXPECT_LE(deepest, 2.0 * 80.0 * 5.0 * g / 2.0e5) << where;  // the sink of at most two segments' weight
+    EXPECT_LE((o.points.back() - anchor).norm(), 1e-9) << where;
+    const Vec3 sum = -o.top_force - o.bottom_force + M * Vec3(0.0, 0.0, -g);  // all but the seabed's
+    const Vec3 in_plane = sum - sum.dot(n) * n;
+    EXPECT_LE(in_plane.norm(), M * init.max_acceleration + 1e-9 * M * g) << where;
+    EXPECT_GT(-sum.dot(n), 0.05 * M * g) << where;  // the slope carries part of the line
+    if (w == "across") EXPECT_GT(bow, 0.5) << "the part on the slope bows downhill";
+    if (w == "uphill") EXPECT_LE(bow, 1e-6) << "uphill: in the vertical plane";
+    double moved = 0.0;
+    const AlignedVector<Vec3> p0 = o.points;
+    for (int k = 0; k < 100; ++k) {
+      ASSERT_TRUE(run.step()) << run.divergenceReason();
+      for (size_t i = 0; i < p0.size(); ++i) moved = std::max(moved, (run.outputs().points[i] - p0[i]).norm());
+    }
+    EXPECT_LE(moved, 1e-5) << where;
+    std::printf("[ measured ] pinned %s on an 8 deg slope: %s; acceleration at rest %.2e m/s^2 (bound %.2e); %d "
+                "points on it, deepest %.3g m, bow %.3g m; forces in the plane %.2e N (bound %.2e), on the slope %.4g "
+                "N of %.4g; moved %.2e m in 1 s\n", where, init.about.c_str(), init.max_acceleration,
+                init.acceleration_bound, on, deepest, bow, in_plane.norm(), M * init.max_acceleration + 1e-9 * M * g,
+                -sum.dot(n), M * g, moved);
   }
 }
 

@@ -111,16 +111,15 @@ InitialState3 solveInitialState3(const Scene& scene, const Vec3& top) {
   const Vec2 cur = scene.water.enabled ? currentDirection(scene.water.current) : Vec2::Zero();
   const bool free_hang = kind == InitialKind::kHanging || (kind == InitialKind::kDisplaced && scene.initial.end_offset.norm() == 0.0);
   if (free_hang && cur.norm() > 0.0) u = cur;
-  // A sloped seabed: a free end lies down its fall line (the plane downhill, unless a current sets it); the guess
-  // is the planar statics on a level seabed at the slope's height on the top's vertical (the line's footprint
-  // downhill of it is above the slope), relaxed in 3D. Other ends are not solved on a slope.
+  // A sloped seabed: the guess is the planar statics on a level seabed at the slope's height somewhere under the
+  // line, relaxed in 3D where it touches. A free end lies down the fall line (the plane downhill, unless a current
+  // sets it), the level the slope's on the top's vertical (the footprint downhill of it is above the slope). A
+  // pinned end: the level at the anchor (which then lies on it as in 2D). A displaced end: the higher of the
+  // two (the guess is above the slope); it is solved clear of the slope only (its end force is the planar one).
   const SeabedSpec& bed = scene.seabed;
   const bool sloped = bed.enabled && bed.slope > 0.0;
   const Vec2 uphill(std::cos(bed.slope_heading), std::sin(bed.slope_heading));
-  if (sloped && kind != InitialKind::kStraight && !free_hang)
-    throw std::runtime_error("initial: seabed.slope: the statics on a sloped seabed are solved for a free end only "
-                             "(initial.type hanging: the planar statics relaxed in 3D); initial.type " +
-                             std::string(name(kind)) + " is not (use a level seabed or initial.type straight)");
+  const auto slopeHeight = [&](const Vec2& p) { return bed.level + std::tan(bed.slope) * uphill.dot(p); };
   if (sloped && free_hang && cur.norm() == 0.0) u = -uphill;
   const Mat3 R = yaw(u);
   const Vec3 origin(top.x(), top.y(), 0.0);
@@ -137,7 +136,10 @@ InitialState3 solveInitialState3(const Scene& scene, const Vec3& top) {
   double current_across = 0.0;
   ps.water.current = planarCurrent(scene.water.current, u, current_across);
   ps.water.waves = WaveSpec();  // the statics never see the waves
-  if (sloped) ps.seabed.level = bed.level + std::tan(bed.slope) * uphill.dot(top.head<2>());
+  if (sloped && kind == InitialKind::kBetweenPoints) ps.seabed.level = slopeHeight(scene.bottom_point3.head<2>());
+  else if (sloped && !free_hang)
+    ps.seabed.level = std::max(slopeHeight(top.head<2>()), slopeHeight(top.head<2>() + scene.initial.end_offset));
+  else if (sloped) ps.seabed.level = slopeHeight(top.head<2>());
   ps.seabed.slope = ps.seabed.slope_heading = 0.0;
   const std::shared_ptr<Model> planar = buildModel(ps);
 
@@ -196,11 +198,16 @@ InitialState3 solveInitialState3(const Scene& scene, const Vec3& top) {
   init.max_acceleration = restAcceleration(scene, init.kin, init.end_force, top, where);
   // On a slope: relaxed when the guess touches it (off the seabed it is the planar equilibrium).
   const bool relax_slope = sloped && !(init.max_acceleration <= init.acceleration_bound);
+  if (relax_slope && kind == InitialKind::kDisplaced && !free_hang)
+    throw std::runtime_error("initial: seabed.slope: a displaced end is solved clear of a sloped seabed only (its end "
+                             "force is the planar statics'), but this line touches it (acceleration at rest " +
+                             fmt(init.max_acceleration) + " m/s^2 at rfe " + std::to_string(where) +
+                             "); use initial.type between_points with bottom.type pinned, or a level seabed");
   if (relax || relax_slope) {
     const Relaxed3 r = relaxToRest(scene, init.kin, top, init.acceleration_bound);
     init.kin = r.kin;
     init.about = std::string(name(kind)) + " equilibrium " +
-                 (relax ? "in the current across the plane" : "on the sloped seabed, in the plane") + " along (" +
+                 (relax ? "in the current across the plane" : "on the sloped seabed, from the plane") + " along (" +
                  fmt(u.x()) + ", " + fmt(u.y()) + "): the planar statics" +
                  (relax ? " with the current projected" : " on a level seabed") + ", relaxed in 3D (" + fmt(r.time) +
                  " s, " + std::to_string(r.steps) + " steps)";
