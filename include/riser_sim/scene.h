@@ -45,6 +45,7 @@ struct FlexJointSpec {
   bool has_axis = false;       // axis given; else the line's direction there in the initial state
   Eigen::Vector3d axis = Eigen::Vector3d::Zero();  // along the line, away from the holder
   double torsional_stiffness = 0.0;  // k_t [N m/rad] about the line's axis (top, line.torsion); 0: none
+  double torsional_damping = 0.0;    // c_t [N m s/rad] beside k_t: moment c_t m_t' on the twist rate
 };
 
 struct InitialSpec {

@@ -61,7 +61,8 @@ void parseMotion(const Section& motion, TopMotionSpec& spec, bool planar) {
 FlexJointSpec parseFlexJoint(const Section& end, bool planar) {
   FlexJointSpec j;
   if (!end.has("flex_joint")) return j;
-  const Section fj = end.section("flex_joint", {"stiffness", "damping", "axis", "torsional_stiffness"});
+  const Section fj = end.section("flex_joint", {"stiffness", "damping", "axis", "torsional_stiffness",
+                                                      "torsional_damping"});
   if (planar)
     throw SceneError(end.key("flex_joint"), "needs space: spatial (the planar core has pinned ends only)");
   j.enabled = true;
@@ -72,6 +73,12 @@ FlexJointSpec parseFlexJoint(const Section& end, bool planar) {
   if (fj.has("torsional_stiffness")) {  // checked against the ends and line.torsion by the callers
     j.torsional_stiffness = fj.number("torsional_stiffness");
     requirePositive(fj.key("torsional_stiffness"), j.torsional_stiffness);
+  }
+  if (fj.has("torsional_damping")) {
+    if (!fj.has("torsional_stiffness"))
+      throw SceneError(fj.key("torsional_damping"), "needs torsional_stiffness (the damper acts beside its spring)");
+    j.torsional_damping = fj.number("torsional_damping");
+    requireNonNegative(fj.key("torsional_damping"), j.torsional_damping);
   }
   j.has_axis = fj.has("axis");
   if (j.has_axis) {

@@ -115,6 +115,13 @@ TEST(CliSpatialTorsion, BadKeysAreNamed) {
       {"--set space=spatial --set line.torsion.stiffness=1e4 --set line.torsion.polar_inertia=1 "
        "--set top.flex_joint.stiffness=1e4 --set top.flex_joint.torsional_stiffness=-1",
        "top.flex_joint.torsional_stiffness: must be > 0"},
+      {"--set space=spatial --set line.torsion.stiffness=1e4 --set line.torsion.polar_inertia=1 "
+       "--set top.flex_joint.stiffness=1e4 --set top.flex_joint.torsional_damping=5",
+       "top.flex_joint.torsional_damping: needs torsional_stiffness"},
+      {"--set space=spatial --set line.torsion.stiffness=1e4 --set line.torsion.polar_inertia=1 "
+       "--set top.flex_joint.stiffness=1e4 --set top.flex_joint.torsional_stiffness=1e3 "
+       "--set top.flex_joint.torsional_damping=-1",
+       "top.flex_joint.torsional_damping: must be >= 0"},
   };
   for (const auto& c : cases) {
     SCOPED_TRACE(c.first);

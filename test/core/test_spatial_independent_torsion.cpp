@@ -14,7 +14,8 @@ namespace {
 using namespace spatial;
 using spatial_test::LineSpec;
 
-// The top's hold on the spin: the hang-off's (held), none (free), a torsion spring k_t = 500 N m/rad.
+// The top's hold on the spin: the hang-off's (held), none (free), a torsion spring k_t = 500 N m/rad with a
+// damper c_t = 30 N m s/rad.
 enum class Top { kHeld, kFree, kSpring };
 const char* name(Top t) { return t == Top::kHeld ? "held" : t == Top::kFree ? "free" : "spring"; }
 
@@ -22,6 +23,7 @@ TorsionProperties twistProps(double damping, Top top = Top::kHeld) {
   TorsionProperties p;
   p.free_top = top == Top::kFree;
   p.top_stiffness = top == Top::kSpring ? 500.0 : 0.0;
+  p.top_damping = top == Top::kSpring ? 30.0 : 0.0;  // its damper too (both formulations' own code)
   p.stiffness = 1e3;
   p.polar_inertia = 0.05;
   p.damping = damping;

@@ -188,5 +188,50 @@ TEST(SpatialTorsionModes, BendingModesUnchangedByTorsion) {
   for (const SpatialMode& m : off.modes) EXPECT_EQ(m.torsion_fraction, 0.0);
 }
 
+// A pinned bottom turns freely about the line (free in twist): pinned where the hanging shaft's end rests, the
+// torsional modes are the free end's (x tan x = μ, above), while the pin takes out the pendulum modes. The
+// torsional ω agree to the finite-difference K's round-off; the pendulum's lowest ω² rises.
+// The shaft made extensible (EA 1e7 N; an inextensible line pinned at its length would be locked).
+std::shared_ptr<SpatialModel> extensibleShaft(int n, bool torsion) {
+  spatial_test::LineSpec s;
+  s.length = kL;
+  s.segments = n;
+  s.props.mass_per_length = 10.0;
+  s.props.EA = 1e7;
+  s.options.bending = false;
+  s.end_mass = 50.0;
+  auto m = spatial_test::spatialModel(s, Vec3(0, 0, -s.g));
+  TorsionProperties t;
+  t.stiffness = kGJ;
+  t.polar_inertia = kRhoIp;
+  t.end_polar_inertia = kJend;
+  if (torsion) m->setTorsion(t);
+  return m;
+}
+
+TEST(SpatialTorsionModes, PinnedBottomIsFreeInTwist) {
+  for (const bool torsion : {true, false}) {
+    auto free_end = extensibleShaft(16, torsion), pinned = extensibleShaft(16, torsion);
+    const SpatialModalResult rf = modes(*free_end);
+    pinned->setBottom(BottomBoundary::kPinned, rf.equilibrium.back().end());
+    const SpatialModalResult rp = computeSpatialModes(*pinned, spatialEquilibrium(*pinned, rf.equilibrium));
+    const std::vector<double> wf = torsional(rf), wp = torsional(rp);
+    ASSERT_EQ(wp.size(), wf.size());
+    ASSERT_EQ(int(wp.size()), torsion ? 16 : 0);
+    double worst = 0.0;
+    for (size_t k = 0; k < wf.size(); ++k) worst = std::max(worst, std::abs(wp[k] / wf[k] - 1.0));
+    EXPECT_LT(worst, 1e-8);
+    // The lowest non-torsional mode: the free end's pendulum, gone with the pin.
+    double lowest_free = HUGE_VAL, lowest_pinned = HUGE_VAL;
+    for (const SpatialMode& m : rf.modes) if (!m.torsional) lowest_free = std::min(lowest_free, m.omega2);
+    for (const SpatialMode& m : rp.modes) if (!m.torsional) lowest_pinned = std::min(lowest_pinned, m.omega2);
+    EXPECT_GT(lowest_pinned, 4.0 * lowest_free);
+    if (torsion)
+      std::printf("[torsion modes] pinned bottom, n = 16: %zu torsional ω vs the free end's: %.2e relative (first "
+                  "%.9f rad/s); lowest other ω² %.4g -> %.4g 1/s²\n", wp.size(), worst, wp[0], lowest_free,
+                  lowest_pinned);
+  }
+}
+
 }  // namespace
 }  // namespace riser_sim

@@ -28,6 +28,7 @@ struct TorsionProperties {
   // > 0: the top's spin is held by a torsion spring k_t [N m/rad] to the hang-off (a flex joint's torsional
   // stiffness), θ_0 free as with free_top; the spring's twist is m_t = θ_0 + angle from R(h -> e_0) r_h.
   double top_stiffness = 0.0;
+  double top_damping = 0.0;  // c_t [N m s/rad] beside k_t: the moment k_t m_t + c_t m_t'
 };
 
 // R(a -> b) x: the minimal rotation taking unit a to unit b (about a × b), applied to x. Singular at b = -a.
@@ -54,7 +55,7 @@ struct TwistData {
   std::vector<double> m, mdot, tau;  // per joint k (rfes k, k+1): twist [rad], its rate, moment k m + c m' [N m]
   AlignedVector<Vec3> kb;            // per joint
   std::vector<double> moment;        // per rfe: moment about e_i of the springs and dampers [N m]
-  double top_twist = 0.0, top_tau = 0.0;  // top spring (top_stiffness): its twist m_t [rad], moment k_t m_t [N m]
+  double top_twist = 0.0, top_tau = 0.0;  // top spring: its twist m_t [rad], moment k_t m_t + c_t m_t' [N m]
   void resize(int bodies);
 };
 

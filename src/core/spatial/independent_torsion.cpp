@@ -51,14 +51,17 @@ void IndependentFormulation3::addTwistForces(const VecX& y, const SphereCharts& 
     t.tau[j] = k * t.m[j] + c * t.mdot[j];
     power -= c * t.mdot[j] * t.mdot[j];
   }
-  // Top spring (flex joint's torsional stiffness): V_t = ½ k_t m_t², ∂m_t/∂φ_0 = 1,
+  // Top spring (flex joint's torsional stiffness) and damper: V_t = ½ k_t m_t², τ_t = k_t m_t + c_t m_t', ∂m_t/∂φ_0 = 1,
   // ∂m_t/∂e_0 = a(c_0, e_0) - a(h, e_0) (rfe 0's frame and the hang-off's transported one both spin).
   const double kt = model_.torsion().top_stiffness;
   t.top_tau = 0.0;
   if (kt > 0.0) {
     t.top_twist = topSpringTwist(d.kin, d.phi[0], charts.twist);
-    t.top_tau = kt * t.top_twist;
-    d.Q.segment<3>(kE) += t.top_tau * spinConnection(charts.twist.top_axis, d.kin[0].e);
+    const Vec3 a = spinConnection(charts.twist.top_axis, d.kin[0].e);
+    const double ct = model_.torsion().top_damping, rate = d.omega[0] - a.dot(d.kin[0].e_dot);  // m_t'
+    t.top_tau = kt * t.top_twist + ct * rate;
+    power -= ct * rate * rate;
+    d.Q.segment<3>(kE) += t.top_tau * a;
   }
   for (int i = 0; i < nb; ++i) {
     const double ti = i < nj ? t.tau[i] : 0.0, tp = i > 0 ? t.tau[i - 1] : 0.0;

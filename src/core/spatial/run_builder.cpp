@@ -132,7 +132,8 @@ std::shared_ptr<SpatialModel> buildSpatialModel(const Scene& scene) {
   if (scene.torsion.enabled) {
     const TorsionSpec& t = scene.torsion;
     model->setTorsion(TorsionProperties{t.stiffness, t.polar_inertia, t.damping, t.end_polar_inertia, t.free_top,
-                                        scene.top_flex_joint.torsional_stiffness});
+                                        scene.top_flex_joint.torsional_stiffness,
+                                        scene.top_flex_joint.torsional_damping});
   }
   return model;
 }

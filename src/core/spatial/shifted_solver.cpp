@@ -294,10 +294,11 @@ void ShiftedSolver3::factor(double c) {
   }
   if (nt_ > 0) {  // spins: diagonal J_i + s (joints at i), off-diagonal -s between spinning rows i, i+1
     const double s = c * twistDamping(model_) + c * c * twistStiffness(model_);
-    const int f0 = firstSpin(model_);  // 0: rfe 0 spins (free top; a top spring k_t adds c² k_t)
+    const int f0 = firstSpin(model_);  // 0: rfe 0 spins (free top; a top spring adds c c_t + c² k_t)
     for (int i = f0; i < nt_; ++i) {
       const int joints = (i > 0 ? 1 : 0) + (i + 1 < nt_ ? 1 : 0);
-      t_diag_[i] = polarInertia(model_, i) + s * joints + (i == 0 ? c * c * model_.torsion().top_stiffness : 0.0);
+      const TorsionProperties& t = model_.torsion();
+      t_diag_[i] = polarInertia(model_, i) + s * joints + (i == 0 ? c * t.top_damping + c * c * t.top_stiffness : 0.0);
       if (i > f0) {
         t_mul_[i] = -s / t_diag_[i - 1];
         t_diag_[i] -= t_mul_[i] * -s;

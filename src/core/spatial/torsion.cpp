@@ -116,9 +116,12 @@ double addTwistForces(const SpatialModel& model, const Kinematics3& kin, const d
     power -= c * d.mdot[j] * d.mdot[j];
   }
   const double kt = model.torsion().top_stiffness;
-  if (kt > 0.0) {  // the top spring: moment -k_t m_t on θ_0; on e_0 +k_t m_t a(h, e_0) (∂m_t/∂e_0 = -a(h, e_0))
+  if (kt > 0.0) {  // the top spring: moment -τ_t on θ_0; on e_0 +τ_t a(h, e_0) (∂m_t/∂e_0 = -a(h, e_0))
     d.top_twist = topSpringTwist(kin, theta[0], d.frames);
-    d.top_tau = kt * d.top_twist;
+    const Vec3 a = spinConnection(d.frames.top_axis, dir(kin[0]));
+    const double ct = model.torsion().top_damping, rate = omega[0] - a.dot(kin[0].e_dot);  // m_t'
+    d.top_tau = kt * d.top_twist + ct * rate;
+    power -= ct * rate * rate;
     Q.segment<3>(kE) += d.top_tau * spinConnection(d.frames.top_axis, dir(kin[0]));
   }
   for (int i = 0; i < nb; ++i) {
