@@ -52,6 +52,13 @@ struct SpatialModalResult {
 // of 1e-12 of the weight (and an end gap of 1e-12 of the length) in `iterations`.
 Kinematics3 spatialEquilibrium(const SpatialModel& model, const Kinematics3& guess, int iterations = 20,
                                const SpatialModalOptions& options = SpatialModalOptions());
+// Static equilibrium of a free end whose horizontal position is held at `xy` [m] by a horizontal force: Newton
+// on Q_θ + Φᵀ F = 0 with the gap E_xy - xy as a constraint and F = (F_x, F_y, 0) its multiplier (a dead load:
+// its geometric stiffness in K), from `guess` and `force` (in: the first guess of F; out: F [N], the force on
+// the line's end). Throws std::runtime_error when it does not reach a residual of 1e-12 of the weight and a
+// gap of 1e-12 of the length in `iterations`.
+Kinematics3 spatialEquilibriumHeldEnd(const SpatialModel& model, const Kinematics3& guess, const Vec2& xy, Vec3& force,
+                                      int iterations = 30, const SpatialModalOptions& options = SpatialModalOptions());
 // Modes about `equilibrium` (zero velocities); a pinned end held (the modes in the null space of its Jacobian,
 // the anchor's force a dead load). Throws std::runtime_error when the eigen-solve fails.
 SpatialModalResult computeSpatialModes(const SpatialModel& model, const Kinematics3& equilibrium,

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "riser_sim/spatial/forces/end_load.h"
+#include "riser_sim/spatial/modal.h"
 #include "riser_sim/spatial/natural_formulation.h"
 #include "riser_sim/spatial/relaxation.h"
 #include "riser_sim/spatial/run_builder.h"
@@ -161,11 +162,10 @@ InitialState3 solveInitialState3(const Scene& scene, const Vec3& top) {
       offPlane(scene.bottom_point3) > kPlanarTolerance * std::max(L, (scene.bottom_point3 - top).norm()))
     check = "bottom.position is " + fmt(offPlane(scene.bottom_point3)) + " m off the plane";
   // A current across the plane (or veering with depth): the planar statics with its projection give the guess
-  // that the 3D relaxation starts from (relaxation.h). An end held by a force (displaced) is not relaxed.
+  // that the 3D relaxation starts from (relaxation.h); a displaced end, held where it is by a horizontal force,
+  // is solved from it by Newton with that force as the multiplier of its horizontal position (modal.h).
   const bool relax = scene.water.enabled && current_across > 0.0;
-  if (check.empty() && relax && kind == InitialKind::kDisplaced)
-    check = "the current has " + fmt(current_across) + " m/s across the plane (environment.current; a displaced "
-            "end is solved in its plane only)";
+  const bool held_end = relax && kind == InitialKind::kDisplaced && !free_hang;
 
   const StaticsProblem problem = staticsProblem(ps);
   if (check.empty()) {
@@ -203,7 +203,20 @@ InitialState3 solveInitialState3(const Scene& scene, const Vec3& top) {
                              "force is the planar statics'), but this line touches it (acceleration at rest " +
                              fmt(init.max_acceleration) + " m/s^2 at rfe " + std::to_string(where) +
                              "); use initial.type between_points with bottom.type pinned, or a level seabed");
-  if (relax || relax_slope) {
+  if (held_end) {
+    const std::shared_ptr<SpatialModel> model = buildSpatialModel(stillWater(scene));
+    const Vec2 xy = top.head<2>() + scene.initial.end_offset;
+    try {
+      init.kin = spatialEquilibriumHeldEnd(*model, init.kin, xy, init.end_force);
+    } catch (const std::runtime_error& e) {
+      throw std::runtime_error("initial: the displaced end in the current across the plane (environment.current): " +
+                               std::string(e.what()));
+    }
+    init.about = "displaced equilibrium in the current across the plane: the planar statics with the current "
+                 "projected, then Newton in 3D with the end held at (" + fmt(xy.x()) + ", " + fmt(xy.y()) +
+                 ") by the horizontal force (" + fmt(init.end_force.x()) + ", " + fmt(init.end_force.y()) + ") N";
+    init.max_acceleration = restAcceleration(scene, init.kin, init.end_force, top, where);
+  } else if (relax || relax_slope) {
     const Relaxed3 r = relaxToRest(scene, init.kin, top, init.acceleration_bound);
     init.kin = r.kin;
     init.about = std::string(name(kind)) + " equilibrium " +

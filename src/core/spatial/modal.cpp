@@ -143,6 +143,52 @@ Kinematics3 spatialEquilibrium(const SpatialModel& model, const Kinematics3& gue
   throw std::runtime_error("spatialEquilibrium: Newton did not converge");
 }
 
+Kinematics3 spatialEquilibriumHeldEnd(const SpatialModel& model, const Kinematics3& guess, const Vec2& xy, Vec3& force,
+                                      int iterations, const SpatialModalOptions& options) {
+  if (model.bottom() == BottomBoundary::kPinned)
+    throw std::invalid_argument("spatialEquilibriumHeldEnd: a free end only (a pinned one is held in full)");
+  RestLine line(model, guess, options.fd_step);
+  VecX theta = line.theta();
+  const int p = line.size();
+  Eigen::Matrix<double, 3, 2> P = Eigen::Matrix<double, 3, 2>::Zero();  // λ = P ν: horizontal
+  P(0, 0) = P(1, 1) = 1.0;
+  Vec2 nu = force.head<2>();
+  double weight = 0.0;
+  for (int i = 0; i < model.bodies(); ++i) weight += model.rfe(i).mass;
+  weight *= model.gravity().norm();
+  const double L = model.line().length();
+  auto gap = [&] { return Vec2(line.kinematics(theta, model).back().end().head<2>() - xy); };
+  auto residual = [&] {  // as RestLine::residual, with the end's force ν
+    const VecX R = line.loaded(theta, P * nu);
+    double r = 0.0;
+    for (int c = 0; c < p; ++c) r = std::max(r, std::abs(R[c]) / (line.isDelta(c) ? weight : weight * L));
+    return r;
+  };
+  for (int it = 0; it <= iterations; ++it) {
+    if (residual() < 1e-12 && gap().norm() < 1e-12 * L) {
+      force = P * nu;
+      return line.kinematics(theta, model);
+    }
+    if (it == iterations) break;
+    // R(θ, ν) = Q + Φᵀ P ν: K_ν δ - Φᵀ P Δν = R, P ᵀ Φ δ = -gap (K_ν: ν's geometric stiffness in).
+    const MatX K = line.stiffness(theta, model, P * nu);
+    const MatX G = P.transpose() * line.endJacobian(theta);
+    MatX A = MatX::Zero(p + 2, p + 2);
+    A.topLeftCorner(p, p) = K;
+    A.topRightCorner(p, 2) = -G.transpose();
+    A.bottomLeftCorner(2, p) = G;
+    VecX b(p + 2);
+    b.head(p) = line.loaded(theta, P * nu);
+    b.tail(2) = -gap();
+    const VecX x = A.partialPivLu().solve(b);
+    theta += x.head(p);
+    nu += x.tail(2);
+  }
+  throw std::runtime_error("the 3D equilibrium with the end held horizontally did not converge in " +
+                           std::to_string(iterations) + " Newton iterations (residual " + std::to_string(residual()) +
+                           " of the weight, gap " + std::to_string(gap().norm()) + " m)");
+}
+
 SpatialModalResult computeSpatialModes(const SpatialModel& model, const Kinematics3& equilibrium,
                                        const SpatialModalOptions& options) {
   if (!(options.fd_step > 0.0)) throw std::invalid_argument("spatial modal fd_step: must be > 0");
