@@ -31,9 +31,10 @@ void writeRow(std::FILE* f, const std::vector<double>& row) {
 }
 }  // namespace
 
-std::string spatialCsvHeader(const std::vector<int>& probe_rfes, bool bottom_moves) {
+std::string spatialCsvHeader(const std::vector<int>& probe_rfes, bool bottom_moves, bool torsion) {
   std::string h = kSpatialColumns;
   if (bottom_moves) h += ",x_bottom,y_bottom,z_bottom";
+  if (torsion) h += ",top_twist";
   for (const int k : probe_rfes) {
     const std::string K = std::to_string(k);
     h += ",x_rfe" + K + ",y_rfe" + K + ",z_rfe" + K + ",tension_rfe" + K;
@@ -49,6 +50,7 @@ std::vector<double> spatialSample(spatial::SpatialRun& run, const std::vector<in
   row.insert(row.end(), {o.top_tension, o.max_tension, o.kinetic_energy + o.potential_energy, o.work_in,
                          run.energyDrift(), o.constraint_error});
   if (run.bottomMoves()) row.insert(row.end(), {o.bottom_point.x(), o.bottom_point.y(), o.bottom_point.z()});
+  if (run.hasTorsion()) row.push_back(o.top_twist);
   for (const int k : probe_rfes) {
     const auto& p = o.springs[k];
     row.insert(row.end(), {p.x(), p.y(), p.z(), o.axial_force[k]});
@@ -89,7 +91,7 @@ int runSpatial(const Scene& scene, const CliOptions& opt) {
   OutputFile csv;
   if (!opt.csv.empty()) {
     if (!csv.open("--csv", opt.csv)) return fail(kExitBadInput, csv.error());
-    std::fprintf(csv.get(), "%s\n", spatialCsvHeader(opt.probe_rfes, run->bottomMoves()).c_str());
+    std::fprintf(csv.get(), "%s\n", spatialCsvHeader(opt.probe_rfes, run->bottomMoves(), run->hasTorsion()).c_str());
   }
   const double dt = run->dt();
   const long total_steps = std::max(1L, static_cast<long>(std::ceil(scene.duration / dt - 1e-9)));
@@ -142,6 +144,7 @@ int runSpatial(const Scene& scene, const CliOptions& opt) {
     if (run->topFlexJoint()) j.add("top_moment_max", run->maxTopMoment());
     if (run->bottomFlexJoint()) j.add("bottom_moment_max", run->maxBottomMoment());
     if (run->bottomMoves()) j.add("x_bottom", last[kXBottom]).add("y_bottom", last[kYBottom]).add("z_bottom", last[kZBottom]);
+    if (run->hasTorsion()) j.add("top_twist", last[kColumns + (run->bottomMoves() ? 3 : 0)]);
     j.add("tension_top", last[kTensionTop])
         .add("tension_max", last[kTensionMax])
         .add("max_constraint_error", run->maxConstraintError())

@@ -14,7 +14,7 @@ namespace cli {
 
 // t, x/y/z of the top and the end, the forces and the moments on the hang-off and on the anchor, then as
 // the planar row; x/y/z_bottom (the anchor) when the bottom moves; then the probes.
-std::string spatialCsvHeader(const std::vector<int>& probe_rfes = {}, bool bottom_moves = false);
+std::string spatialCsvHeader(const std::vector<int>& probe_rfes = {}, bool bottom_moves = false, bool torsion = false);
 // The row's values, in spatialCsvHeader()'s order; probes: x/y/z_rfeK (spring point) and tension_rfeK.
 std::vector<double> spatialSample(spatial::SpatialRun& run, const std::vector<int>& probe_rfes);
 

@@ -1,8 +1,10 @@
 // Torsion through the CLI: --modes with line.torsion lists the torsional modes (the shaft against its exact
 // frequency equation), the bending rows are torsion-off's; top.torsion: free and the top flex joint's
-// torsional stiffness; bad keys named.
+// torsional stiffness; the hang-off's twisting moment in the CSV and the summary, a spin's divergence named;
+// bad keys named.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -100,6 +102,40 @@ TEST(CliSpatialTorsion, FreeAndSpringHeldTops) {
   std::printf("[cli torsion modes] top spring k_t = GJ/L: first torsional %.6g Hz vs the exact %.6g Hz (%.2e)\n",
               held[0].f, fs, held[0].f / fs - 1.0);
   EXPECT_NEAR(held[0].f / fs, 1.0, 1e-4);  // 16 rfes: 2.0e-5 (test_spatial_torsion_modes) + 6 digits
+}
+
+// The shaft's top circling (0.5 m, 2 s): the line swings in 3D and twists. The CSV's top_twist is the
+// hang-off's twisting moment τ, and top_m·h = τ (top_twist_moment = τ (h + e_0)/(1 + h·e_0), h = -z here: the
+// line hangs straight down at t = 0), in every row; the summary's is the last row's. At dt = 0.02 s rk4 is
+// beyond the twist's stability limit (~8.7e-3 s: ω_max ~ 2 sqrt(GJ/d / ρI_p d) = 320 rad/s) but within the
+// swing's (~39 rad/s): the run stops with exit 3 naming the spin.
+TEST(CliSpatialTorsion, TopTwistColumnAndSpinDivergence) {
+  const std::string scene = shaftScene("shaft_whirl", kTorsion, ", motion: {type: sinusoid, amplitude: [0.5, 0.5, 0.0], "
+                                                                "period: 2.0, phase: [0.0, -1.5708, 0.0]}");
+  const std::string csv = tempPath("shaft_whirl.csv");
+  const CliRun r = runCli("--scene " + scene + " --duration 2 --quiet --summary --csv " + csv +
+                          " --set solver.integrator=rk4 --set solver.dt=0.001");
+  ASSERT_EQ(r.code, 0) << r.err;
+  std::string header;
+  const std::vector<std::vector<double>> rows = csvRows(readFile(csv), header);
+  const std::string tail = ",top_twist";
+  ASSERT_EQ(header.substr(header.size() - tail.size()), tail) << header;
+  ASSERT_NE(header.find(",top_mz,"), std::string::npos) << header;
+  const auto column = [&](size_t at) { return size_t(std::count(header.begin(), header.begin() + at, ',')); };
+  const size_t twist = column(header.size()), mz = column(header.find(",top_mz,") + 1);
+  double big = 0.0, worst = 0.0;
+  for (const auto& row : rows) big = std::max(big, std::abs(row[twist]));
+  for (const auto& row : rows) worst = std::max(worst, std::abs(row[twist] + row[mz]));
+  EXPECT_GT(big, 1e-3);                 // the swing twists the line
+  EXPECT_LE(worst, 1e-8 * big);         // 9 printed digits
+  std::map<std::string, std::string> j = summary(r);
+  EXPECT_NEAR(num(j, "top_twist"), rows.back()[twist], 1e-8 * big);  // the CSV's 9 digits
+  std::printf("[cli torsion] whirling shaft: max |top_twist| %.4g N m, |top_twist - top_m·h| %.1e of it\n", big,
+              worst / big);
+
+  const CliRun d = runCli("--scene " + scene + " --duration 2 --quiet --set solver.integrator=rk4 --set solver.dt=0.02");
+  EXPECT_EQ(d.code, 3) << d.err;
+  EXPECT_NE(d.err.find("spins by"), std::string::npos) << d.err;
 }
 
 TEST(CliSpatialTorsion, BadKeysAreNamed) {

@@ -106,6 +106,8 @@ struct LineOutputs3 {
   // Moment the line exerts on the hang-off / the anchor through a flex joint [N m] (0 when pinned or free:
   // the force acts at the joint's point); at the top with line.torsion, plus the twist the hang-off holds.
   Vec3 top_moment = Vec3::Zero(), bottom_moment = Vec3::Zero();
+  // line.torsion: the twisting moment the hang-off holds about its axis [N m] (in top_moment too; 0 when free).
+  double top_twist = 0.0;
   Vec3 bottom_point = Vec3::Zero();  // the pinned bottom's anchor p_b(t) [m] (moves with bottom.motion)
   double top_tension = 0.0, max_tension = 0.0;  // [N]
   double kinetic_energy = 0.0, potential_energy = 0.0, work_in = 0.0;  // [J]
@@ -160,6 +162,7 @@ class SpatialRun {
   const SpatialModel& model() const { return *model_; }
   const InitialState3& initial() const { return initial_; }
   bool bottomMoves() const { return model_->bottomMoves(); }
+  bool hasTorsion() const { return model_->hasTorsion(); }
   const FlexJoint* topFlexJoint() const { return top_joint_; }      // nullptr: pinned (free rotation)
   const FlexJoint* bottomFlexJoint() const { return bottom_joint_; }
   SpatialSimulator& simulator() { return *sim_; }

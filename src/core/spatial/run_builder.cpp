@@ -241,16 +241,20 @@ bool SpatialRun::step() {
   ++steps_;
   const VecX& y = sim_->state();
   const bool finite = y.allFinite();
-  double err = 0.0, turn = 0.0, stretch = 0.0;
+  double err = 0.0, turn = 0.0, stretch = 0.0, spin = 0.0;
   int fast = -1;
   if (finite) {
     err = sim_->constraintError();
     max_constraint_error_ = std::max(max_constraint_error_, err);
+    // line.torsion: the spin rates ω_i follow the velocities of the q part (positionSize() = q + θ).
+    const int spins = model_->hasTorsion() ? model_->bodies() : 0;
+    const double* omega = y.data() + sim_->formulation().positionSize() + model_->dofs();
     for (int i = 0; i < model_->bodies() && fast < 0; ++i) {
       const BodyKinematics3 b = sim_->formulation().body(y, i);
       turn = b.e_dot.norm() * dt_;
       stretch = std::abs(b.delta_dot) * dt_ / model_->rfe(i).length;
-      if (!(turn <= kMaxTurnPerStep && stretch <= kMaxStretchPerStep)) fast = i;
+      spin = i < spins ? std::abs(omega[i]) * dt_ : 0.0;
+      if (!(turn <= kMaxTurnPerStep && stretch <= kMaxStretchPerStep && spin <= kMaxTurnPerStep)) fast = i;
     }
   }
   if (stepped && finite && err <= max_gap_ && fast < 0) {
@@ -263,9 +267,10 @@ bool SpatialRun::step() {
   if (finite && !failure.empty())
     why << failure;
   else if (finite && fast >= 0)
-    why << "rfe " << fast << " turns by " << turn << " rad and stretches by " << stretch
-        << " of its length in one step at t = " << time() << " s (limits " << kMaxTurnPerStep << " rad, "
-        << kMaxStretchPerStep << "): the motion is not resolved (unstable)";
+    why << "rfe " << fast << " turns by " << turn << " rad, stretches by " << stretch << " of its length"
+        << (model_->hasTorsion() ? " and spins by " + std::to_string(spin) + " rad" : std::string())
+        << " in one step at t = " << time() << " s (limits " << kMaxTurnPerStep << " rad, " << kMaxStretchPerStep
+        << "): the motion is not resolved (unstable)";
   else if (!finite)
     why << "state is not finite (NaN/Inf) at t = " << time() << " s";
   else
@@ -324,6 +329,7 @@ const LineOutputs3& SpatialRun::outputs() {
   out_.bottom_force = d.reactions.bottom;
   out_.top_moment = (top_joint_ ? top_joint_->moment(*model_, d.kin) : Vec3::Zero()) + d.reactions.top_twist_moment;
   out_.bottom_moment = bottom_joint_ ? bottom_joint_->moment(*model_, d.kin) : Vec3::Zero();
+  out_.top_twist = d.reactions.top_twist;
   out_.bottom_point = model_->bottom() == BottomBoundary::kPinned ? d.bottom.p : Vec3::Zero();
   out_.top_tension = d.reactions.top.norm();
   out_.max_tension = tmax;
