@@ -351,8 +351,11 @@ solver: {integrator: midpoint, dt: 0.01}
     const Vec3 in_plane = sum - sum.dot(n) * n;
     EXPECT_LE(in_plane.norm(), M * init.max_acceleration + 1e-9 * M * g) << where;
     EXPECT_GT(-sum.dot(n), 0.05 * M * g) << where;  // the slope carries part of the line
-    if (w == "across") EXPECT_GT(bow, 0.5) << "the part on the slope bows downhill";
-    if (w == "uphill") EXPECT_LE(bow, 1e-6) << "uphill: in the vertical plane";
+    if (w == "across") {
+      EXPECT_GT(bow, 0.5) << "the part on the slope bows downhill";
+    } else if (w == "uphill") {
+      EXPECT_LE(bow, 1e-6) << "uphill: in the vertical plane";
+    }
     double moved = 0.0;
     const AlignedVector<Vec3> p0 = o.points;
     for (int k = 0; k < 100; ++k) {
