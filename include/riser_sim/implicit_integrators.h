@@ -72,6 +72,14 @@ class OneStageImplicit : public ImplicitIntegrator {
   void restart() override { ImplicitIntegrator::restart(); have_prev_ = false; }
   bool step(OdeSystem& sys, double t, VecX& y, double h) override;
   int stages() const override { return 3; }  // typical: 2 Newton iterations + the end evaluation
+  // The last converged Newton solve: its solves, and its stopping test's measure over that test's bound
+  // (<= 1: the smaller of |Δz| / tol and, from the second solve on, η/(1-η) |Δz| / (tol / 10)). A system
+  // that keeps its factor across steps reads it to see the factor going stale (SpatialSimulator).
+  struct NewtonReport {
+    int solves = 0;
+    double margin = 0.0;
+  };
+  const NewtonReport& lastNewton() const { return last_newton_; }
 
  protected:
   // b of the stage equation for a step h from y0 (f0_ = f(t, y0) is current); may return y0 itself.
@@ -94,6 +102,7 @@ class OneStageImplicit : public ImplicitIntegrator {
   bool newton(OdeSystem& sys, double t, const VecX& y0, const VecX& base, double h);
   bool single(OdeSystem& sys, double t, VecX& y, double h);
   VecX g_, dz_, dy_prev_, y_save_, f_save_;
+  NewtonReport last_newton_;
   bool have_prev_ = false;
   double h_prev_ = 0.0;
 };

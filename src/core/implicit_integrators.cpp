@@ -147,12 +147,22 @@ bool OneStageImplicit::newton(OdeSystem& sys, double t, const VecX& y0, const Ve
     double r = 0.0;  // scaled size of the increment
     for (int i = 0; i < m_; ++i) r = std::max(r, std::abs(dz_[i]) / (1.0 + std::abs(z_[i])));
     if (!std::isfinite(r)) return false;
-    if (r <= kNewtonTol) return true;
+    bool done = r <= kNewtonTol;
+    double margin = r / kNewtonTol;
     // Linear convergence at rate η: the error left after this iterate is about η/(1-η) r (Hairer-Wanner);
     // asked of it with a factor 10 to spare (the dense Jacobian's slower rates misjudge it otherwise).
     if (it > 0) {
       const double eta = r / r_prev;
-      if (eta < kNewtonMaxRate && eta / (1.0 - eta) * r <= 0.1 * kNewtonTol) return true;
+      if (eta < kNewtonMaxRate) {
+        const double left = eta / (1.0 - eta) * r;
+        done = done || left <= 0.1 * kNewtonTol;
+        margin = std::min(margin, left / (0.1 * kNewtonTol));
+      }
+    }
+    if (done) {
+      last_newton_.solves = it + 1;
+      last_newton_.margin = margin;
+      return true;
     }
     r_prev = r;
   }

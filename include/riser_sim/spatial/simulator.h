@@ -82,6 +82,7 @@ class SpatialSimulator : private OdeSystem {
   void linearize(double t, const VecX& y) override;
   void factorShifted(double c) override;
   void solveShifted(const VecX& b, VecX& x) override;
+  bool staleNext() const;
 
   std::shared_ptr<const SpatialModel> model_;
   std::unique_ptr<TopMotion3> top_;
