@@ -18,12 +18,18 @@ using namespace spatial;
 
 constexpr double kL = 10.0, kGJ = 1e4, kRhoIp = 1.0, kJend = 10.0;
 
-std::shared_ptr<SpatialModel> freeShaft(int n, double damping) {
+// The shaft's torsion: GJ, ρI_p = kRhoIp, J_end = kJend, the twist damper c_GJ.
+TorsionProperties shaftTorsion(double GJ, double damping) {
   TorsionProperties t;
-  t.stiffness = kGJ;
+  t.stiffness = GJ;
   t.polar_inertia = kRhoIp;
   t.damping = damping;
   t.end_polar_inertia = kJend;
+  return t;
+}
+
+std::shared_ptr<SpatialModel> freeShaft(int n, double damping) {
+  TorsionProperties t = shaftTorsion(kGJ, damping);
   t.free_top = true;
   return spatial_test::twistShaft(n, t);  // L = kL
 }
@@ -248,10 +254,7 @@ TEST(SpatialTorsionFreeTop, DampedTopSpringIsTheRigidShaftOscillator) {
   double gaps[2];
   int j = 0;
   for (const double GJ : {1e5, 1e6}) {
-    TorsionProperties t;
-    t.stiffness = GJ;
-    t.polar_inertia = kRhoIp;
-    t.end_polar_inertia = kJend;
+    TorsionProperties t = shaftTorsion(GJ, 0.0);
     t.top_stiffness = kt;
     t.top_damping = ct;
     auto m = spatial_test::twistShaft(8, t);
