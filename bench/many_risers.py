@@ -9,7 +9,7 @@ ROS time passed, from `sim time [s]` and the message stamps), the time it droppe
 the CPU time of all the launched processes (/proc, in cores: CPU seconds per wall second). A k passes when every riser has real-time factor
 >= --min-rtf and dropped nothing. k doubles from 1 until a k fails (or --max-count passes), then
 bisects down to the largest passing k. Nobody subscribes to the risers' data topics (roscpp does not
-serialise for no subscriber): a consumer's cost comes on top. Appends rows to --csv.
+serialise for no subscriber): a consumer's cost comes on top. Appends rows to <out>/many_risers<tag>.csv.
 Needs a running master (bench/many_risers.sh starts a private one).
 """
 import argparse
@@ -25,7 +25,7 @@ import rospy
 import yaml
 from diagnostic_msgs.msg import DiagnosticArray
 
-FIELDS = ["mode", "count", "pass", "min_rtf", "median_rtf", "dropped_s", "step_mean_us", "cpu_cores", "load1",
+FIELDS = ["scene", "mode", "count", "pass", "min_rtf", "median_rtf", "dropped_s", "step_mean_us", "cpu_cores", "load1",
           "window_s", "note"]
 
 
@@ -118,12 +118,12 @@ def stop(proc):
 
 def trial(args, k, diags, scene_file):
     diags.clear()
-    log = open(os.path.join(args.out, "many_risers_%s_%d.log" % (args.mode, k)), "w")
+    log = open(os.path.join(args.out, "many_risers%s_%s_%d.log" % (args.tag, args.mode, k)), "w")
     cmd = ["roslaunch", "riser_sim", "many_risers.launch", "count:=%d" % k,
            "nodelets:=%s" % ("true" if args.mode == "nodelets" else "false"), "scene:=" + scene_file,
-           "vessel_rate:=%g" % args.vessel_rate, "output:=log", "bind:=" + os.environ.get("ROS_HOSTNAME", "localhost")]
+           "vessel_rate:=%g" % args.vessel_rate, "spacing:=%g" % args.spacing, "output:=log", "bind:=" + os.environ.get("ROS_HOSTNAME", "localhost")]
     proc = subprocess.Popen(cmd, stdout=log, stderr=subprocess.STDOUT)
-    row = {"mode": args.mode, "count": k, "pass": False, "window_s": args.window, "note": ""}
+    row = {"scene": os.path.splitext(os.path.basename(args.scene))[0], "mode": args.mode, "count": k, "pass": False, "window_s": args.window, "note": ""}
     try:
         deadline = time.time() + 60.0 + 3.0 * k
         while diags.running() < k:
@@ -174,6 +174,10 @@ def main():
     ap.add_argument("--mode", choices=["nodes", "nodelets"], required=True)
     ap.add_argument("--scene", required=True, help="scene YAML (its top motion is replaced by the vessel's)")
     ap.add_argument("--max-count", type=int, default=64)
+    ap.add_argument("--start", type=int, default=1, help="first k of the doubling")
+    ap.add_argument("--spacing", type=float, default=10.0,
+                    help="hang-off x of riser i in the vessel frame: (i - 1) * spacing [m] (many_risers.launch)")
+    ap.add_argument("--tag", default="", help="suffix of the output files (many_risers<tag>.csv, ...)")
     ap.add_argument("--window", type=float, default=20.0, help="measurement window [s]")
     ap.add_argument("--warmup", type=float, default=5.0, help="seconds after every riser runs")
     ap.add_argument("--vessel-rate", type=float, default=100.0)
@@ -185,13 +189,13 @@ def main():
     with open(args.scene) as f:
         scene = yaml.safe_load(f)
     scene.setdefault("top", {})["motion"] = {"type": "external"}
-    scene_file = os.path.join(args.out, "many_risers_scene.yaml")
+    scene_file = os.path.join(args.out, "many_risers%s_scene.yaml" % args.tag)
     with open(scene_file, "w") as f:
         yaml.safe_dump(scene, f)
 
     rospy.init_node("many_risers_bench", disable_signals=True)
     diags = Diagnostics()
-    csv_path = os.path.join(args.out, "many_risers.csv")
+    csv_path = os.path.join(args.out, "many_risers%s.csv" % args.tag)
     new = not os.path.exists(csv_path)
     results = {}
 
@@ -213,7 +217,7 @@ def main():
         return row["pass"]
     run.new = new
 
-    good, bad, k = 0, None, 1
+    good, bad, k = 0, None, max(1, min(args.start, args.max_count))
     while k <= args.max_count:
         if not run(k):
             bad = k
@@ -228,7 +232,7 @@ def main():
             bad = mid
     print("many_risers: %s: largest k with every riser at real-time factor >= %g: %d%s" %
           (args.mode, args.min_rtf, good, " (the most tried)" if bad is None else ""))
-    with open(os.path.join(args.out, "many_risers_%s.txt" % args.mode), "w") as f:
+    with open(os.path.join(args.out, "many_risers%s_%s.txt" % (args.tag, args.mode)), "w") as f:
         f.write("%d\n" % good)
     return 0
 
