@@ -177,6 +177,8 @@ def main():
     ap.add_argument("--start", type=int, default=1, help="first k of the doubling")
     ap.add_argument("--spacing", type=float, default=10.0,
                     help="hang-off x of riser i in the vessel frame: (i - 1) * spacing [m] (many_risers.launch)")
+    ap.add_argument("--set", action="append", default=[], metavar="KEY=VALUE",
+                    help="override a scene key (dotted path, YAML value), e.g. bottom.position=[90,5,-100]")
     ap.add_argument("--tag", default="", help="suffix of the output files (many_risers<tag>.csv, ...)")
     ap.add_argument("--window", type=float, default=20.0, help="measurement window [s]")
     ap.add_argument("--warmup", type=float, default=5.0, help="seconds after every riser runs")
@@ -188,6 +190,12 @@ def main():
     os.makedirs(args.out, exist_ok=True)
     with open(args.scene) as f:
         scene = yaml.safe_load(f)
+    for kv in args.set:
+        key, _, value = kv.partition("=")
+        node = scene
+        for part in key.split(".")[:-1]:
+            node = node.setdefault(part, {})
+        node[key.split(".")[-1]] = yaml.safe_load(value)
     scene.setdefault("top", {})["motion"] = {"type": "external"}
     scene_file = os.path.join(args.out, "many_risers%s_scene.yaml" % args.tag)
     with open(scene_file, "w") as f:
