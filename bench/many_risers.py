@@ -116,12 +116,13 @@ def stop(proc):
             pass
 
 
-def trial(args, k, diags, scene_file):
+def trial(args, k, diags, scene_file, params_file):
     diags.clear()
     log = open(os.path.join(args.out, "many_risers%s_%s_%d.log" % (args.tag, args.mode, k)), "w")
     cmd = ["roslaunch", "riser_sim", "many_risers.launch", "count:=%d" % k,
            "nodelets:=%s" % ("true" if args.mode == "nodelets" else "false"), "scene:=" + scene_file,
-           "vessel_rate:=%g" % args.vessel_rate, "spacing:=%g" % args.spacing, "output:=log", "bind:=" + os.environ.get("ROS_HOSTNAME", "localhost")]
+           "vessel_rate:=%g" % args.vessel_rate, "spacing:=%g" % args.spacing, "output:=log",
+           "params:=" + params_file, "bind:=" + os.environ.get("ROS_HOSTNAME", "localhost")]
     proc = subprocess.Popen(cmd, stdout=log, stderr=subprocess.STDOUT)
     row = {"scene": os.path.splitext(os.path.basename(args.scene))[0], "mode": args.mode, "count": k, "pass": False, "window_s": args.window, "note": ""}
     try:
@@ -179,6 +180,8 @@ def main():
                     help="hang-off x of riser i in the vessel frame: (i - 1) * spacing [m] (many_risers.launch)")
     ap.add_argument("--set", action="append", default=[], metavar="KEY=VALUE",
                     help="override a scene key (dotted path, YAML value), e.g. bottom.position=[90,5,-100]")
+    ap.add_argument("--loop-rate", type=float, default=None,
+                    help="the risers' ~loop_rate [Hz] (default: config/node_defaults.yaml's, 500)")
     ap.add_argument("--tag", default="", help="suffix of the output files (many_risers<tag>.csv, ...)")
     ap.add_argument("--window", type=float, default=20.0, help="measurement window [s]")
     ap.add_argument("--warmup", type=float, default=5.0, help="seconds after every riser runs")
@@ -201,6 +204,14 @@ def main():
     with open(scene_file, "w") as f:
         yaml.safe_dump(scene, f)
 
+    params_file = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "config/node_defaults.yaml")
+    if args.loop_rate is not None:
+        with open(params_file) as f:
+            params = yaml.safe_load(f)
+        params["loop_rate"] = args.loop_rate
+        params_file = os.path.join(args.out, "many_risers%s_params.yaml" % args.tag)
+        with open(params_file, "w") as f:
+            yaml.safe_dump(params, f)
     rospy.init_node("many_risers_bench", disable_signals=True)
     diags = Diagnostics()
     csv_path = os.path.join(args.out, "many_risers%s.csv" % args.tag)
@@ -208,7 +219,7 @@ def main():
     results = {}
 
     def run(k):
-        row = trial(args, k, diags, scene_file)
+        row = trial(args, k, diags, scene_file, params_file)
         results[k] = row
         print("many_risers: %-8s k = %2d  %s  min rtf %.3f  median %.3f  dropped %.3f s  step %.1f us  CPU %.2f cores  "
               "load %.1f  %s" % (args.mode, k, "pass" if row["pass"] else "FAIL", row.get("min_rtf", float("nan")),

@@ -3,14 +3,13 @@
 # riser_sim_node processes and as nodelets in one manager, with the vessel at 100 Hz (bench/many_risers.py).
 # 2d (default): the paper's 500 m riser (config/scenes/paper_riser_500m.yaml: n = 50, rk4, dt = 1 ms, drag and
 #   added mass), hang-offs 10 m apart; out/bench/many_risers.csv.
-# 3d: the 3D sea riser (config/scenes/spatial_sea_riser.yaml: n = 50, structured midpoint at 50 ms, drag, added
-#   mass, JONSWAP waves, current, seabed friction) with its anchor 5 m to the side (y = 5 m: in the plane of the
-#   vessel's surge, y = 0, the node's run diverges within 0.4 s, docs/benchmarks.md "Many risers"), hang-offs 1 m
-#   apart (the anchors are 90 m from the vessel's origin: 10 m apart would stretch the 64th riser past its 160 m);
-#   out/bench/many_risers_3d.csv.
+# 3d: the 3D sea riser (config/scenes/spatial_sea_riser.yaml: n = 50, drag, added mass, JONSWAP waves, current,
+#   seabed friction) at the structured midpoint with dt = 20 ms (its 50 ms diverges in the node within the first
+#   second when the vessel only surges, docs/benchmarks.md "Many risers"), hang-offs 1 m apart (the anchors are
+#   90 m from the vessel's origin: 10 m apart would stretch the 64th riser past its 160 m); many_risers_3d.csv.
 # Either way the top is driven by the vessel; private roscore; logs in out/bench.
 #   bench/many_risers.sh [nodes|nodelets|both] [window_s] [2d|3d]       (~10-20 min per mode; needs make build)
-# RISER_SIM_MANY_SCENE replaces the scene; RISER_SIM_MANY_START (first k of the doubling, default 1) and
+# RISER_SIM_MANY_SCENE replaces the scene; RISER_SIM_MANY_LOOP_RATE sets the risers' ~loop_rate [Hz]; RISER_SIM_MANY_START (first k of the doubling, default 1) and
 # RISER_SIM_MANY_MAX (the largest k tried, default 64) rerun a bisection between two known counts.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -20,7 +19,7 @@ window=${2:-20}
 space=${3:-2d}
 case $space in
   2d) scene=$root/config/scenes/paper_riser_500m.yaml; spacing=10; tag=""; set=() ;;
-  3d) scene=$root/config/scenes/spatial_sea_riser.yaml; spacing=1; tag="_3d"; set=(--set "bottom.position=[90,5,-100]") ;;
+  3d) scene=$root/config/scenes/spatial_sea_riser.yaml; spacing=1; tag="_3d"; set=(--set solver.dt=0.02) ;;
   *) echo "many_risers: 2d or 3d, got '$space'" >&2; exit 2 ;;
 esac
 scene=${RISER_SIM_MANY_SCENE:-$scene}
@@ -34,6 +33,7 @@ echo "many_risers: $(nproc) cores, load average $(cut -d' ' -f1-3 /proc/loadavg)
 [ "$modes" = both ] && modes="nodes nodelets"
 for m in $modes; do
   /usr/bin/python3 "$root/bench/many_risers.py" --mode "$m" --scene "$scene" --window "$window" --out "$out" \
-    --spacing "$spacing" --tag "$tag" --start "${RISER_SIM_MANY_START:-1}" --max-count "${RISER_SIM_MANY_MAX:-64}" "${set[@]}"
+    --spacing "$spacing" --tag "$tag" --start "${RISER_SIM_MANY_START:-1}" --max-count "${RISER_SIM_MANY_MAX:-64}" \
+    ${RISER_SIM_MANY_LOOP_RATE:+--loop-rate "$RISER_SIM_MANY_LOOP_RATE"} "${set[@]}"
 done
 echo "many_risers: load average $(cut -d' ' -f1-3 /proc/loadavg) at the end; wrote $out/many_risers$tag.csv"

@@ -50,6 +50,8 @@ def main():
     ap.add_argument("--dt", type=float, required=True, help="solver.dt [s]")
     ap.add_argument("--motion", default="10,0,0,27",
                     help="vessel motion ax,ay,az,T: position a cos(2 pi t / T) per axis [m, s] (default: the paper's surge)")
+    ap.add_argument("--param", action="append", default=[], metavar="KEY=VALUE",
+                    help="a private parameter of the node (YAML value), e.g. loop_rate=50")
     ap.add_argument("--window", type=float, default=10.0, help="measurement window [s]")
     ap.add_argument("--warmup", type=float, default=3.0, help="seconds after the first tension before measuring")
     ap.add_argument("--csv", required=True)
@@ -65,6 +67,9 @@ def main():
     scene.setdefault("line", {})["elements"] = args.n
     scene.setdefault("solver", {})["dt"] = args.dt
     rospy.set_param(ns + "/riser_sim/scene", scene)
+    for kv in args.param:
+        key, _, value = kv.partition("=")
+        rospy.set_param(ns + "/riser_sim/" + key, yaml.safe_load(value))
 
     counts = {"tension": 0}
     diags = []
