@@ -182,6 +182,8 @@ def main():
                     help="override a scene key (dotted path, YAML value), e.g. bottom.position=[90,5,-100]")
     ap.add_argument("--loop-rate", type=float, default=None,
                     help="the risers' ~loop_rate [Hz] (default: config/node_defaults.yaml's, 500)")
+    ap.add_argument("--vessel-param", action="append", default=[], metavar="KEY=VALUE",
+                    help="a private parameter of the vessel nodelet (YAML value), e.g. fade_in=120")
     ap.add_argument("--tag", default="", help="suffix of the output files (many_risers<tag>.csv, ...)")
     ap.add_argument("--window", type=float, default=20.0, help="measurement window [s]")
     ap.add_argument("--warmup", type=float, default=5.0, help="seconds after every riser runs")
@@ -213,6 +215,9 @@ def main():
         with open(params_file, "w") as f:
             yaml.safe_dump(params, f)
     rospy.init_node("many_risers_bench", disable_signals=True)
+    for kv in args.vessel_param:  # roslaunch sets only ~rate: the rest stays on the parameter server
+        key, _, value = kv.partition("=")
+        rospy.set_param("/vessel_motion/" + key, yaml.safe_load(value))
     diags = Diagnostics()
     csv_path = os.path.join(args.out, "many_risers%s.csv" % args.tag)
     new = not os.path.exists(csv_path)
