@@ -82,9 +82,9 @@ class Diagnostics(object):
         with self.lock:
             self.by_riser = {}
 
-    def running(self):
+    def running(self, mode="running"):
         with self.lock:
-            return sum(1 for v in self.by_riser.values() if v and v[-1][3].get("mode") == "running")
+            return sum(1 for v in self.by_riser.values() if v and v[-1][3].get("mode") == mode)
 
     def between(self, t0, t1):
         with self.lock:
@@ -121,12 +121,27 @@ def trial(args, k, diags, scene_file, params_file):
     log = open(os.path.join(args.out, "many_risers%s_%s_%d.log" % (args.tag, args.mode, k)), "w")
     cmd = ["roslaunch", "riser_sim", "many_risers.launch", "count:=%d" % k,
            "nodelets:=%s" % ("true" if args.mode == "nodelets" else "false"), "scene:=" + scene_file,
-           "vessel_rate:=%g" % args.vessel_rate, "spacing:=%g" % args.spacing, "output:=log",
+           "vessel_rate:=%g" % args.vessel_rate, "vessel:=%s" % ("false" if args.vessel_last else "true"), "spacing:=%g" % args.spacing, "output:=log",
            "params:=" + params_file, "bind:=" + os.environ.get("ROS_HOSTNAME", "localhost")]
     proc = subprocess.Popen(cmd, stdout=log, stderr=subprocess.STDOUT)
+    vessel = None
     row = {"scene": os.path.splitext(os.path.basename(args.scene))[0], "mode": args.mode, "count": k, "pass": False, "window_s": args.window, "note": ""}
     try:
         deadline = time.time() + 60.0 + 3.0 * k
+        if args.vessel_last:
+            # Every riser up and waiting for its first pose, then the vessel (as the launch would start it), so
+            # that all start from a vessel at rest, within its fade-in.
+            while diags.running("waiting for vessel pose") < k:
+                if proc.poll() is not None or time.time() > deadline:
+                    row["note"] = "only %d of %d risers waiting for the vessel" % (
+                        diags.running("waiting for vessel pose"), k)
+                    return row
+                time.sleep(0.2)
+            how = ["load", "riser_sim/VesselMotionNodelet", "/riser_manager"] if args.mode == "nodelets" else \
+                ["standalone", "riser_sim/VesselMotionNodelet"]
+            vessel = subprocess.Popen(["rosrun", "nodelet", "nodelet"] + how +
+                                      ["__name:=vessel_motion", "_rate:=%g" % args.vessel_rate], stdout=log,
+                                      stderr=subprocess.STDOUT)
         while diags.running() < k:
             if proc.poll() is not None:
                 row["note"] = "roslaunch exited (%d)" % proc.returncode
@@ -136,7 +151,7 @@ def trial(args, k, diags, scene_file, params_file):
                 return row
             time.sleep(0.2)
         time.sleep(args.warmup)
-        pids = descendants(proc.pid)
+        pids = descendants(proc.pid) + ([vessel.pid] + descendants(vessel.pid) if vessel else [])
         t0, cpu0 = time.time(), cpu_seconds(pids)
         time.sleep(args.window)
         t1, cpu1 = time.time(), cpu_seconds(pids)
@@ -166,6 +181,8 @@ def trial(args, k, diags, scene_file, params_file):
         row["note"] = "; ".join(notes)
         return row
     finally:
+        if vessel is not None:
+            stop(vessel)
         stop(proc)
         log.close()
 
@@ -184,6 +201,8 @@ def main():
                     help="the risers' ~loop_rate [Hz] (default: config/node_defaults.yaml's, 500)")
     ap.add_argument("--vessel-param", action="append", default=[], metavar="KEY=VALUE",
                     help="a private parameter of the vessel nodelet (YAML value), e.g. fade_in=120")
+    ap.add_argument("--vessel-last", action="store_true",
+                    help="start the vessel only when every riser waits for its first pose (all start from rest)")
     ap.add_argument("--tag", default="", help="suffix of the output files (many_risers<tag>.csv, ...)")
     ap.add_argument("--window", type=float, default=20.0, help="measurement window [s]")
     ap.add_argument("--warmup", type=float, default=5.0, help="seconds after every riser runs")

@@ -19,7 +19,7 @@ window=${2:-20}
 space=${3:-2d}
 case $space in
   2d) scene=$root/config/scenes/paper_riser_500m.yaml; spacing=10; tag=""; set=() ;;
-  3d) scene=$root/config/scenes/spatial_sea_riser.yaml; spacing=1; tag="_3d"; set=(--vessel-param fade_in=120) ;;
+  3d) scene=$root/config/scenes/spatial_sea_riser.yaml; spacing=1; tag="_3d"; set=(--vessel-last --vessel-param fade_in=60) ;;
   *) echo "many_risers: 2d or 3d, got '$space'" >&2; exit 2 ;;
 esac
 scene=${RISER_SIM_MANY_SCENE:-$scene}

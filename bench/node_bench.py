@@ -3,7 +3,7 @@
 
 For one line size n: sets the scene (a YAML scene file with line.elements and solver.dt overridden)
 under <ns>/riser_sim/scene, starts the node binary, drives it with a vessel surging as in the paper
-(x_0 = 10 cos(2 pi t / 27), 50 Hz; --motion ax,ay,az,T: x, y, z = a cos(2 pi t / T), e.g. the 3D sea
+(x_0 = 10 cos(2 pi t / 27), 50 Hz, t from the node's first tension, at rest before; --motion ax,ay,az,T: x, y, z = a cos(2 pi t / T), e.g. the 3D sea
 scene's own 2, 1, 0.5 m at 10 s), subscribes to ~tension, ~state, ~markers, ~top_wrench and /tf,
 and over a measurement window reads
   - the node's real-time factor and compute real-time factor, step time, work per publish period
@@ -108,16 +108,19 @@ def main():
                 break
             now = rospy.Time.now()
             t = (now - t0).to_sec()
+            # The vessel holds its t = 0 pose (at rest) until the node has started: the node starts from the statics
+            # at rest, and a 3D sea riser jolted into a vessel already moving can diverge (docs/benchmarks.md).
+            tm = (now - motion_t0).to_sec() if first is not None else 0.0
             msg = PoseStamped()
             msg.header.stamp = now
             msg.header.frame_id = "world"
-            c = math.cos(2.0 * math.pi * t / motion[3])
+            c = math.cos(2.0 * math.pi * tm / motion[3])
             msg.pose.position.x, msg.pose.position.y, msg.pose.position.z = motion[0] * c, motion[1] * c, motion[2] * c
             msg.pose.orientation.w = 1.0
             pose_pub.publish(msg)
             wall = time.time()
             if first is None and counts["tension"] > 0:
-                first = wall
+                first, motion_t0 = wall, now
             if first is not None and measure_from is None and wall - first >= args.warmup:
                 measure_from, cpu0, tension0, ndiag0 = wall, cpu_seconds(node.pid), counts["tension"], len(diags)
             if measure_from is not None and wall - measure_from >= args.window:
