@@ -3,10 +3,11 @@
 # riser_sim_node processes and as nodelets in one manager, with the vessel at 100 Hz (bench/many_risers.py).
 # 2d (default): the paper's 500 m riser (config/scenes/paper_riser_500m.yaml: n = 50, rk4, dt = 1 ms, drag and
 #   added mass), hang-offs 10 m apart; out/bench/many_risers.csv.
-# 3d: the 3D sea riser (config/scenes/spatial_sea_riser.yaml: n = 50, drag, added mass, JONSWAP waves, current,
-#   seabed friction) at the structured midpoint with dt = 20 ms (its 50 ms diverges in the node within the first
-#   second when the vessel only surges, docs/benchmarks.md "Many risers"), hang-offs 1 m apart (the anchors are
-#   90 m from the vessel's origin: 10 m apart would stretch the 64th riser past its 160 m); many_risers_3d.csv.
+# 3d: the 3D sea riser (config/scenes/spatial_sea_riser.yaml: n = 50, structured midpoint at 50 ms, drag, added
+#   mass, JONSWAP waves, current, seabed friction), hang-offs 0.25 m apart (every anchor is at x = 90 m: a hang-off
+#   beyond x ~ 31 m, with the vessel's 10 m surge, puts the 160 m line so far onto the seabed that its start diverged
+#   or its statics failed), the vessel started once every riser waits for its first pose and fading in over 60 s (a
+#   3D sea node started against a moving vessel can diverge, docs/benchmarks.md); out/bench/many_risers_3d.csv.
 # Either way the top is driven by the vessel; private roscore; logs in out/bench.
 #   bench/many_risers.sh [nodes|nodelets|both] [window_s] [2d|3d]       (~10-20 min per mode; needs make build)
 # RISER_SIM_MANY_SCENE replaces the scene; RISER_SIM_MANY_LOOP_RATE sets the risers' ~loop_rate [Hz]; RISER_SIM_MANY_START (first k of the doubling, default 1) and
@@ -19,7 +20,7 @@ window=${2:-20}
 space=${3:-2d}
 case $space in
   2d) scene=$root/config/scenes/paper_riser_500m.yaml; spacing=10; tag=""; set=() ;;
-  3d) scene=$root/config/scenes/spatial_sea_riser.yaml; spacing=1; tag="_3d"; set=(--vessel-last --vessel-param fade_in=60) ;;
+  3d) scene=$root/config/scenes/spatial_sea_riser.yaml; spacing=0.25; tag="_3d"; set=(--vessel-last --vessel-param fade_in=60) ;;
   *) echo "many_risers: 2d or 3d, got '$space'" >&2; exit 2 ;;
 esac
 scene=${RISER_SIM_MANY_SCENE:-$scene}
