@@ -8,7 +8,10 @@ each riser's /diagnostics (1 Hz): its real-time factor over the window (simulate
 ROS time passed, from `sim time [s]` and the message stamps), the time it dropped, its step time, and
 the CPU time of all the launched processes (/proc, in cores: CPU seconds per wall second). A k passes when every riser has real-time factor
 >= --min-rtf and dropped nothing. k doubles from 1 until a k fails (or --max-count passes), then
-bisects down to the largest passing k. Nobody subscribes to the risers' data topics (roscpp does not
+bisects down to the largest passing k (--start: the first k; --max-count: the last). --vessel-last starts the
+vessel only once every riser waits for its first pose (with --vessel-param fade_in=60: every riser starts from a
+vessel at rest; a 3D sea riser started against a moving vessel can diverge). --set overrides scene keys,
+--loop-rate the risers' ~loop_rate, --spacing the hang-offs' spacing, --tag names the output files. Nobody subscribes to the risers' data topics (roscpp does not
 serialise for no subscriber): a consumer's cost comes on top. Appends rows to <out>/many_risers<tag>.csv.
 Needs a running master (bench/many_risers.sh starts a private one).
 """
