@@ -10,8 +10,9 @@
 #   3D sea node started against a moving vessel can diverge, docs/benchmarks.md); out/bench/many_risers_3d.csv.
 # Either way the top is driven by the vessel; private roscore; logs in out/bench.
 #   bench/many_risers.sh [nodes|nodelets|both] [window_s] [2d|3d]       (~10-20 min per mode; needs make build)
-# RISER_SIM_MANY_SCENE replaces the scene; RISER_SIM_MANY_LOOP_RATE sets the risers' ~loop_rate [Hz]; RISER_SIM_MANY_START (first k of the doubling, default 1) and
-# RISER_SIM_MANY_MAX (the largest k tried, default 64) rerun a bisection between two known counts.
+# RISER_SIM_MANY_SCENE replaces the scene; RISER_SIM_MANY_LOOP_RATE sets the risers' ~loop_rate [Hz];
+# RISER_SIM_MANY_START (first k of the doubling, default 1) and RISER_SIM_MANY_MAX (the largest k tried, default
+# 64) rerun a bisection between two known counts.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 ws=${RISER_SIM_WS:-$root/.ws}
@@ -19,8 +20,8 @@ modes=${1:-both}
 window=${2:-20}
 space=${3:-2d}
 case $space in
-  2d) scene=$root/config/scenes/paper_riser_500m.yaml; spacing=10; tag=""; set=() ;;
-  3d) scene=$root/config/scenes/spatial_sea_riser.yaml; spacing=0.25; tag="_3d"; set=(--vessel-last --vessel-param fade_in=60) ;;
+  2d) scene=$root/config/scenes/paper_riser_500m.yaml; spacing=10; tag=""; extra=() ;;
+  3d) scene=$root/config/scenes/spatial_sea_riser.yaml; spacing=0.25; tag="_3d"; extra=(--vessel-last --vessel-param fade_in=60) ;;
   *) echo "many_risers: 2d or 3d, got '$space'" >&2; exit 2 ;;
 esac
 scene=${RISER_SIM_MANY_SCENE:-$scene}
@@ -35,6 +36,6 @@ echo "many_risers: $(nproc) cores, load average $(cut -d' ' -f1-3 /proc/loadavg)
 for m in $modes; do
   /usr/bin/python3 "$root/bench/many_risers.py" --mode "$m" --scene "$scene" --window "$window" --out "$out" \
     --spacing "$spacing" --tag "$tag" --start "${RISER_SIM_MANY_START:-1}" --max-count "${RISER_SIM_MANY_MAX:-64}" \
-    ${RISER_SIM_MANY_LOOP_RATE:+--loop-rate "$RISER_SIM_MANY_LOOP_RATE"} "${set[@]}"
+    ${RISER_SIM_MANY_LOOP_RATE:+--loop-rate "$RISER_SIM_MANY_LOOP_RATE"} "${extra[@]}"
 done
 echo "many_risers: load average $(cut -d' ' -f1-3 /proc/loadavg) at the end; wrote $out/many_risers$tag.csv"
