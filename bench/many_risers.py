@@ -8,8 +8,11 @@ each riser's /diagnostics (1 Hz): its real-time factor over the window (simulate
 ROS time passed, from `sim time [s]` and the message stamps), the time it dropped, its step time, and
 the CPU time of all the launched processes (/proc, in cores: CPU seconds per wall second). A k passes when every riser has real-time factor
 >= --min-rtf and dropped nothing. k doubles from 1 until a k fails (or --max-count passes), then
-bisects down to the largest passing k. Nobody subscribes to the risers' data topics (roscpp does not
-serialise for no subscriber): a consumer's cost comes on top. Appends rows to --csv.
+bisects down to the largest passing k (--start: the first k; --max-count: the last). --vessel-last starts the
+vessel only once every riser waits for its first pose (with --vessel-param fade_in=60: every riser starts from a
+vessel at rest; a 3D sea riser started against a moving vessel can diverge). --set overrides scene keys,
+--loop-rate the risers' ~loop_rate, --spacing the hang-offs' spacing, --tag names the output files. Nobody subscribes to the risers' data topics (roscpp does not
+serialise for no subscriber): a consumer's cost comes on top. Appends rows to <out>/many_risers<tag>.csv.
 Needs a running master (bench/many_risers.sh starts a private one).
 """
 import argparse
@@ -25,7 +28,7 @@ import rospy
 import yaml
 from diagnostic_msgs.msg import DiagnosticArray
 
-FIELDS = ["mode", "count", "pass", "min_rtf", "median_rtf", "dropped_s", "step_mean_us", "cpu_cores", "load1",
+FIELDS = ["scene", "mode", "count", "pass", "min_rtf", "median_rtf", "dropped_s", "step_mean_us", "cpu_cores", "load1",
           "window_s", "note"]
 
 
@@ -82,9 +85,9 @@ class Diagnostics(object):
         with self.lock:
             self.by_riser = {}
 
-    def running(self):
+    def running(self, mode="running"):
         with self.lock:
-            return sum(1 for v in self.by_riser.values() if v and v[-1][3].get("mode") == "running")
+            return sum(1 for v in self.by_riser.values() if v and v[-1][3].get("mode") == mode)
 
     def between(self, t0, t1):
         with self.lock:
@@ -116,16 +119,32 @@ def stop(proc):
             pass
 
 
-def trial(args, k, diags, scene_file):
+def trial(args, k, diags, scene_file, params_file):
     diags.clear()
-    log = open(os.path.join(args.out, "many_risers_%s_%d.log" % (args.mode, k)), "w")
+    log = open(os.path.join(args.out, "many_risers%s_%s_%d.log" % (args.tag, args.mode, k)), "w")
     cmd = ["roslaunch", "riser_sim", "many_risers.launch", "count:=%d" % k,
            "nodelets:=%s" % ("true" if args.mode == "nodelets" else "false"), "scene:=" + scene_file,
-           "vessel_rate:=%g" % args.vessel_rate, "output:=log", "bind:=" + os.environ.get("ROS_HOSTNAME", "localhost")]
+           "vessel_rate:=%g" % args.vessel_rate, "vessel:=%s" % ("false" if args.vessel_last else "true"), "spacing:=%g" % args.spacing, "output:=log",
+           "params:=" + params_file, "bind:=" + os.environ.get("ROS_HOSTNAME", "localhost")]
     proc = subprocess.Popen(cmd, stdout=log, stderr=subprocess.STDOUT)
-    row = {"mode": args.mode, "count": k, "pass": False, "window_s": args.window, "note": ""}
+    vessel = None
+    row = {"scene": os.path.splitext(os.path.basename(args.scene))[0], "mode": args.mode, "count": k, "pass": False, "window_s": args.window, "note": ""}
     try:
         deadline = time.time() + 60.0 + 3.0 * k
+        if args.vessel_last:
+            # Every riser up and waiting for its first pose, then the vessel (as the launch would start it), so
+            # that all start from a vessel at rest, within its fade-in.
+            while diags.running("waiting for vessel pose") < k:
+                if proc.poll() is not None or time.time() > deadline:
+                    row["note"] = "only %d of %d risers waiting for the vessel" % (
+                        diags.running("waiting for vessel pose"), k)
+                    return row
+                time.sleep(0.2)
+            how = ["load", "riser_sim/VesselMotionNodelet", "/riser_manager"] if args.mode == "nodelets" else \
+                ["standalone", "riser_sim/VesselMotionNodelet"]
+            vessel = subprocess.Popen(["rosrun", "nodelet", "nodelet"] + how +
+                                      ["__name:=vessel_motion", "_rate:=%g" % args.vessel_rate], stdout=log,
+                                      stderr=subprocess.STDOUT)
         while diags.running() < k:
             if proc.poll() is not None:
                 row["note"] = "roslaunch exited (%d)" % proc.returncode
@@ -135,7 +154,7 @@ def trial(args, k, diags, scene_file):
                 return row
             time.sleep(0.2)
         time.sleep(args.warmup)
-        pids = descendants(proc.pid)
+        pids = descendants(proc.pid) + ([vessel.pid] + descendants(vessel.pid) if vessel else [])
         t0, cpu0 = time.time(), cpu_seconds(pids)
         time.sleep(args.window)
         t1, cpu1 = time.time(), cpu_seconds(pids)
@@ -165,6 +184,8 @@ def trial(args, k, diags, scene_file):
         row["note"] = "; ".join(notes)
         return row
     finally:
+        if vessel is not None:
+            stop(vessel)
         stop(proc)
         log.close()
 
@@ -174,6 +195,18 @@ def main():
     ap.add_argument("--mode", choices=["nodes", "nodelets"], required=True)
     ap.add_argument("--scene", required=True, help="scene YAML (its top motion is replaced by the vessel's)")
     ap.add_argument("--max-count", type=int, default=64)
+    ap.add_argument("--start", type=int, default=1, help="first k of the doubling")
+    ap.add_argument("--spacing", type=float, default=10.0,
+                    help="hang-off x of riser i in the vessel frame: (i - 1) * spacing [m] (many_risers.launch)")
+    ap.add_argument("--set", action="append", default=[], metavar="KEY=VALUE",
+                    help="override a scene key (dotted path, YAML value), e.g. bottom.position=[90,5,-100]")
+    ap.add_argument("--loop-rate", type=float, default=None,
+                    help="the risers' ~loop_rate [Hz] (default: config/node_defaults.yaml's, 500)")
+    ap.add_argument("--vessel-param", action="append", default=[], metavar="KEY=VALUE",
+                    help="a private parameter of the vessel nodelet (YAML value), e.g. fade_in=120")
+    ap.add_argument("--vessel-last", action="store_true",
+                    help="start the vessel only when every riser waits for its first pose (all start from rest)")
+    ap.add_argument("--tag", default="", help="suffix of the output files (many_risers<tag>.csv, ...)")
     ap.add_argument("--window", type=float, default=20.0, help="measurement window [s]")
     ap.add_argument("--warmup", type=float, default=5.0, help="seconds after every riser runs")
     ap.add_argument("--vessel-rate", type=float, default=100.0)
@@ -184,19 +217,36 @@ def main():
     os.makedirs(args.out, exist_ok=True)
     with open(args.scene) as f:
         scene = yaml.safe_load(f)
+    for kv in args.set:
+        key, _, value = kv.partition("=")
+        node = scene
+        for part in key.split(".")[:-1]:
+            node = node.setdefault(part, {})
+        node[key.split(".")[-1]] = yaml.safe_load(value)
     scene.setdefault("top", {})["motion"] = {"type": "external"}
-    scene_file = os.path.join(args.out, "many_risers_scene.yaml")
+    scene_file = os.path.join(args.out, "many_risers%s_scene.yaml" % args.tag)
     with open(scene_file, "w") as f:
         yaml.safe_dump(scene, f)
 
+    params_file = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "config/node_defaults.yaml")
+    if args.loop_rate is not None:
+        with open(params_file) as f:
+            params = yaml.safe_load(f)
+        params["loop_rate"] = args.loop_rate
+        params_file = os.path.join(args.out, "many_risers%s_params.yaml" % args.tag)
+        with open(params_file, "w") as f:
+            yaml.safe_dump(params, f)
     rospy.init_node("many_risers_bench", disable_signals=True)
+    for kv in args.vessel_param:  # roslaunch sets only ~rate: the rest stays on the parameter server
+        key, _, value = kv.partition("=")
+        rospy.set_param("/vessel_motion/" + key, yaml.safe_load(value))
     diags = Diagnostics()
-    csv_path = os.path.join(args.out, "many_risers.csv")
+    csv_path = os.path.join(args.out, "many_risers%s.csv" % args.tag)
     new = not os.path.exists(csv_path)
     results = {}
 
     def run(k):
-        row = trial(args, k, diags, scene_file)
+        row = trial(args, k, diags, scene_file, params_file)
         results[k] = row
         print("many_risers: %-8s k = %2d  %s  min rtf %.3f  median %.3f  dropped %.3f s  step %.1f us  CPU %.2f cores  "
               "load %.1f  %s" % (args.mode, k, "pass" if row["pass"] else "FAIL", row.get("min_rtf", float("nan")),
@@ -213,7 +263,7 @@ def main():
         return row["pass"]
     run.new = new
 
-    good, bad, k = 0, None, 1
+    good, bad, k = 0, None, max(1, min(args.start, args.max_count))
     while k <= args.max_count:
         if not run(k):
             bad = k
@@ -228,7 +278,7 @@ def main():
             bad = mid
     print("many_risers: %s: largest k with every riser at real-time factor >= %g: %d%s" %
           (args.mode, args.min_rtf, good, " (the most tried)" if bad is None else ""))
-    with open(os.path.join(args.out, "many_risers_%s.txt" % args.mode), "w") as f:
+    with open(os.path.join(args.out, "many_risers%s_%s.txt" % (args.tag, args.mode)), "w") as f:
         f.write("%d\n" % good)
     return 0
 

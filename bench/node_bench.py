@@ -3,7 +3,8 @@
 
 For one line size n: sets the scene (a YAML scene file with line.elements and solver.dt overridden)
 under <ns>/riser_sim/scene, starts the node binary, drives it with a vessel surging as in the paper
-(x_0 = 10 cos(2 pi t / 27), 50 Hz), subscribes to ~tension, ~state, ~markers, ~top_wrench and /tf,
+(x_0 = 10 cos(2 pi t / 27), 50 Hz, t from the node's first tension, at rest before; --motion ax,ay,az,T: x, y, z = a cos(2 pi t / T), e.g. the 3D sea
+scene's own 2, 1, 0.5 m at 10 s), subscribes to ~tension, ~state, ~markers, ~top_wrench and /tf,
 and over a measurement window reads
   - the node's real-time factor and compute real-time factor, step time, work per publish period
     (p99) and publish time (p99) from its /diagnostics,
@@ -29,7 +30,7 @@ from visualization_msgs.msg import MarkerArray
 from riser_sim.msg import LineState, Tension
 from proc_util import stop
 
-FIELDS = ["n", "dt", "status", "real_time_factor", "compute_real_time_factor", "cpu_percent", "step_mean_us",
+FIELDS = ["scene", "n", "dt", "status", "real_time_factor", "compute_real_time_factor", "cpu_percent", "step_mean_us",
           "step_max_us", "work_per_publish_period_p99_ms", "publish_period_ms", "publish_p99_ms", "tension_hz",
           "window_s"]
 
@@ -47,10 +48,17 @@ def main():
     ap.add_argument("--scene", required=True, help="scene YAML file")
     ap.add_argument("--n", type=int, required=True, help="line.elements")
     ap.add_argument("--dt", type=float, required=True, help="solver.dt [s]")
+    ap.add_argument("--motion", default="10,0,0,27",
+                    help="vessel motion ax,ay,az,T: position a cos(2 pi t / T) per axis [m, s] (default: the paper's surge)")
+    ap.add_argument("--param", action="append", default=[], metavar="KEY=VALUE",
+                    help="a private parameter of the node (YAML value), e.g. loop_rate=50")
     ap.add_argument("--window", type=float, default=10.0, help="measurement window [s]")
     ap.add_argument("--warmup", type=float, default=3.0, help="seconds after the first tension before measuring")
     ap.add_argument("--csv", required=True)
     args = ap.parse_args()
+    motion = [float(v) for v in args.motion.split(",")]
+    if len(motion) != 4 or not motion[3] > 0.0:
+        ap.error("--motion: expected ax,ay,az,T with T > 0, got %r" % args.motion)
 
     ns = "/bench_n%d" % args.n
     rospy.init_node("node_bench_n%d" % args.n)
@@ -59,6 +67,9 @@ def main():
     scene.setdefault("line", {})["elements"] = args.n
     scene.setdefault("solver", {})["dt"] = args.dt
     rospy.set_param(ns + "/riser_sim/scene", scene)
+    for kv in args.param:
+        key, _, value = kv.partition("=")
+        rospy.set_param(ns + "/riser_sim/" + key, yaml.safe_load(value))
 
     counts = {"tension": 0}
     diags = []
@@ -83,7 +94,7 @@ def main():
     env = dict(os.environ, ROS_NAMESPACE=ns)
     node = subprocess.Popen([args.node, "__name:=riser_sim"], env=env, stdout=subprocess.DEVNULL,
                             stderr=subprocess.PIPE)
-    row = {"n": args.n, "dt": args.dt, "status": "ok", "window_s": args.window}
+    row = {"scene": os.path.splitext(os.path.basename(args.scene))[0], "n": args.n, "dt": args.dt, "status": "ok", "window_s": args.window}
     try:
         t0 = rospy.Time.now()
         rate = rospy.Rate(50.0)
@@ -97,15 +108,19 @@ def main():
                 break
             now = rospy.Time.now()
             t = (now - t0).to_sec()
+            # The vessel holds its t = 0 pose (at rest) until the node has started: the node starts from the statics
+            # at rest, and a 3D sea riser jolted into a vessel already moving can diverge (docs/benchmarks.md).
+            tm = (now - motion_t0).to_sec() if first is not None else 0.0
             msg = PoseStamped()
             msg.header.stamp = now
             msg.header.frame_id = "world"
-            msg.pose.position.x = 10.0 * math.cos(2.0 * math.pi * t / 27.0)
+            c = math.cos(2.0 * math.pi * tm / motion[3])
+            msg.pose.position.x, msg.pose.position.y, msg.pose.position.z = motion[0] * c, motion[1] * c, motion[2] * c
             msg.pose.orientation.w = 1.0
             pose_pub.publish(msg)
             wall = time.time()
             if first is None and counts["tension"] > 0:
-                first = wall
+                first, motion_t0 = wall, now
             if first is not None and measure_from is None and wall - first >= args.warmup:
                 measure_from, cpu0, tension0, ndiag0 = wall, cpu_seconds(node.pid), counts["tension"], len(diags)
             if measure_from is not None and wall - measure_from >= args.window:
