@@ -90,6 +90,11 @@ if(CATKIN_ENABLE_TESTING)
     target_link_libraries(riser_sim_test_pch PRIVATE GTest::gtest)
   endif()
   target_compile_definitions(riser_sim_test_pch PRIVATE RISER_SIM_SOURCE_DIR="${CMAKE_CURRENT_SOURCE_DIR}")
+  # RISER_SIM_TEST_OPT: the test drivers' optimisation (after the build type's, so it wins), the core library
+  # keeping its own: the sanitizer build passes -O0 (scripts/test_sanitize.sh). On the PCH target too: gcc and
+  # clang refuse a PCH built at another optimisation level (__OPTIMIZE__).
+  set(RISER_SIM_TEST_OPT "" CACHE STRING "Optimisation of the core's test drivers (empty: the build type's)")
+  target_compile_options(riser_sim_test_pch PRIVATE ${RISER_SIM_TEST_OPT})
   target_precompile_headers(riser_sim_test_pch PRIVATE <Eigen/Dense> <gtest/gtest.h> <algorithm> <cmath>
     <cstdio> <functional> <map> <memory> <random> <sstream> <string> <vector>)
   file(GLOB RISER_SIM_CORE_TESTS ${CMAKE_CURRENT_SOURCE_DIR}/test/core/test_*.cpp)
@@ -103,6 +108,7 @@ if(CATKIN_ENABLE_TESTING)
     catkin_add_gtest(${test_name} ${test_src} WORKING_DIRECTORY ${CMAKE_CURRENT_SOURCE_DIR})
     target_link_libraries(${test_name} riser_sim_core gtest_main)
     target_compile_definitions(${test_name} PRIVATE RISER_SIM_SOURCE_DIR="${CMAKE_CURRENT_SOURCE_DIR}")
+    target_compile_options(${test_name} PRIVATE ${RISER_SIM_TEST_OPT})
     target_precompile_headers(${test_name} REUSE_FROM riser_sim_test_pch)
   endforeach()
 endif()
