@@ -50,7 +50,7 @@ if(CATKIN_ENABLE_TESTING)
   # CPU at -O3 parsing the same headers again (docs/hardening.md, "In CI"). gcc uses the PCH only if every
   # driver has its flags and macros: riser_sim_ros_test() gives each the same set, the binaries' paths included.
   set(RISER_SIM_ROS_TEST_OPT -O0 CACHE STRING "Optimisation of the node's test drivers")
-  file(WRITE ${CMAKE_CURRENT_BINARY_DIR}/riser_sim_ros_test_pch.cpp "")
+  file(CONFIGURE OUTPUT ${CMAKE_CURRENT_BINARY_DIR}/riser_sim_ros_test_pch.cpp CONTENT "")  # cmake/core.cmake
   add_library(riser_sim_ros_test_pch OBJECT EXCLUDE_FROM_ALL ${CMAKE_CURRENT_BINARY_DIR}/riser_sim_ros_test_pch.cpp)
   add_dependencies(riser_sim_ros_test_pch ${PROJECT_NAME}_generate_messages_cpp)  # riser_sim/*.h in the PCH
   target_precompile_headers(riser_sim_ros_test_pch PRIVATE <ros/ros.h> <ros/master.h> <gtest/gtest.h>
