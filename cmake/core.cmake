@@ -93,7 +93,7 @@ if(CATKIN_ENABLE_TESTING)
   endif()
   target_compile_definitions(riser_sim_test_pch PRIVATE RISER_SIM_SOURCE_DIR="${CMAKE_CURRENT_SOURCE_DIR}")
   # RISER_SIM_TEST_OPT: the test drivers' optimisation (after the build type's, so it wins), the core library
-  # keeping its own: the sanitizer build passes -O0 (scripts/test_sanitize.sh). On the PCH target too: gcc and
+  # keeping its own (scripts/test_sanitize.sh's RISER_SIM_SANITIZE_TEST_OPT). On the PCH target too: gcc and
   # clang refuse a PCH built at another optimisation level (__OPTIMIZE__).
   set(RISER_SIM_TEST_OPT "" CACHE STRING "Optimisation of the core's test drivers (empty: the build type's)")
   target_compile_options(riser_sim_test_pch PRIVATE ${RISER_SIM_TEST_OPT})
