@@ -81,7 +81,9 @@ target_precompile_headers(riser_sim_core PRIVATE ${RISER_SIM_PCH_HEADERS})
 
 if(CATKIN_ENABLE_TESTING)
   # One precompiled header (Eigen, gtest, std) for every core gtest: ~2.5 s less CPU per test file.
-  file(WRITE ${CMAKE_CURRENT_BINARY_DIR}/riser_sim_test_pch.cpp "")
+  # CONFIGURE, not WRITE: the file keeps its time stamp when CMake runs again (catkin_make run_tests), so its
+  # object is not compiled again.
+  file(CONFIGURE OUTPUT ${CMAKE_CURRENT_BINARY_DIR}/riser_sim_test_pch.cpp CONTENT "")
   add_library(riser_sim_test_pch OBJECT ${CMAKE_CURRENT_BINARY_DIR}/riser_sim_test_pch.cpp)
   target_link_libraries(riser_sim_test_pch PRIVATE riser_sim_core gtest_main)
   # The gtest target catkin_add_gtest links each test to (and so its -DGTEST_HAS_PTHREAD=1): gcc ignores a PCH
@@ -91,6 +93,11 @@ if(CATKIN_ENABLE_TESTING)
     target_link_libraries(riser_sim_test_pch PRIVATE GTest::gtest)
   endif()
   target_compile_definitions(riser_sim_test_pch PRIVATE RISER_SIM_SOURCE_DIR="${CMAKE_CURRENT_SOURCE_DIR}")
+  # RISER_SIM_TEST_OPT: the test drivers' optimisation (after the build type's, so it wins), the core library
+  # keeping its own (scripts/test_sanitize.sh's RISER_SIM_SANITIZE_TEST_OPT). On the PCH target too: gcc and
+  # clang refuse a PCH built at another optimisation level (__OPTIMIZE__).
+  set(RISER_SIM_TEST_OPT "" CACHE STRING "Optimisation of the core's test drivers (empty: the build type's)")
+  target_compile_options(riser_sim_test_pch PRIVATE ${RISER_SIM_TEST_OPT})
   target_precompile_headers(riser_sim_test_pch PRIVATE <Eigen/Dense> <gtest/gtest.h> <algorithm> <cmath>
     <cstdio> <functional> <map> <memory> <random> <sstream> <string> <vector>)
   file(GLOB RISER_SIM_CORE_TESTS ${CMAKE_CURRENT_SOURCE_DIR}/test/core/test_*.cpp)
@@ -104,6 +111,7 @@ if(CATKIN_ENABLE_TESTING)
     catkin_add_gtest(${test_name} ${test_src} WORKING_DIRECTORY ${CMAKE_CURRENT_SOURCE_DIR})
     target_link_libraries(${test_name} riser_sim_core gtest_main)
     target_compile_definitions(${test_name} PRIVATE RISER_SIM_SOURCE_DIR="${CMAKE_CURRENT_SOURCE_DIR}")
+    target_compile_options(${test_name} PRIVATE ${RISER_SIM_TEST_OPT})
     target_precompile_headers(${test_name} REUSE_FROM riser_sim_test_pch)
   endforeach()
 endif()

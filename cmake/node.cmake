@@ -44,26 +44,51 @@ install(FILES config/node_defaults.yaml DESTINATION ${CATKIN_PACKAGE_SHARE_DESTI
 
 if(CATKIN_ENABLE_TESTING)
   find_package(rostest REQUIRED)
+  # The node's test drivers (rostest gtests and the helpers' gtests) share one precompiled header (roscpp, tf2,
+  # the messages, gtest, Eigen, yaml-cpp) and compile at RISER_SIM_ROS_TEST_OPT (-O0): they mostly wait on the
+  # node, and the code they exercise is in riser_sim_ros and the core, built at -O3. Each driver took ~15 s of
+  # CPU at -O3 parsing the same headers again (docs/hardening.md, "In CI"). gcc uses the PCH only if every
+  # driver has its flags and macros: riser_sim_ros_test() gives each the same set, the binaries' paths included.
+  set(RISER_SIM_ROS_TEST_OPT -O0 CACHE STRING "Optimisation of the node's test drivers")
+  file(CONFIGURE OUTPUT ${CMAKE_CURRENT_BINARY_DIR}/riser_sim_ros_test_pch.cpp CONTENT "")  # cmake/core.cmake
+  add_library(riser_sim_ros_test_pch OBJECT EXCLUDE_FROM_ALL ${CMAKE_CURRENT_BINARY_DIR}/riser_sim_ros_test_pch.cpp)
+  add_dependencies(riser_sim_ros_test_pch ${PROJECT_NAME}_generate_messages_cpp)  # riser_sim/*.h in the PCH
+  target_precompile_headers(riser_sim_ros_test_pch PRIVATE <ros/ros.h> <ros/master.h> <gtest/gtest.h>
+    <tf2_ros/buffer.h> <tf2_ros/transform_listener.h> <tf2_ros/transform_broadcaster.h> <tf2_msgs/TFMessage.h>
+    <std_srvs/Trigger.h> <diagnostic_msgs/DiagnosticArray.h> <geometry_msgs/PoseStamped.h>
+    <geometry_msgs/WrenchStamped.h> <nav_msgs/Odometry.h> <visualization_msgs/MarkerArray.h>
+    <rosgraph_msgs/Clock.h> <riser_sim/LineState.h> <riser_sim/Tension.h> <riser_sim/Modes.h>
+    <Eigen/Dense> <Eigen/Geometry> <yaml-cpp/yaml.h> <atomic> <cmath> <cstdio> <fstream> <functional> <map>
+    <memory> <mutex> <sstream> <string> <vector>)
+  function(riser_sim_ros_test target)
+    target_link_libraries(${target} riser_sim_ros ${catkin_LIBRARIES} GTest::gtest)
+    target_compile_options(${target} PRIVATE ${RISER_SIM_ROS_TEST_OPT})
+    target_compile_definitions(${target} PRIVATE RISER_SIM_NODE_BIN="$<TARGET_FILE:riser_sim_node>"
+      RISER_SIM_CLI_BIN="$<TARGET_FILE:riser_sim_cli>")
+    if(NOT target STREQUAL riser_sim_ros_test_pch)
+      target_precompile_headers(${target} REUSE_FROM riser_sim_ros_test_pch)
+    endif()
+  endfunction()
+  riser_sim_ros_test(riser_sim_ros_test_pch)
   # Plain gtests of the ROS-side helpers (no master needed).
   if(EXISTS ${CMAKE_CURRENT_SOURCE_DIR}/test/ros/test_node_helpers.cpp)
     catkin_add_gtest(test_node_helpers test/ros/test_node_helpers.cpp)
-    target_link_libraries(test_node_helpers riser_sim_ros)
+    riser_sim_ros_test(test_node_helpers)
   endif()
   # The 3D outputs through the node's LineRun (~state, markers, frames), no master either.
   catkin_add_gtest(test_node_helpers3 test/ros/test_node_helpers3.cpp)
-  target_link_libraries(test_node_helpers3 riser_sim_ros)
+  riser_sim_ros_test(test_node_helpers3)
   # rosrun finds the programs once and quietly (the workspace is not inside the package tree).
   catkin_add_gtest(test_rosrun test/ros/test_rosrun.cpp)
+  riser_sim_ros_test(test_rosrun)
   add_dependencies(test_rosrun riser_sim_cli)
   # Node tests: test/ros/<name>.test launches the node(s) and the gtest built from test/ros/test_<name>.cpp.
   file(GLOB RISER_SIM_ROSTESTS RELATIVE ${CMAKE_CURRENT_SOURCE_DIR}/test/ros ${CMAKE_CURRENT_SOURCE_DIR}/test/ros/*.test)
   foreach(test_file ${RISER_SIM_ROSTESTS})
     get_filename_component(t ${test_file} NAME_WE)
     add_rostest_gtest(test_${t} test/ros/${t}.test test/ros/test_${t}.cpp)
-    target_link_libraries(test_${t} riser_sim_ros ${catkin_LIBRARIES})
+    riser_sim_ros_test(test_${t})
     add_dependencies(test_${t} riser_sim_node riser_sim_nodelets riser_sim_cli)
-    target_compile_definitions(test_${t} PRIVATE RISER_SIM_NODE_BIN="$<TARGET_FILE:riser_sim_node>"
-      RISER_SIM_CLI_BIN="$<TARGET_FILE:riser_sim_cli>")
   endforeach()
   # Master restart and security checks: a script, not a rostest (it kills and restarts the master).
   # It writes its own JUnit file, counted by catkin_test_results like the others.
