@@ -54,6 +54,8 @@ def main():
                     help="a private parameter of the node (YAML value), e.g. loop_rate=50")
     ap.add_argument("--window", type=float, default=10.0, help="measurement window [s]")
     ap.add_argument("--warmup", type=float, default=3.0, help="seconds after the first tension before measuring")
+    ap.add_argument("--moving-start", action="store_true",
+                    help="the vessel moves from the bench's start, so the node starts against a moving vessel")
     ap.add_argument("--csv", required=True)
     args = ap.parse_args()
     motion = [float(v) for v in args.motion.split(",")]
@@ -111,6 +113,8 @@ def main():
             # The vessel holds its t = 0 pose (at rest) until the node has started: the node starts from the statics
             # at rest, and a 3D sea riser jolted into a vessel already moving can diverge (docs/benchmarks.md).
             tm = (now - motion_t0).to_sec() if first is not None else 0.0
+            if args.moving_start:
+                tm = t
             msg = PoseStamped()
             msg.header.stamp = now
             msg.header.frame_id = "world"

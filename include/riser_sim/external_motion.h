@@ -28,6 +28,10 @@ struct ExternalMotionOptions {
   double max_prediction = 0.3;   // longest extrapolation beyond the newest sample [s]
   double coast_time = 0.2;       // constant-velocity continuation past the blend [s]
   double stop_time = 0.5;        // velocity decay to zero, then hold [s] (> 0)
+  // After reset() (the line at rest): the catch-up with a source already moving is spread until this long after
+  // the reset [s] (each blend then ends there, aimed at the source's state predicted to that time), so the top
+  // accelerates by ~v / start_blend instead of v / min_blend. 0: off.
+  double start_blend = 0.0;
 
   // Empty when valid, else "field: reason".
   std::string validate() const;
@@ -66,7 +70,7 @@ class ExternalMotion : public TopMotion {
   };
   const std::pair<double, Vec2>& sample(int back) const;  // back = 0: newest
   void fit(PointMotion& out) const;  // p, v, a at the newest sample time
-  void plan(double t_now, const PointMotion& from, const PointMotion& target);
+  void plan(double t_now, double T, const PointMotion& from, const PointMotion& target);
 
   ExternalMotionOptions opt_;
   std::array<std::pair<double, Vec2>, kHistory> ring_;
@@ -74,6 +78,7 @@ class ExternalMotion : public TopMotion {
   Quintic blend_, coast_, stop_;
   Vec2 hold_ = Vec2::Zero();
   double t_hold_ = 0.0;
+  double t_reset_ = 0.0;  // the last reset() (start_blend counts from it)
 };
 
 }  // namespace riser_sim

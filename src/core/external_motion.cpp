@@ -20,6 +20,7 @@ std::string ExternalMotionOptions::validate() const {
   if (bad(max_prediction) || max_prediction < 0.0) return "max_prediction: must be >= 0";
   if (bad(coast_time) || coast_time < 0.0) return "coast_time: must be >= 0";
   if (bad(stop_time) || stop_time <= 0.0) return "stop_time: must be > 0";
+  if (bad(start_blend) || start_blend < 0.0) return "start_blend: must be >= 0";
   return "";
 }
 
@@ -63,6 +64,7 @@ void ExternalMotion::reset(double t, const Vec2& p) {
   stop_ = blend_;
   hold_ = p;
   t_hold_ = t;
+  t_reset_ = t;
 }
 
 const std::pair<double, Vec2>& ExternalMotion::sample(int back) const {
@@ -127,18 +129,22 @@ bool ExternalMotion::addSample(double t_sample, const Vec2& p, double t_now) {
 
   PointMotion target;
   fit(target);
-  const double T = blendTime();
-  if (opt_.predict) {
-    const double h = std::clamp(t_now + T - t_sample, 0.0, opt_.max_prediction);
-    target.p += target.v * h + 0.5 * target.a * h * h;
-    target.v += target.a * h;
+  double T = blendTime(), reach = opt_.max_prediction;
+  const double start_left = t_reset_ + opt_.start_blend - t_now;
+  if (start_left > T) {  // the start's catch-up: one blend to the window's end, aimed at the state predicted there
+    T = start_left;
+    reach = std::max(reach, t_now + T - t_sample);
   }
-  plan(t_now, from, target);
+  if (opt_.predict) {  // the fitted acceleration for up to max_prediction, constant velocity beyond (the start)
+    const double h = std::clamp(t_now + T - t_sample, 0.0, reach), ha = std::min(h, opt_.max_prediction);
+    target.p += target.v * h + target.a * ha * (h - 0.5 * ha);
+    target.v += target.a * ha;
+  }
+  plan(t_now, T, from, target);
   return true;
 }
 
-void ExternalMotion::plan(double t_now, const PointMotion& from, const PointMotion& target) {
-  const double T = blendTime();
+void ExternalMotion::plan(double t_now, double T, const PointMotion& from, const PointMotion& target) {
   blend_.set(t_now, T, from, target);
   // Coast: the acceleration ramps linearly to zero (the end state of that ramp, reached by a quintic).
   const double Tc = opt_.coast_time;

@@ -246,6 +246,7 @@ NodeParams loadNodeParams(const ros::NodeHandle& pnh, const std::string& node_na
   m.max_prediction = r.number("motion/max_prediction", m.max_prediction);
   m.coast_time = r.number("motion/coast_time", m.coast_time);
   m.stop_time = r.number("motion/stop_time", m.stop_time);
+  m.start_blend = r.number("motion/start_blend", m.start_blend);
   const std::string err = m.validate();
   if (!err.empty()) {
     const auto colon = err.find(':');
