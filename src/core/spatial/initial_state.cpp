@@ -198,22 +198,22 @@ InitialState3 solveInitialState3(const Scene& scene, const Vec3& top) {
   init.max_acceleration = restAcceleration(scene, init.kin, init.end_force, top, where);
   // On a slope: relaxed when the guess touches it (off the seabed it is the planar equilibrium).
   const bool relax_slope = sloped && !(init.max_acceleration <= init.acceleration_bound);
-  if (relax_slope && kind == InitialKind::kDisplaced && !free_hang)
-    throw std::runtime_error("initial: seabed.slope: a displaced end is solved clear of a sloped seabed only (its end "
-                             "force is the planar statics'), but this line touches it (acceleration at rest " +
-                             fmt(init.max_acceleration) + " m/s^2 at rfe " + std::to_string(where) +
-                             "); use initial.type between_points with bottom.type pinned, or a level seabed");
-  if (held_end) {
+  const bool slope_end = relax_slope && kind == InitialKind::kDisplaced && !free_hang;
+  if (held_end || slope_end) {
     const std::shared_ptr<SpatialModel> model = buildSpatialModel(stillWater(scene));
     const Vec2 xy = top.head<2>() + scene.initial.end_offset;
     try {
       init.kin = spatialEquilibriumHeldEnd(*model, init.kin, xy, init.end_force);
     } catch (const std::runtime_error& e) {
-      throw std::runtime_error("initial: the displaced end in the current across the plane (environment.current): " +
-                               std::string(e.what()));
+      throw std::runtime_error(std::string("initial: the displaced end ") +
+                               (slope_end ? "on the sloped seabed (seabed.slope" : "in the current across the plane "
+                                                                                   "(environment.current") +
+                               "): " + e.what());
     }
-    init.about = "displaced equilibrium in the current across the plane: the planar statics with the current "
-                 "projected, then Newton in 3D with the end held at (" + fmt(xy.x()) + ", " + fmt(xy.y()) +
+    init.about = std::string("displaced equilibrium ") +
+                 (slope_end ? "on the sloped seabed: the planar statics on a level seabed above it"
+                            : "in the current across the plane: the planar statics with the current projected") +
+                 ", then Newton in 3D with the end held at (" + fmt(xy.x()) + ", " + fmt(xy.y()) +
                  ") by the horizontal force (" + fmt(init.end_force.x()) + ", " + fmt(init.end_force.y()) + ") N";
     init.max_acceleration = restAcceleration(scene, init.kin, init.end_force, top, where);
   } else if (relax || relax_slope) {

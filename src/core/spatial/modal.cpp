@@ -181,8 +181,16 @@ Kinematics3 spatialEquilibriumHeldEnd(const SpatialModel& model, const Kinematic
     b.head(p) = line.loaded(theta, P * nu);
     b.tail(2) = -gap();
     const VecX x = A.partialPivLu().solve(b);
-    theta += x.head(p);
-    nu += x.tail(2);
+    // Backtracking on residual + gap / L: a contact (the seabed's kink at zero penetration) can make the full
+    // step overshoot.
+    const double merit0 = residual() + gap().norm() / L;
+    const VecX theta0 = theta;
+    const Vec2 nu0 = nu;
+    for (double a = 1.0;; a *= 0.5) {
+      theta = theta0 + a * x.head(p);
+      nu = nu0 + a * x.tail(2);
+      if (a < 1.0 / 64.0 || residual() + gap().norm() / L < merit0) break;
+    }
   }
   throw std::runtime_error("the 3D equilibrium with the end held horizontally did not converge in " +
                            std::to_string(iterations) + " Newton iterations (residual " + std::to_string(residual()) +
