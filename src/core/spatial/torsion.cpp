@@ -122,7 +122,7 @@ double addTwistForces(const SpatialModel& model, const Kinematics3& kin, const d
     const double ct = model.torsion().top_damping, rate = omega[0] - a.dot(kin[0].e_dot);  // m_t'
     d.top_tau = kt * d.top_twist + ct * rate;
     power -= ct * rate * rate;
-    Q.segment<3>(kE) += d.top_tau * spinConnection(d.frames.top_axis, dir(kin[0]));
+    Q.segment<3>(kE) += d.top_tau * a;
   }
   for (int i = 0; i < nb; ++i) {
     d.moment[i] = (i < nj ? d.tau[i] : 0.0) - (i > 0 ? d.tau[i - 1] : 0.0) - (i == 0 ? d.top_tau : 0.0);
