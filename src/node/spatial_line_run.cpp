@@ -11,19 +11,20 @@ namespace {
 using riser_sim::spatial::ExternalMotion3;
 using riser_sim::spatial::SpatialRun;
 
-std::unique_ptr<SpatialRun> build(riser_sim::Scene scene, const Eigen::Vector3d& top, double t,
+std::unique_ptr<SpatialRun> build(riser_sim::Scene scene, const VesselSample& s, double t,
                                   const NodeParams& params, ExternalMotion3*& motion,
                                   std::shared_ptr<ExternalMotion3>& bottom_motion, const VesselSample* bottom,
                                   double t_bottom) {
   scene.top.type = riser_sim::MotionKind::kFixed;
-  scene.top.position3 = top;
+  scene.top.position3 = s.hangoff;
   riser_sim::spatial::RunInputs3 in;
-  in.top = top;
-  auto m = std::make_unique<ExternalMotion3>(top, t, params.motion);
+  in.top = s.hangoff;
+  // With the attitude: flex joints turn with the vessel and the ROV.
+  auto m = std::make_unique<ExternalMotion3>(s.hangoff, s.orientation, t, params.motion);
   motion = m.get();
   in.motion = std::move(m);
   if (bottom) {
-    bottom_motion = std::make_shared<ExternalMotion3>(bottom->hangoff, t_bottom, params.motion);
+    bottom_motion = std::make_shared<ExternalMotion3>(bottom->hangoff, bottom->orientation, t_bottom, params.motion);
     in.bottom_motion = bottom_motion;
   }
   return std::make_unique<SpatialRun>(scene, std::move(in));
@@ -32,7 +33,7 @@ std::unique_ptr<SpatialRun> build(riser_sim::Scene scene, const Eigen::Vector3d&
 
 SpatialLineRun::SpatialLineRun(const riser_sim::Scene& scene, const VesselSample& s, double t,
                                const NodeParams& params, const VesselSample* bottom, double t_bottom)
-    : scene_(scene), top_(s.hangoff), run_(build(scene, s.hangoff, t, params, motion_, bottom_motion_, bottom, t_bottom)),
+    : scene_(scene), top_(s.hangoff), run_(build(scene, s, t, params, motion_, bottom_motion_, bottom, t_bottom)),
       vessel_(s.orientation), rov_(bottom ? bottom->orientation : Eigen::Quaterniond::Identity()),
       pinned_(scene.bottom == riser_sim::BottomBoundary::kPinned),
       msgs_(run_->model(), params.fixed_frame, params.tf_prefix, params.wrench_frame == "body", params.vessel_frame,
@@ -42,12 +43,12 @@ SpatialLineRun::SpatialLineRun(const riser_sim::Scene& scene, const VesselSample
       kin_(run_->model().bodies()) {}
 
 void SpatialLineRun::restartMotion(double t, const VesselSample& s) {
-  motion_->reset(t, s.hangoff);
+  motion_->reset(t, s.hangoff, s.orientation);
   vessel_ = s.orientation;
 }
 
 bool SpatialLineRun::addSample(double t_sample, const VesselSample& s) {
-  if (!motion_->addSample(t_sample, s.hangoff, run_->time())) return false;
+  if (!motion_->addSample(t_sample, s.hangoff, s.orientation, run_->time())) return false;
   vessel_ = s.orientation;
   return true;
 }
@@ -59,12 +60,12 @@ void SpatialLineRun::shiftSampleTimes(double dt) {
 
 void SpatialLineRun::restartBottom(double t, const VesselSample& s) {
   if (!bottom_motion_) return;
-  bottom_motion_->reset(t, s.hangoff);
+  bottom_motion_->reset(t, s.hangoff, s.orientation);
   rov_ = s.orientation;
 }
 
 bool SpatialLineRun::addBottomSample(double t_sample, const VesselSample& s) {
-  if (!bottom_motion_ || !bottom_motion_->addSample(t_sample, s.hangoff, run_->time())) return false;
+  if (!bottom_motion_ || !bottom_motion_->addSample(t_sample, s.hangoff, s.orientation, run_->time())) return false;
   rov_ = s.orientation;
   return true;
 }

@@ -57,10 +57,11 @@ inline VecX randomState(const SpatialModel& m, std::mt19937& rng, bool moving) {
   return y;
 }
 
-inline double energy(const SpatialForceTerm& term, const SpatialModel& m, const NaturalFormulation& f, const VecX& y) {
+inline double energy(const SpatialForceTerm& term, const SpatialModel& m, const NaturalFormulation& f, const VecX& y,
+                     double t = 0.0) {
   Kinematics3 kin(m.bodies());
   f.kinematics(y, kin);
-  return term.potentialEnergy(m, kin);
+  return term.potentialEnergy(m, kin, t);
 }
 
 // Projects the e part of every rfe's generalised vector orthogonally to e.
@@ -73,7 +74,7 @@ inline VecX tangent(const SpatialModel& m, const VecX& y, VecX g) {
   return g;
 }
 
-inline void checkGradient(const SpatialForceTerm& term, const SpatialModel& m) {
+inline void checkGradient(const SpatialForceTerm& term, const SpatialModel& m, double t = 0.0) {
   std::mt19937 rng(7);
   NaturalFormulation f(m, 50.0);
   const int nq = m.dofs();
@@ -82,13 +83,13 @@ inline void checkGradient(const SpatialForceTerm& term, const SpatialModel& m) {
     Kinematics3 kin(m.bodies());
     f.kinematics(y, kin);
     VecX Q = VecX::Zero(nq);
-    term.addForces(m, kin, 0.0, Q);
+    term.addForces(m, kin, t, Q);
     VecX grad = VecX::Zero(nq);
     for (int j = 0; j < nq; ++j) {
       VecX yp = y, ym = y;
       yp[j] += kFdStep;
       ym[j] -= kFdStep;
-      grad[j] = (energy(term, m, f, yp) - energy(term, m, f, ym)) / (2 * kFdStep);
+      grad[j] = (energy(term, m, f, yp, t) - energy(term, m, f, ym, t)) / (2 * kFdStep);
     }
     const VecX q_t = tangent(m, y, Q), g_t = tangent(m, y, grad);
     const double scale = std::max(q_t.cwiseAbs().maxCoeff(), 1e-12);
@@ -98,7 +99,9 @@ inline void checkGradient(const SpatialForceTerm& term, const SpatialModel& m) {
   }
 }
 
-inline void checkPower(const SpatialForceTerm& term, const SpatialModel& m) {
+// Q·v + dV/dt = P along the motion, dV/dt = ∂V/∂q v + ∂V/∂t (a term whose potential moves with time, e.g. a
+// flex joint on a turning holder, reports ∂V/∂t in its power: the work its holder does).
+inline void checkPower(const SpatialForceTerm& term, const SpatialModel& m, double t = 0.0) {
   std::mt19937 rng(11);
   NaturalFormulation f(m, 50.0);
   const int nq = m.dofs();
@@ -107,12 +110,12 @@ inline void checkPower(const SpatialForceTerm& term, const SpatialModel& m) {
     Kinematics3 kin(m.bodies());
     f.kinematics(y, kin);
     VecX Q = VecX::Zero(nq);
-    const double P = term.addForcesAndPower(m, kin, 0.0, Q);
+    const double P = term.addForcesAndPower(m, kin, t, Q);
     const double Qv = Q.dot(y.segment(nq, nq));
     VecX yp = y, ym = y;
     yp.head(nq) += kFdStep * y.segment(nq, nq);
     ym.head(nq) -= kFdStep * y.segment(nq, nq);
-    const double dV = (energy(term, m, f, yp) - energy(term, m, f, ym)) / (2 * kFdStep);
+    const double dV = (energy(term, m, f, yp, t + kFdStep) - energy(term, m, f, ym, t - kFdStep)) / (2 * kFdStep);
     const double scale = std::max({std::abs(Qv), std::abs(P), 1e-12});
     EXPECT_LT(std::abs(Qv + dV - P) / scale, kRelTol) << term.name() << " trial " << trial;
     if (trial == 0)

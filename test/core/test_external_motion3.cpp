@@ -184,3 +184,93 @@ TEST(ExternalMotion3, DrivesAPinnedBottom) {
 }  // namespace
 }  // namespace spatial
 }  // namespace riser_sim
+
+namespace riser_sim {
+namespace spatial {
+namespace {
+
+// A vessel yawing at 0.5 rad/s (through ±π three times in 20 s) while it rolls and pitches; 10 Hz samples of
+// its attitude: the smoothed R follows the true one and w its angular velocity, with no jump where the yaw
+// wraps; R stays a rotation.
+Mat3 attitude(double t) {
+  return (Eigen::AngleAxisd(0.5 * t + 2.5, Vec3::UnitZ()) * Eigen::AngleAxisd(0.05 * std::sin(0.8 * t), Vec3::UnitY()) *
+          Eigen::AngleAxisd(0.1 * std::sin(1.2 * t), Vec3::UnitX())).toRotationMatrix();
+}
+Vec3 angularVelocity(double t) {  // ψ' z + θ' Rz y + φ' Rz Ry x
+  const Mat3 Rz = Eigen::AngleAxisd(0.5 * t + 2.5, Vec3::UnitZ()).toRotationMatrix();
+  const Mat3 Rzy = Rz * Eigen::AngleAxisd(0.05 * std::sin(0.8 * t), Vec3::UnitY()).toRotationMatrix();
+  return 0.5 * Vec3::UnitZ() + 0.04 * std::cos(0.8 * t) * Rz.col(1) + 0.12 * std::cos(1.2 * t) * Rzy.col(0);
+}
+
+TEST(ExternalMotion3, FollowsTheHoldersAttitude) {
+  const Eigen::Quaterniond q0(attitude(0.0));
+  ExternalMotion3 m(Vec3(1, 2, 3), q0, 0.0);
+  EXPECT_TRUE(m.rotates());
+  EXPECT_LT((m.at(0.0).R - attitude(0.0)).norm(), 1e-12);
+  double worst_R = 0.0, worst_w = 0.0, worst_orth = 0.0;
+  for (int k = 1; k <= 200; ++k) {
+    const double t = 0.1 * k;
+    ASSERT_TRUE(m.addSample(t, Vec3(1, 2, 3), Eigen::Quaterniond(attitude(t)), t));
+    for (double s = t; s < t + 0.1 - 1e-9; s += 0.01) {
+      const PointMotion3 p = m.at(s);
+      worst_orth = std::max(worst_orth, (p.R.transpose() * p.R - Mat3::Identity()).norm());
+      if (s < 2.0) continue;  // after the fit's window has filled
+      worst_R = std::max(worst_R, Eigen::AngleAxisd(p.R * attitude(s).transpose()).angle());
+      worst_w = std::max(worst_w, (p.w - angularVelocity(s)).norm());
+    }
+  }
+  std::printf("ExternalMotion3 attitude: |R error| <= %.2e rad, |w error| <= %.2e rad/s, |RᵀR - I| <= %.1e\n",
+              worst_R, worst_w, worst_orth);
+  // The smoothing's lag on a 0.5 rad/s turn with 1.2 rad/s roll: its fit and blend (as on the position's own
+  // axes, ExternalMotion). A yaw jump of 2π at the wrap would be an error of ~π.
+  EXPECT_LT(worst_R, 2e-3);
+  EXPECT_LT(worst_w, 2e-2);
+  EXPECT_LT(worst_orth, 1e-14);
+  // Bad attitudes are refused and change nothing.
+  const int n = m.sampleCount();
+  EXPECT_FALSE(m.addSample(21.0, Vec3(1, 2, 3), Eigen::Quaterniond(0, 0, 0, 0), 21.0));
+  EXPECT_FALSE(m.addSample(21.0, Vec3(1, 2, 3), Eigen::Quaterniond(NAN, 0, 0, 1), 21.0));
+  EXPECT_EQ(m.sampleCount(), n);
+  // Without an attitude: R = I, w = 0.
+  ExternalMotion3 plain(Vec3(1, 2, 3), 0.0);
+  EXPECT_FALSE(plain.rotates());
+  EXPECT_TRUE(plain.at(1.0).R.isIdentity() && plain.at(1.0).w.isZero());
+}
+
+// A SpatialRun on a rotating ExternalMotion3 (the node's): its top flex joint turns with the vessel; on one
+// without an attitude, the joint's axis is fixed in the world.
+TEST(ExternalMotion3, TurnsTheTopFlexJoint) {
+  Scene scene = loadSceneFile(std::string(RISER_SIM_SOURCE_DIR) + "/test/ros/scenes/small_riser_3d.yaml");
+  scene.top_flex_joint.enabled = true;
+  scene.top_flex_joint.stiffness = 1e4;
+  const Vec3 top(0.0, 0.0, 0.0);
+  const Eigen::Quaterniond yawed(Eigen::AngleAxisd(0.7, Vec3::UnitZ()) * Eigen::AngleAxisd(0.1, Vec3::UnitX()));
+  for (bool turning : {true, false}) {
+    RunInputs3 in;
+    in.top = top;
+    auto motion = turning ? std::make_unique<ExternalMotion3>(top, yawed, 0.0) : std::make_unique<ExternalMotion3>(top, 0.0);
+    ExternalMotion3* em = motion.get();
+    in.motion = std::move(motion);
+    SpatialRun run(scene, std::move(in));
+    ASSERT_NE(run.topFlexJoint(), nullptr);
+    EXPECT_EQ(run.topFlexJoint()->turnsWithHolder(), turning);
+    // The vessel rolls 0.2 rad more over 1 s: a joint that turns with it is loaded; one fixed in the world is not.
+    const Eigen::Quaterniond rolled(Eigen::AngleAxisd(0.7, Vec3::UnitZ()) * Eigen::AngleAxisd(0.3, Vec3::UnitX()));
+    for (int k = 1; k <= 10; ++k) em->addSample(0.1 * k, top, k == 10 ? rolled : yawed.slerp(0.1 * k, rolled), run.time());
+    const Vec3 d0 = run.topFlexJoint()->axis(0.0).d;
+    EXPECT_LT((d0 - Vec3(0, 0, -1)).norm(), 1e-9);  // unloaded along the hanging line at the start
+    const Vec3 d = run.topFlexJoint()->axis(5.0).d;
+    const Vec3 expected = turning ? Vec3(em->at(5.0).R * em->at(0.0).R.transpose() * d0) : d0;
+    EXPECT_LT((d - expected).norm(), 1e-12) << (turning ? "turning" : "fixed");
+    if (turning) {  // held near the last sample's roll: past it by the coast at 0.2 rad/s (coast_time 0.2 s, then
+                    // stop_time 0.5 s of decay: ~0.09 rad); the axis turned with it
+      const double past = Eigen::AngleAxisd(em->at(5.0).R * rolled.toRotationMatrix().transpose()).angle();
+      EXPECT_LT(past, 0.12);
+      EXPECT_NEAR(std::acos(d.dot(d0)), 0.2 + past, 0.02);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace spatial
+}  // namespace riser_sim

@@ -41,12 +41,12 @@ TEST(SpatialFlexJoint, MomentBalancesTheWeightAtRest) {
   for (int k = 0; k < int(40.0 / h); ++k) ASSERT_TRUE(sim.step(h));
   Kinematics3 kin(m->bodies());
   sim.kinematics(kin);
-  const Vec3 M = joint->moment(*m, kin), W = weightMoment(*m, kin);
+  const Vec3 M = joint->moment(*m, kin, sim.time()), W = weightMoment(*m, kin);
   // At rest up to what is left of the motion after 40 s (kinetic energy ~1e-14 of m g L): measured
   // |M - W| = 6.3e-6 |W|, the inertia of that motion; bound 3e-5 |W|. A wrong sign or lever is O(|W|).
   std::printf("[flex joint] angle %.4f rad, |M| = %.6e N m, |M - W| / |W| = %.2e, T = %.2e J\n",
-              joint->angle(*m, kin), M.norm(), (M - W).norm() / W.norm(), sim.kineticEnergy());
-  EXPECT_GT(joint->angle(*m, kin), 0.05);  // the weight really bends the joint
+              joint->angle(*m, kin, sim.time()), M.norm(), (M - W).norm() / W.norm(), sim.kineticEnergy());
+  EXPECT_GT(joint->angle(*m, kin, sim.time()), 0.05);  // the weight really bends the joint
   EXPECT_LT((M - W).norm(), 3e-5 * W.norm());
   EXPECT_LT(sim.kineticEnergy(), 1e-9 * (10.0 * 10.0 + 50.0) * 9.81 * 10.0);
 }

@@ -49,8 +49,8 @@ TEST(SpatialForces, FlexJointsAgainstTheirEnergy) {
   for (int i = 0; i < m->bodies(); ++i) kin[i].e = Vec3(0, 0, -1), kin[i].len = m->rfe(i).length;
   kin[0].e = Vec3(0.0, std::sin(0.2), -std::cos(0.2));
   const FlexJoint j(FlexJoint::End::kTop, Vec3(0, 0, -1), 5e3, 0.0);
-  EXPECT_NEAR(j.angle(*m, kin), 0.2, 1e-15);
-  const Vec3 M = j.moment(*m, kin);
+  EXPECT_NEAR(j.angle(*m, kin, 0.0), 0.2, 1e-15);
+  const Vec3 M = j.moment(*m, kin, 0.0);
   EXPECT_NEAR(M.x(), 5e3 * 0.2, 1e-9);  // e rotated by +0.2 about x: the holder is turned the same way
   EXPECT_NEAR(M.y(), 0.0, 1e-12);
   EXPECT_NEAR(M.z(), 0.0, 1e-12);

@@ -89,7 +89,7 @@ TEST(SpatialSeabedSlope, LawOnTheIncline) {
     const Vec3 fric = -mu * N * v / std::hypot(v, spec.friction_velocity) * vel.normalized();
     EXPECT_LE((F - N * n - fric).norm(), 1e-11 * N) << (across ? "across" : "along");
     EXPECT_NEAR(P, fric.dot(vel), 1e-11 * N * v);  // the friction's power (the spring's is in dV/dt)
-    EXPECT_NEAR(bed.potentialEnergy(*m, kin), 0.5 * spec.stiffness_normal * p * p * (m->bodies() + 1), 1e-9);
+    EXPECT_NEAR(bed.potentialEnergy(*m, kin, 0.0), 0.5 * spec.stiffness_normal * p * p * (m->bodies() + 1), 1e-9);
   }
   // Against its energy and power on random states (tilted gravity: the heading projected normal to up).
   auto mt = spatial_test::spatialModel(ls, Vec3(1.2, -0.7, -9.5));
@@ -122,7 +122,7 @@ TEST(SpatialSeabedSlope, SlopeZeroIsTheLevelSeabed) {
     VecX Qa = VecX::Zero(m->dofs()), Qb = VecX::Zero(m->dofs());
     EXPECT_EQ(a.addForcesAndPower(*m, kin, 0.0, Qa), b.addForcesAndPower(*m, kin, 0.0, Qb));
     EXPECT_TRUE(Qa == Qb);
-    EXPECT_EQ(a.potentialEnergy(*m, kin), b.potentialEnergy(*m, kin));
+    EXPECT_EQ(a.potentialEnergy(*m, kin, 0.0), b.potentialEnergy(*m, kin, 0.0));
   }
 }
 

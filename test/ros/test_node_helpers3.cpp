@@ -277,6 +277,48 @@ solver: {dt: 0.001}
   }
 }
 
+// The node's path with a top flex joint (undamped: its moment is the spring's at every instant): the vessel
+// rolls 0.15 rad over 1 s and holds; the joint's axis turns with it, so the torque of ~top_wrench is
+// k angle(R d_0, e_0) about (e_0 × R d_0) with R the commanded roll and e_0 the top element from ~state's points
+// (a joint fixed in the world would give k angle(d_0, e_0)).
+TEST(FlexJoint, TurnsWithTheVessel) {
+  riser_sim::Scene s = scene(R"(
+name: flex_roll
+space: spatial
+line: {length: 20.0, elements: 10, mass_per_length: 5.0, EI: 100.0, end_mass: 50.0, axial_flexibility: false,
+       bending_damping: 20.0}
+top: {position: [0.0, 0.0, 0.0], motion: {type: external}, flex_joint: {stiffness: 2.0e4}}
+solver: {dt: 0.001}
+)");
+  std::unique_ptr<LineRun> run = startAt(s, Vec3::Zero());
+  VesselSample v;
+  double worst = 0.0, biggest = 0.0, fixed_gap = 1e300;
+  for (int k = 1; k <= 3000; ++k) {  // 3 s: the roll over the first second, then held
+    const double roll = 0.15 * std::min(1.0, 0.001 * k);
+    v.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(roll, Vec3::UnitX()));
+    ASSERT_TRUE(run->addSample(0.001 * k, v)) << k;
+    ASSERT_TRUE(run->step()) << run->divergenceReason();
+    if (k < 2000 || k % 100 != 0) continue;  // the smoothed attitude has reached the held roll
+    ASSERT_TRUE(run->evaluate());
+    const riser_sim::LineState st = run->state(ros::Time(3));
+    const auto& tq = run->topWrench(ros::Time(3)).wrench.torque;
+    const Vec3 e0 = Vec3(st.points[1].x - st.points[0].x, st.points[1].y - st.points[0].y,
+                         st.points[1].z - st.points[0].z).normalized();
+    const Vec3 d = Eigen::AngleAxisd(0.15, Vec3::UnitX()) * Vec3(0, 0, -1);
+    const Vec3 expected = -2.0e4 * std::acos(std::clamp(e0.dot(d), -1.0, 1.0)) * e0.cross(d).normalized();
+    const Vec3 d0(0, 0, -1), fixed = -2.0e4 * std::acos(std::clamp(e0.dot(d0), -1.0, 1.0)) * e0.cross(d0).normalized();
+    worst = std::max(worst, (Vec3(tq.x, tq.y, tq.z) - expected).norm());
+    fixed_gap = std::min(fixed_gap, (Vec3(tq.x, tq.y, tq.z) - fixed).norm());
+    biggest = std::max(biggest, expected.norm());
+  }
+  std::printf("[ INFO ] rolled flex joint: torque minus k angle(R d0, e0) <= %.2e N m of %.1f N m; a joint fixed in "
+              "the world would be off by >= %.1f N m\n", worst, biggest, fixed_gap);
+  EXPECT_GT(biggest, 100.0);   // the roll loads the joint (the line swings after it: 218 N m at most, measured)
+  EXPECT_GT(fixed_gap, 1e3);   // ~k x 0.15 rad: what a joint that did not turn would miss
+  // The joint's gaps at the top (~1e-9 m over 2 m elements) bound e_0 from the points: 1e-8 rad of k = 2e4.
+  EXPECT_LT(worst, 1e-3);
+}
+
 // 3D ~modes refuses bad counts, naming the field; a
 // hanging line's lowest transverse modes come in degenerate pairs turned into and across the statics' plane.
 TEST(SpatialModes, RefusalsNameTheFieldAndPairsSplitByPlane) {

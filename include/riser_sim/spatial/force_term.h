@@ -20,7 +20,7 @@ class SpatialForceTerm {
   // matters only up to multiples of e (the unit-length constraint takes those).
   virtual void addForces(const SpatialModel& model, const Kinematics3& kin, double t, VecX& Q) const = 0;
   // Potential energy of the conservative part [J].
-  virtual double potentialEnergy(const SpatialModel& model, const Kinematics3& kin) const = 0;
+  virtual double potentialEnergy(const SpatialModel& model, const Kinematics3& kin, double t) const = 0;
   // Power [W] of the non-conservative part fed into the line.
   virtual double power(const SpatialModel& model, const Kinematics3& kin, double t) const = 0;
   virtual double addForcesAndPower(const SpatialModel& model, const Kinematics3& kin, double t, VecX& Q) const {

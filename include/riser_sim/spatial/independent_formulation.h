@@ -121,7 +121,7 @@ class IndependentFormulation3 {
 // integrator the state moved). The same observers as SpatialSimulator.
 class IndependentSimulator3 : private OdeSystem {
  public:
-  IndependentSimulator3(std::shared_ptr<const SpatialModel> model, std::unique_ptr<TopMotion3> top, IntegratorKind kind,
+  IndependentSimulator3(std::shared_ptr<const SpatialModel> model, std::shared_ptr<const TopMotion3> top, IntegratorKind kind,
                         const IntegratorOptions& options = {}, double stabilization = 50.0);
   void reset(const Kinematics3& kin, double t0);  // W = 0; charts centred on kin's directors
   bool step(double h);                            // one step, then the chart switches
@@ -151,7 +151,7 @@ class IndependentSimulator3 : private OdeSystem {
   void rhs(double t, const VecX& y, VecX& dy) override;
 
   std::shared_ptr<const SpatialModel> model_;
-  std::unique_ptr<TopMotion3> top_;
+  std::shared_ptr<const TopMotion3> top_;
   IndependentFormulation3 formulation_;
   std::unique_ptr<IndependentData3> data_;
   std::unique_ptr<Integrator> integrator_;

@@ -41,6 +41,7 @@ class SpatialModel {
   // Pins the bottom to motion (its position at t = 0 becomes bottomPoint()).
   void setBottomMotion(std::shared_ptr<const TopMotion3> motion);
   bool bottomMoves() const { return bottom_motion_ != nullptr; }
+  const std::shared_ptr<const TopMotion3>& bottomMotion() const { return bottom_motion_; }
   // Position, velocity, acceleration of the pinned bottom at t [s] (fixed: velocity 0). Allocates nothing.
   PointMotion3 bottomAt(double t) const {
     return bottom_motion_ ? bottom_motion_->at(t) : PointMotion3{bottom_point_, Vec3::Zero(), Vec3::Zero()};

@@ -87,13 +87,17 @@ double restAcceleration(const Scene& scene, const Kinematics3& kin, const Vec3& 
 InitialState3 solveInitialState3(const Scene& scene, const Vec3& top);
 
 // The scene's flex joints (top.flex_joint, bottom.flex_joint) added to model, their axes given or along the
-// line in `initial` (then unloaded); `loaded` names those that start turned ("top.flex_joint turned 0.1 rad").
+// line in `initial` at t = 0 (then unloaded) and turning with their holder's motion when it rotates()
+// (nullptr or not rotating: fixed in the world); `loaded` names those that start turned ("top.flex_joint
+// turned 0.1 rad").
 struct FlexJoints3 {
   const FlexJoint* top = nullptr;
   const FlexJoint* bottom = nullptr;
   std::string loaded;
 };
-FlexJoints3 addFlexJoints(const Scene& scene, const Kinematics3& initial, SpatialModel& model);
+FlexJoints3 addFlexJoints(const Scene& scene, const Kinematics3& initial, SpatialModel& model,
+                          const std::shared_ptr<const TopMotion3>& top_holder = nullptr,
+                          const std::shared_ptr<const TopMotion3>& bottom_holder = nullptr);
 
 // Every output of the current state.
 struct LineOutputs3 {

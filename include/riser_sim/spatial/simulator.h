@@ -21,7 +21,7 @@ namespace spatial {
 
 class SpatialSimulator : private OdeSystem {
  public:
-  SpatialSimulator(std::shared_ptr<const SpatialModel> model, std::unique_ptr<TopMotion3> top, IntegratorKind kind,
+  SpatialSimulator(std::shared_ptr<const SpatialModel> model, std::shared_ptr<const TopMotion3> top, IntegratorKind kind,
                    const IntegratorOptions& options = {}, double stabilization = 50.0);
   // Starts from the given rfe kinematics at time t0 [s] (projected; W = 0).
   void reset(const Kinematics3& kin, double t0);
@@ -85,7 +85,7 @@ class SpatialSimulator : private OdeSystem {
   bool staleNext() const;
 
   std::shared_ptr<const SpatialModel> model_;
-  std::unique_ptr<TopMotion3> top_;
+  std::shared_ptr<const TopMotion3> top_;
   NaturalFormulation formulation_;
   std::unique_ptr<NaturalData> data_;
   std::unique_ptr<ShiftedSolver3> shifted_;

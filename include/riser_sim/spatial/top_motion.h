@@ -1,5 +1,5 @@
 // Prescribed motion of the top point A_0 in 3D: position, velocity and acceleration (the acceleration
-// enters the constraint equations).
+// enters the constraint equations), and the holder's attitude (what a flex joint's axis turns with).
 #pragma once
 #include <memory>
 #include <string>
@@ -14,12 +14,16 @@ struct PointMotion3 {
   Vec3 p = Vec3::Zero();  // [m]
   Vec3 v = Vec3::Zero();  // [m/s]
   Vec3 a = Vec3::Zero();  // [m/s^2]
+  Mat3 R = Mat3::Identity();  // the holder's orientation: holder frame -> world
+  Vec3 w = Vec3::Zero();      // the holder's angular velocity, world frame [rad/s]
 };
 
 class TopMotion3 {
  public:
   virtual ~TopMotion3() = default;
   virtual PointMotion3 at(double t) const = 0;
+  // True when at() can turn R (a holder that rotates: the node's vessel or ROV); false: R = I, w = 0 always.
+  virtual bool rotates() const { return false; }
 };
 
 class FixedMotion3 : public TopMotion3 {

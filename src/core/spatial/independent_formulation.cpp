@@ -298,7 +298,7 @@ int IndependentFormulation3::recentre(VecX& y, SphereCharts& charts, double thre
 
 // ---------------------------------------------------------------------------------------------
 
-IndependentSimulator3::IndependentSimulator3(std::shared_ptr<const SpatialModel> model, std::unique_ptr<TopMotion3> top,
+IndependentSimulator3::IndependentSimulator3(std::shared_ptr<const SpatialModel> model, std::shared_ptr<const TopMotion3> top,
                                              IntegratorKind kind, const IntegratorOptions& options,
                                              double stabilization)
     : model_(std::move(model)), top_(std::move(top)), formulation_(*model_, stabilization), data_(formulation_.makeData()),
@@ -362,7 +362,7 @@ double IndependentSimulator3::kineticEnergy() const {
 double IndependentSimulator3::potentialEnergy() const {
   kinematics(kin_);
   double v = formulation_.twistEnergy(y_, charts_, kin_, *data_);
-  for (const auto& term : model_->terms()) v += term->potentialEnergy(*model_, kin_);
+  for (const auto& term : model_->terms()) v += term->potentialEnergy(*model_, kin_, t_);
   return v;
 }
 

@@ -23,7 +23,7 @@ class MassDamping : public SpatialForceTerm {
   void addForces(const SpatialModel& model, const Kinematics3& kin, double t, VecX& Q) const override {
     sweep(model, kin, &Q);
   }
-  double potentialEnergy(const SpatialModel&, const Kinematics3&) const override { return 0.0; }
+  double potentialEnergy(const SpatialModel&, const Kinematics3&, double) const override { return 0.0; }
   double power(const SpatialModel& model, const Kinematics3& kin, double) const override {
     return sweep(model, kin, nullptr);
   }

@@ -143,7 +143,7 @@ SpatialRun::SpatialRun(const Scene& scene, RunInputs3 inputs)
   if (scene.space != SpaceKind::kSpatial) throw std::invalid_argument("space: SpatialRun needs space: spatial");
   if (const auto issue = unsupported(scene)) throw std::invalid_argument(issue->key + ": " + issue->message);
   model_ = buildSpatialModel(scene);
-  std::unique_ptr<TopMotion3> motion = inputs.motion ? std::move(inputs.motion) : buildTopMotion3(scene.top);
+  std::shared_ptr<const TopMotion3> motion = inputs.motion ? std::move(inputs.motion) : buildTopMotion3(scene.top);
   const Vec3 top = inputs.top ? *inputs.top : motion->at(0.0).p;
   // The statics end at the bottom's position at t = 0 (bottom.motion's, which may differ from bottom.position).
   Scene at0 = scene;
@@ -171,7 +171,7 @@ SpatialRun::SpatialRun(const Scene& scene, RunInputs3 inputs)
     }
   }
   // A loaded joint at t = 0 makes the start no equilibrium (the statics pin the ends): said in initial().about.
-  const FlexJoints3 joints = addFlexJoints(scene, initial_.kin, *model_);
+  const FlexJoints3 joints = addFlexJoints(scene, initial_.kin, *model_, motion, model_->bottomMotion());
   top_joint_ = joints.top;
   bottom_joint_ = joints.bottom;
   if (!joints.loaded.empty()) {
@@ -188,7 +188,7 @@ SpatialRun::SpatialRun(const Scene& scene, RunInputs3 inputs)
   // auto: the O(n) structured solves (spatial/shifted_solver.h); dense on request.
   io.jacobian = scene.solver.jacobian == JacobianKind::kDense ? JacobianKind::kDense : JacobianKind::kStructured;
   io.rho_inf = scene.solver.rho_inf;
-  sim_ = std::make_unique<SpatialSimulator>(model_, std::move(motion), scene.solver.integrator, io,
+  sim_ = std::make_unique<SpatialSimulator>(model_, motion, scene.solver.integrator, io,
                                             scene.solver.stabilization);
   sim_->reset(initial_.kin, 0.0);
   sim_->estimateStability();
@@ -211,27 +211,31 @@ void SpatialRun::trackMoments() {
   const VecX& y = sim_->state();
   if (top_joint_) {
     ends_[0] = sim_->formulation().body(y, 0);
-    max_moment_[0] = std::max(max_moment_[0], top_joint_->moment(*model_, ends_).norm());
+    max_moment_[0] = std::max(max_moment_[0], top_joint_->moment(*model_, ends_, sim_->time()).norm());
   }
   if (bottom_joint_) {
     ends_[nb - 1] = sim_->formulation().body(y, nb - 1);
-    max_moment_[1] = std::max(max_moment_[1], bottom_joint_->moment(*model_, ends_).norm());
+    max_moment_[1] = std::max(max_moment_[1], bottom_joint_->moment(*model_, ends_, sim_->time()).norm());
   }
 }
 
-FlexJoints3 addFlexJoints(const Scene& scene, const Kinematics3& initial, SpatialModel& model) {
+FlexJoints3 addFlexJoints(const Scene& scene, const Kinematics3& initial, SpatialModel& model,
+                          const std::shared_ptr<const TopMotion3>& top_holder,
+                          const std::shared_ptr<const TopMotion3>& bottom_holder) {
   FlexJoints3 out;
-  const auto add = [&](const FlexJointSpec& spec, FlexJoint::End end, const Vec3& along, const char* key) {
+  const auto add = [&](const FlexJointSpec& spec, FlexJoint::End end, const Vec3& along,
+                       const std::shared_ptr<const TopMotion3>& holder, const char* key) {
     if (!spec.enabled) return static_cast<const FlexJoint*>(nullptr);
     const Vec3 axis = spec.has_axis ? Vec3(spec.axis) : along;
-    model.addTerm(std::make_unique<FlexJoint>(end, axis, spec.stiffness, spec.damping));
+    model.addTerm(std::make_unique<FlexJoint>(end, axis, spec.stiffness, spec.damping,
+                                              holder && holder->rotates() ? holder : nullptr, 0.0));
     const auto* joint = static_cast<const FlexJoint*>(model.terms().back().get());
-    const double theta = joint->angle(model, initial);
+    const double theta = joint->angle(model, initial, 0.0);
     if (theta > 1e-9) out.loaded += std::string(out.loaded.empty() ? "" : ", ") + key + " turned " + fmt(theta) + " rad";
     return joint;
   };
-  out.top = add(scene.top_flex_joint, FlexJoint::End::kTop, initial.front().e, "top.flex_joint");
-  out.bottom = add(scene.bottom_flex_joint, FlexJoint::End::kBottom, -initial.back().e, "bottom.flex_joint");
+  out.top = add(scene.top_flex_joint, FlexJoint::End::kTop, initial.front().e, top_holder, "top.flex_joint");
+  out.bottom = add(scene.bottom_flex_joint, FlexJoint::End::kBottom, -initial.back().e, bottom_holder, "bottom.flex_joint");
   return out;
 }
 
@@ -327,8 +331,8 @@ const LineOutputs3& SpatialRun::outputs() {
   out_.points[nb] = d.kin[nb - 1].end();
   out_.top_force = d.reactions.top;
   out_.bottom_force = d.reactions.bottom;
-  out_.top_moment = (top_joint_ ? top_joint_->moment(*model_, d.kin) : Vec3::Zero()) + d.reactions.top_twist_moment;
-  out_.bottom_moment = bottom_joint_ ? bottom_joint_->moment(*model_, d.kin) : Vec3::Zero();
+  out_.top_moment = (top_joint_ ? top_joint_->moment(*model_, d.kin, sim_->time()) : Vec3::Zero()) + d.reactions.top_twist_moment;
+  out_.bottom_moment = bottom_joint_ ? bottom_joint_->moment(*model_, d.kin, sim_->time()) : Vec3::Zero();
   out_.top_twist = d.reactions.top_twist;
   out_.bottom_point = model_->bottom() == BottomBoundary::kPinned ? d.bottom.p : Vec3::Zero();
   out_.top_tension = d.reactions.top.norm();

@@ -21,7 +21,7 @@ namespace {
 constexpr double kStabilityFactor3 = 0.9;
 }  // namespace
 
-SpatialSimulator::SpatialSimulator(std::shared_ptr<const SpatialModel> model, std::unique_ptr<TopMotion3> top,
+SpatialSimulator::SpatialSimulator(std::shared_ptr<const SpatialModel> model, std::shared_ptr<const TopMotion3> top,
                                    IntegratorKind kind, const IntegratorOptions& options, double stabilization)
     : model_(std::move(model)), top_(std::move(top)), formulation_(*model_, stabilization),
       data_(formulation_.makeData()), shifted_(formulation_.makeShifted()), integrator_(makeIntegrator(kind, options)),
@@ -167,7 +167,7 @@ double SpatialSimulator::kineticEnergy() {
 double SpatialSimulator::potentialEnergy() {
   formulation_.kinematics(y_, kin_);
   double v = 0.0;
-  for (const auto& term : model_->terms()) v += term->potentialEnergy(*model_, kin_);
+  for (const auto& term : model_->terms()) v += term->potentialEnergy(*model_, kin_, t_);
   return v + formulation_.twistEnergy(y_, *data_);
 }
 

@@ -16,7 +16,7 @@ class AddedMassTerm : public SpatialForceTerm {
       : water_(water), ca_n_(ca_normal), ca_t_(ca_axial) {}
   std::string name() const override { return "added_mass"; }
   void addForces(const SpatialModel&, const Kinematics3&, double, VecX&) const override {}
-  double potentialEnergy(const SpatialModel&, const Kinematics3&) const override { return 0.0; }
+  double potentialEnergy(const SpatialModel&, const Kinematics3&, double) const override { return 0.0; }
   double power(const SpatialModel& model, const Kinematics3& kin, double t) const override;
   bool hasInertia() const override { return ca_n_ != 0.0 || ca_t_ != 0.0; }
   void addInertia(const SpatialModel& model, const Kinematics3& kin, std::vector<AddedMass3>& per_rfe) const override;

@@ -10,7 +10,7 @@ class AxialSpring : public SpatialForceTerm {
  public:
   std::string name() const override { return "axial_spring"; }
   void addForces(const SpatialModel& model, const Kinematics3& kin, double t, VecX& Q) const override;
-  double potentialEnergy(const SpatialModel& model, const Kinematics3& kin) const override;
+  double potentialEnergy(const SpatialModel& model, const Kinematics3& kin, double t) const override;
   double power(const SpatialModel& model, const Kinematics3& kin, double t) const override;
   void addStiffness(const SpatialModel& model, const Kinematics3& kin, double t, SpatialStiffness& S) const override;
 };

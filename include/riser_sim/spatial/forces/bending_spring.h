@@ -16,7 +16,7 @@ class BendingSpring : public SpatialForceTerm {
  public:
   std::string name() const override { return "bending_spring"; }
   void addForces(const SpatialModel& model, const Kinematics3& kin, double t, VecX& Q) const override;
-  double potentialEnergy(const SpatialModel& model, const Kinematics3& kin) const override;
+  double potentialEnergy(const SpatialModel& model, const Kinematics3& kin, double t) const override;
   double power(const SpatialModel& model, const Kinematics3& kin, double t) const override;
   // Forces and the dampers' power in one pass over the joints (one ω difference per joint).
   double addForcesAndPower(const SpatialModel& model, const Kinematics3& kin, double t, VecX& Q) const override;

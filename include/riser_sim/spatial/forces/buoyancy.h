@@ -13,7 +13,7 @@ class Buoyancy3 : public SpatialForceTerm {
   explicit Buoyancy3(const Water3& water) : water_(water) {}
   std::string name() const override { return "buoyancy"; }
   void addForces(const SpatialModel& model, const Kinematics3& kin, double t, VecX& Q) const override;
-  double potentialEnergy(const SpatialModel& model, const Kinematics3& kin) const override;
+  double potentialEnergy(const SpatialModel& model, const Kinematics3& kin, double t) const override;
   double power(const SpatialModel&, const Kinematics3&, double) const override { return 0.0; }  // conservative
   // The lift's geometric part on each wet part (its moment arm s = s0 + κΔ); the change of the wet length
   // at the surface stays explicit.

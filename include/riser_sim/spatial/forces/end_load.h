@@ -11,7 +11,7 @@ class EndLoad3 : public SpatialForceTerm {
   explicit EndLoad3(const Vec3& force) : force_(force) {}
   std::string name() const override { return "end_load"; }
   void addForces(const SpatialModel& model, const Kinematics3& kin, double t, VecX& Q) const override;
-  double potentialEnergy(const SpatialModel& model, const Kinematics3& kin) const override;
+  double potentialEnergy(const SpatialModel& model, const Kinematics3& kin, double t) const override;
   double power(const SpatialModel&, const Kinematics3&, double) const override { return 0.0; }
   const Vec3& force() const { return force_; }
 

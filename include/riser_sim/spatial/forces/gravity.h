@@ -10,7 +10,7 @@ class Gravity : public SpatialForceTerm {
  public:
   std::string name() const override { return "gravity"; }
   void addForces(const SpatialModel& model, const Kinematics3& kin, double t, VecX& Q) const override;
-  double potentialEnergy(const SpatialModel& model, const Kinematics3& kin) const override;
+  double potentialEnergy(const SpatialModel& model, const Kinematics3& kin, double t) const override;
   double power(const SpatialModel&, const Kinematics3&, double) const override { return 0.0; }  // conservative
   void addStiffness(const SpatialModel& model, const Kinematics3& kin, double t, SpatialStiffness& S) const override;
 };

@@ -19,7 +19,7 @@ class Seabed3 : public SpatialForceTerm {
   Seabed3(const SeabedSpec& spec, const Vec3& gravity);
   std::string name() const override { return "seabed"; }
   void addForces(const SpatialModel& model, const Kinematics3& kin, double t, VecX& Q) const override;
-  double potentialEnergy(const SpatialModel& model, const Kinematics3& kin) const override;
+  double potentialEnergy(const SpatialModel& model, const Kinematics3& kin, double t) const override;
   double power(const SpatialModel& model, const Kinematics3& kin, double t) const override;
   double addForcesAndPower(const SpatialModel& model, const Kinematics3& kin, double t, VecX& Q) const override;
   // The normal spring and the dampers, and the friction's exact rate dependence (its turning with e left out).

@@ -11,7 +11,7 @@ void AxialSpring::addForces(const SpatialModel& model, const Kinematics3& kin, d
   }
 }
 
-double AxialSpring::potentialEnergy(const SpatialModel& model, const Kinematics3& kin) const {
+double AxialSpring::potentialEnergy(const SpatialModel& model, const Kinematics3& kin, double) const {
   double v = 0.0;
   for (int i = 0; i < model.bodies(); ++i) v += 0.5 * model.rfe(i).axial_stiffness * kin[i].delta * kin[i].delta;
   return v;

@@ -49,7 +49,7 @@ double BendingSpring::addForcesAndPower(const SpatialModel& model, const Kinemat
   return p;
 }
 
-double BendingSpring::potentialEnergy(const SpatialModel& model, const Kinematics3& kin) const {
+double BendingSpring::potentialEnergy(const SpatialModel& model, const Kinematics3& kin, double) const {
   double v = 0.0;
   for (int i = 1; i < model.bodies(); ++i) {
     const double theta = angle(kin[i - 1].e, kin[i].e);

@@ -19,7 +19,7 @@ void Buoyancy3::addForces(const SpatialModel& model, const Kinematics3& kin, dou
     }
 }
 
-double Buoyancy3::potentialEnergy(const SpatialModel& model, const Kinematics3& kin) const {
+double Buoyancy3::potentialEnergy(const SpatialModel& model, const Kinematics3& kin, double) const {
   const double f = liftPerLength(model, water_);
   double v = 0.0;
   for (int i = 0; i < model.bodies(); ++i)

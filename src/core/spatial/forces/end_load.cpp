@@ -9,7 +9,7 @@ void EndLoad3::addForces(const SpatialModel& model, const Kinematics3& kin, doub
   addPointForce(kin[n], model.rfe(n).length, 1.0, force_, Q.data() + kDofPerBody3 * n);
 }
 
-double EndLoad3::potentialEnergy(const SpatialModel& model, const Kinematics3& kin) const {
+double EndLoad3::potentialEnergy(const SpatialModel& model, const Kinematics3& kin, double) const {
   return -force_.dot(kin[model.bodies() - 1].end());
 }
 

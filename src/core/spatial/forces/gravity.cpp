@@ -16,7 +16,7 @@ void Gravity::addForces(const SpatialModel& model, const Kinematics3& kin, doubl
   }
 }
 
-double Gravity::potentialEnergy(const SpatialModel& model, const Kinematics3& kin) const {
+double Gravity::potentialEnergy(const SpatialModel& model, const Kinematics3& kin, double) const {
   double v = 0.0;
   for (int i = 0; i < model.bodies(); ++i) {
     const Rfe& r = model.rfe(i);

@@ -77,7 +77,7 @@ double Seabed3::power(const SpatialModel& model, const Kinematics3& kin, double)
   return sweep(model, kin, nullptr);
 }
 
-double Seabed3::potentialEnergy(const SpatialModel& model, const Kinematics3& kin) const {
+double Seabed3::potentialEnergy(const SpatialModel& model, const Kinematics3& kin, double) const {
   double v = 0.0;
   for (int j = 0; j <= model.bodies(); ++j) {
     const double pen = penetration(contact(model, kin, j).p);
