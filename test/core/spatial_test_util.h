@@ -1,6 +1,8 @@
 // Scenes and runners shared by the spatial (3D) core's tests: the same line built as a planar Model (2D
 // absolute formulation) and as a SpatialModel, initial states, a bare planar ODE runner.
 #pragma once
+#include <algorithm>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -144,6 +146,42 @@ inline Kinematics planarHanging(const spatial::Kinematics3& eq) {
 
 inline Mat3 yawTilt(double yaw, double tilt) {
   return (Eigen::AngleAxisd(yaw, Vec3::UnitZ()) * Eigen::AngleAxisd(tilt, Vec3::UnitY())).toRotationMatrix();
+}
+
+// A holder at a fixed point whose attitude turns: R(t) = Rz(γ(t)) Ry(β(t)) (tilt about y, then yaw), w = γ' z +
+// β' Rz(γ) y. Each angle is a function t -> (angle [rad], rate [rad/s]).
+class TurningHolder : public spatial::TopMotion3 {
+ public:
+  using Angle = std::function<Eigen::Vector2d(double)>;
+  TurningHolder(Angle beta, Angle gamma, const Vec3& p = Vec3::Zero())
+      : beta_(std::move(beta)), gamma_(std::move(gamma)), p_(p) {}
+  spatial::PointMotion3 at(double t) const override {
+    const Eigen::Vector2d b = beta_(t), g = gamma_(t);
+    const spatial::Mat3 Rz = Eigen::AngleAxisd(g[0], Vec3::UnitZ()).toRotationMatrix();
+    spatial::PointMotion3 m;
+    m.p = p_;
+    m.R = Rz * Eigen::AngleAxisd(b[0], Vec3::UnitY()).toRotationMatrix();
+    m.w = g[1] * Vec3::UnitZ() + b[1] * Rz.col(1);
+    return m;
+  }
+  bool rotates() const override { return true; }
+
+ private:
+  Angle beta_, gamma_;
+  Vec3 p_;
+};
+// a0 + rate t + amp sin(freq t).
+inline TurningHolder::Angle wobble(double a0, double rate, double amp, double freq) {
+  return [=](double t) {
+    return Eigen::Vector2d(a0 + rate * t + amp * std::sin(freq * t), rate + amp * freq * std::cos(freq * t));
+  };
+}
+// 0 until t0, a smooth (quintic) step to `to` at t1, then held.
+inline TurningHolder::Angle ramp(double to, double t0, double t1) {
+  return [=](double t) {
+    const double s = std::clamp((t - t0) / (t1 - t0), 0.0, 1.0), ds = (t > t0 && t < t1) ? 1.0 / (t1 - t0) : 0.0;
+    return Eigen::Vector2d(to * s * s * s * (10.0 - 15.0 * s + 6.0 * s * s), to * 30.0 * s * s * (1.0 - s) * (1.0 - s) * ds);
+  };
 }
 
 }  // namespace spatial_test

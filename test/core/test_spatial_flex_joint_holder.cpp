@@ -17,38 +17,9 @@ namespace {
 
 using namespace spatial;
 
-// Fixed point, orientation R(t) = Rz(γ(t)) Ry(β(t)) (tilt about y, then yaw), w = γ' z + β' Rz(γ) y.
-class TurningHolder : public TopMotion3 {
- public:
-  using Angle = std::function<Vec3(double)>;  // t -> (angle, rate, unused)
-  TurningHolder(Angle beta, Angle gamma) : beta_(std::move(beta)), gamma_(std::move(gamma)) {}
-  PointMotion3 at(double t) const override {
-    const Vec3 b = beta_(t), g = gamma_(t);
-    const Mat3 Rz = Eigen::AngleAxisd(g[0], Vec3::UnitZ()).toRotationMatrix();
-    PointMotion3 m;
-    m.R = Rz * Eigen::AngleAxisd(b[0], Vec3::UnitY()).toRotationMatrix();
-    m.w = g[1] * Vec3::UnitZ() + b[1] * Rz.col(1);
-    return m;
-  }
-  bool rotates() const override { return true; }
-
- private:
-  Angle beta_, gamma_;
-};
-
-TurningHolder::Angle wobble(double a0, double rate, double amp, double freq) {
-  return [=](double t) {
-    return Vec3(a0 + rate * t + amp * std::sin(freq * t), rate + amp * freq * std::cos(freq * t), 0.0);
-  };
-}
-// 0 until t0, a smooth step (5th-order) to `to` at t1, then held.
-TurningHolder::Angle ramp(double to, double t0, double t1) {
-  return [=](double t) {
-    const double s = std::clamp((t - t0) / (t1 - t0), 0.0, 1.0);
-    const double ds = (t > t0 && t < t1) ? 1.0 / (t1 - t0) : 0.0;
-    return Vec3(to * s * s * s * (10.0 - 15.0 * s + 6.0 * s * s), to * 30.0 * s * s * (1.0 - s) * (1.0 - s) * ds, 0.0);
-  };
-}
+using spatial_test::ramp;
+using spatial_test::TurningHolder;
+using spatial_test::wobble;
 
 Vec3 weightMoment(const SpatialModel& m, const Kinematics3& kin) {
   Vec3 M = Vec3::Zero();

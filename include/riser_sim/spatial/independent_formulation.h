@@ -90,6 +90,8 @@ class IndependentFormulation3 {
   // position and velocity). Returns how many charts moved.
   // Torsion on: the twist charts move too (to every e_i, the spins' rates φ' follow).
   int recentre(VecX& y, SphereCharts& charts, double threshold) const;
+  // Between steps: the twist's unwrapping branches at y (refreshTwistBranches; charts and state unchanged).
+  void refreshTwist(const VecX& y, SphereCharts& charts) const;
   // Torsion on, right after packState (charts centred on e_i): spin angles and rates per rfe (entries below
   // firstSpin() ignored) [rad, rad/s].
   void setSpins(const VecX& theta, const VecX& omega, VecX& y) const;

@@ -92,11 +92,12 @@ class NaturalFormulation {
   BodyKinematics3 body(const VecX& y, int i) const;
   // dy/dt on [q; v] at time t [s] with A_0 moving as top; data holds the evaluation.
   void derivative(double t, const VecX& y, const PointMotion3& top, VecX& dy, NaturalData& data) const;
-  // Torsion on: charts at state y (before the first derivative()), and moved to y between steps (the state
-  // and the frames are unchanged: exact). twistEnergy: Σ ½ (GJ/d) m_k² [J].
-  void initTwist(const VecX& y, NaturalData& data) const;
-  void rechartTwist(const VecX& y, NaturalData& data) const;
-  double twistEnergy(const VecX& y, NaturalData& data) const;
+  // Torsion on: charts at state y (before the first derivative()), the hang-off's frame fixed in the top's
+  // holder at its attitude R0 then; moved to y between steps (the state and the frames are unchanged: exact),
+  // the hang-off's frame turned to top's attitude. twistEnergy: Σ ½ (GJ/d) m_k² [J] with the hang-off at top.
+  void initTwist(const VecX& y, NaturalData& data, const Mat3& R0 = Mat3::Identity()) const;
+  void rechartTwist(const VecX& y, const PointMotion3& top, NaturalData& data) const;
+  double twistEnergy(const VecX& y, const PointMotion3& top, NaturalData& data) const;
   // Kinetic energy [J] of state y (with the spins' ½ J_i ω_i²).
   double kineticEnergy(const VecX& y) const;
   // Largest joint gap (top, joints, pinned end at bottom.p) [m], and largest | |e_i| - 1 | of state y.

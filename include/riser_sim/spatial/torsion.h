@@ -8,7 +8,10 @@
 // minimal rotations of the frames ∂m_k/∂e_k = ∂m_k/∂e_{k+1} = kb_k = (e_k × e_{k+1}) / (1 + e_k·e_{k+1}).
 // Spring V = ½ (GJ/d) m_k², damper moment (c_GJ/d) m'_k. The top rfe is held in twist by the hang-off: its
 // frame is the hang-off's (axis h = e_0 at the start) turned by R(h -> e_0), θ_0 = 0 (a homokinetic joint);
-// its own polar inertia is left out. The bottom is free in twist (free or pinned).
+// its own polar inertia is left out. The bottom is free in twist (free or pinned). The hang-off's frame is
+// fixed in its holder (a vessel that turns): h(t) = R(t) h_0, r_h(t) = R(t) r_h0; turning at w it spins the
+// transported reference at e_0 by s = w·(h + e_0) / (1 + h·e_0) (turnHangOff, hangOffSpin), which enters
+// the twist rates, and the holder's work -τ s joins the dampers' power (V then depends on t).
 #pragma once
 #include <vector>
 
@@ -44,9 +47,11 @@ inline Vec3 spinConnection(const Vec3& c, const Vec3& e) { return -c.cross(e) / 
 struct TwistFrames {
   AlignedVector<Vec3> centre, ref;
   std::vector<double> mref;
-  // The hang-off's frame (axis h, reference r_h; fixed) and the top spring's last reference twist (top spin).
+  // The hang-off's frame (axis h, reference r_h; world, at the last turnHangOff) and the top spring's last
+  // reference twist (top spin); the same frame in the holder's frame (fixed) and the holder's angular velocity.
   Vec3 top_axis = Vec3::Zero(), top_ref = Vec3::Zero();
   double top_mref = 0.0;
+  Vec3 hold_axis = Vec3::Zero(), hold_ref = Vec3::Zero(), top_w = Vec3::Zero();
 };
 
 // One evaluation's twist results and workspaces (sized once).
@@ -75,16 +80,27 @@ double polarInertia(const SpatialModel& model, int i);
 
 // Frames at the start: centres at e_i, the hang-off's axis e_0 with a reference ⟂ e_0, the references
 // transported down the line across the joints (so m_ref = 0 at the start).
+// The hang-off's frame then is fixed in a holder at attitude I (holdHangOff for another).
 void initTwistFrames(const Kinematics3& kin, TwistFrames& f);
+// The hang-off's frame as it is now, fixed in a holder whose attitude is now R0 (holder frame -> world).
+void holdHangOff(TwistFrames& f, const Mat3& R0);
+// The hang-off's frame at the holder's attitude R turning at w [rad/s] (world); `held`: rfe 0's chart is the
+// hang-off's (firstSpin = 1). Exact no-op for R = I, w = 0 with the frame held at I.
+void turnHangOff(TwistFrames& f, const Mat3& R, const Vec3& w, bool held);
+// s = w·(h + n0) / (1 + h·n0): spin rate about n0 (unit e_0) of the hang-off's reference transported to n0 [rad/s].
+double hangOffSpin(const TwistFrames& f, const Vec3& n0);
 // Between steps: every chart (i >= first; rfe 0's is the hang-off's unless first = 0) centred at e_i; the
 // references follow (the frames do not move) and the reference twists are stored for unwrapping.
 void rechartTwistFrames(const Kinematics3& kin, TwistFrames& f, int first = 1);
+// The reference twists stored for unwrapping, at kin (rechartTwistFrames' first part; the charts stay): between
+// steps, so no reference twist moves by π unseen (a turning hang-off twists the line with e fixed).
+void refreshTwistBranches(const Kinematics3& kin, TwistFrames& f, int first = 1);
 // Material director of rfe i: its reference at unit e turned by θ about e (frame-independent; for comparing
 // formulations with different charts).
 Vec3 materialDirector(const TwistFrames& f, int i, const Vec3& e, double theta);
 // m_k and kb_k per joint at (kin, θ), unwrapped against f.mref.
 void twistAngles(const Kinematics3& kin, const double* theta, const TwistFrames& f, double* m, Vec3* kb);
-// Spin rate of rfe 0 held by the hang-off: a(h, e_0)·e'_0.
+// Spin rate of rfe 0 held by the hang-off: a(h, e_0)·e'_0 + hangOffSpin.
 double topSpinRate(const Kinematics3& kin, const TwistFrames& f);
 // Twist forces at (kin, θ, ω): adds the e part (twist, hang-off, gyroscopic J ω e × e') to Q (7 per rfe),
 // (a free top: θ_0, ω_0 are rfe 0's own, no hang-off part)

@@ -318,6 +318,7 @@ void IndependentSimulator3::reset(const Kinematics3& kin, double t0) {
   y_.setZero();
   charts_.switches = 0;
   formulation_.packState(kin, charts_, y_);
+  if (model_->hasTorsion()) holdHangOff(charts_.twist, top_->at(t0).R);
   integrator_->restart();
 }
 
@@ -328,6 +329,7 @@ void IndependentSimulator3::setTwist(const VecX& theta, const VecX& omega) {
 
 void IndependentSimulator3::rhs(double t, const VecX& y, VecX& dy) {
   const PointMotion3 top = top_->at(t);
+  if (model_->hasTorsion()) turnHangOff(charts_.twist, top.R, top.w, firstSpin(*model_) > 0);
   formulation_.derivative(t, y, charts_, top, dy, *data_);
   dy[dy.size() - 1] = -data_->reactions.top.dot(top.v) + data_->term_power;
 }
@@ -335,6 +337,11 @@ void IndependentSimulator3::rhs(double t, const VecX& y, VecX& dy) {
 bool IndependentSimulator3::step(double h) {
   const bool ok = integrator_->step(*this, t_, y_, h);
   t_ += h;
+  if (model_->hasTorsion()) {  // the hang-off's frame at t_ (the stages left it at theirs), the twists' branches
+    const PointMotion3 top = top_->at(t_);
+    turnHangOff(charts_.twist, top.R, top.w, firstSpin(*model_) > 0);
+    formulation_.refreshTwist(y_, charts_);
+  }
   // Chart switches between steps only: the state moved under the integrator.
   if (formulation_.recentre(y_, charts_, threshold_) > 0) integrator_->restart();
   return ok && y_.allFinite();

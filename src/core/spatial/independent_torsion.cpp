@@ -34,6 +34,7 @@ void IndependentFormulation3::spinPhase(const VecX& y, const SphereCharts& chart
     d.conn[i] = spinConnection(charts.twist.centre[i], b.e);
     d.omega[i] = (spins ? y[p + spinIndex(i)] : 0.0) + d.conn[i].dot(b.e_dot);
   }
+  if (s0_ > 0) d.omega[0] += hangOffSpin(charts.twist, d.kin[0].e);  // held: rfe 0 turns with the hang-off
 }
 
 // Generalised forces of the twist: on e_i (natural coordinates, projected by the chart with the terms'
@@ -53,14 +54,17 @@ void IndependentFormulation3::addTwistForces(const VecX& y, const SphereCharts& 
   }
   // Top spring (flex joint's torsional stiffness) and damper: V_t = ½ k_t m_t², τ_t = k_t m_t + c_t m_t', ∂m_t/∂φ_0 = 1,
   // ∂m_t/∂e_0 = a(c_0, e_0) - a(h, e_0) (rfe 0's frame and the hang-off's transported one both spin).
+  // A turning hang-off moves the twist next to it by -s: the holder's work -τ s (natural_formulation's too).
+  const double s = hangOffSpin(charts.twist, d.kin[0].e);
+  if (s0_ > 0 && nj > 0) power -= t.tau[0] * s;
   const double kt = model_.torsion().top_stiffness;
   t.top_tau = 0.0;
   if (kt > 0.0) {
     t.top_twist = topSpringTwist(d.kin, d.phi[0], charts.twist);
     const Vec3 a = spinConnection(charts.twist.top_axis, d.kin[0].e);
-    const double ct = model_.torsion().top_damping, rate = d.omega[0] - a.dot(d.kin[0].e_dot);  // m_t'
+    const double ct = model_.torsion().top_damping, rate = d.omega[0] - a.dot(d.kin[0].e_dot) - s;  // m_t'
     t.top_tau = kt * t.top_twist + ct * rate;
-    power -= ct * rate * rate;
+    power -= ct * rate * rate + t.top_tau * s;
     d.Q.segment<3>(kE) += t.top_tau * a;
   }
   for (int i = 0; i < nb; ++i) {
@@ -113,6 +117,11 @@ void IndependentFormulation3::recentreTwist(VecX& y, SphereCharts& charts) const
     y[p + spinIndex(i)] += spinConnection(charts.twist.centre[i], b.e).dot(b.e_dot);
   }
   rechartTwistFrames(charts.kin, charts.twist, s0_);
+}
+
+void IndependentFormulation3::refreshTwist(const VecX& y, SphereCharts& charts) const {
+  kinematics(y, charts, PointMotion3(), charts.kin);  // e only
+  refreshTwistBranches(charts.kin, charts.twist, s0_);
 }
 
 void IndependentFormulation3::setSpins(const VecX& theta, const VecX& omega, VecX& y) const {

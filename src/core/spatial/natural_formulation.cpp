@@ -197,6 +197,7 @@ void NaturalFormulation::derivative(double t, const VecX& y, const PointMotion3&
     d.twist_y.head(nt) = y.segment(nq, nt);
     d.twist_y.tail(nt) = y.segment(vo + nq, nt);
     if (firstSpin(model_) > 0) d.twist_y[0] = d.twist_y[nt] = 0.0;  // rfe 0 is held by the hang-off
+    turnHangOff(d.twist.frames, top.R, top.w, firstSpin(model_) > 0);
     d.term_power += addTwistForces(model_, d.kin, d.twist_y.data(), d.twist_y.data() + nt, d.twist, d.Q);
   }
   for (int i = 0; i < nb; ++i) {
@@ -292,24 +293,27 @@ void NaturalFormulation::derivative(double t, const VecX& y, const PointMotion3&
   }
 }
 
-void NaturalFormulation::initTwist(const VecX& y, NaturalData& d) const {
+void NaturalFormulation::initTwist(const VecX& y, NaturalData& d, const Mat3& R0) const {
   if (!model_.hasTorsion()) return;
   kinematics(y, d.kin);
   initTwistFrames(d.kin, d.twist.frames);
+  holdHangOff(d.twist.frames, R0);
   d.t = std::numeric_limits<double>::quiet_NaN();  // the charts changed: no evaluation is current
 }
 
-void NaturalFormulation::rechartTwist(const VecX& y, NaturalData& d) const {
+void NaturalFormulation::rechartTwist(const VecX& y, const PointMotion3& top, NaturalData& d) const {
   if (!model_.hasTorsion()) return;
   kinematics(y, d.kin);
+  turnHangOff(d.twist.frames, top.R, top.w, firstSpin(model_) > 0);
   rechartTwistFrames(d.kin, d.twist.frames, firstSpin(model_));
   d.t = std::numeric_limits<double>::quiet_NaN();
 }
 
-double NaturalFormulation::twistEnergy(const VecX& y, NaturalData& d) const {
+double NaturalFormulation::twistEnergy(const VecX& y, const PointMotion3& top, NaturalData& d) const {
   const int nt = twistDofs();
   if (nt == 0) return 0.0;
   kinematics(y, d.kin);
+  turnHangOff(d.twist.frames, top.R, top.w, firstSpin(model_) > 0);
   d.t = std::numeric_limits<double>::quiet_NaN();
   d.twist_y.head(nt) = y.segment(model_.dofs(), nt);
   if (firstSpin(model_) > 0) d.twist_y[0] = 0.0;

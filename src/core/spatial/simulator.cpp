@@ -39,7 +39,7 @@ void SpatialSimulator::reset(const Kinematics3& kin, double t0) {
   y_.setZero();
   formulation_.packState(kin, y_);
   formulation_.project(y_);
-  formulation_.initTwist(y_, *data_);
+  formulation_.initTwist(y_, *data_, top_->at(t0).R);
   integrator_->restart();
   force_lin_ = true;
 }
@@ -141,10 +141,10 @@ bool SpatialSimulator::step(double h) {
   // Back onto |e| = 1, e·e' = 0 (the Baumgarte terms hold the drift within the step).
   if (projection_tol_ <= 0.0 || formulation_.manifoldError(y_, h) > projection_tol_) {
     formulation_.project(y_);
-    formulation_.rechartTwist(y_, *data_);
+    if (model_->hasTorsion()) formulation_.rechartTwist(y_, top_->at(t_), *data_);
     integrator_->stateProjected(y_);
   } else if (model_->hasTorsion()) {  // the twist charts move every step (the state does not)
-    formulation_.rechartTwist(y_, *data_);
+    formulation_.rechartTwist(y_, top_->at(t_), *data_);
     integrator_->stateProjected(y_);
   }
   return ok && y_.allFinite();
@@ -168,7 +168,7 @@ double SpatialSimulator::potentialEnergy() {
   formulation_.kinematics(y_, kin_);
   double v = 0.0;
   for (const auto& term : model_->terms()) v += term->potentialEnergy(*model_, kin_, t_);
-  return v + formulation_.twistEnergy(y_, *data_);
+  return v + formulation_.twistEnergy(y_, top_->at(t_), *data_);
 }
 
 const NaturalData& SpatialSimulator::evaluate() {

@@ -65,6 +65,26 @@ void initTwistFrames(const Kinematics3& kin, TwistFrames& f) {
   f.top_axis = n0;
   f.top_ref = f.ref[0];
   f.top_mref = 0.0;
+  holdHangOff(f, Mat3::Identity());
+}
+
+void holdHangOff(TwistFrames& f, const Mat3& R0) {
+  f.hold_axis = R0.transpose() * f.top_axis;
+  f.hold_ref = R0.transpose() * f.top_ref;
+  f.top_w.setZero();
+}
+
+void turnHangOff(TwistFrames& f, const Mat3& R, const Vec3& w, bool held) {
+  f.top_axis = R * f.hold_axis;
+  f.top_ref = R * f.hold_ref;
+  f.top_w = w;
+  if (held) f.centre[0] = f.top_axis, f.ref[0] = f.top_ref;
+}
+
+// The holder turns (h, r_h) at w with e_0 fixed: turning everything at w spins the transported reference by w·n0,
+// and e_0 turned back by -w × n0 spins it by a(h, n0)·(-w × n0): together w·(h + n0) / (1 + h·n0).
+double hangOffSpin(const TwistFrames& f, const Vec3& n0) {
+  return f.top_w.dot(f.top_axis + n0) / (1.0 + f.top_axis.dot(n0));
 }
 
 double topSpringTwist(const Kinematics3& kin, double theta0, const TwistFrames& f) {
@@ -73,10 +93,15 @@ double topSpringTwist(const Kinematics3& kin, double theta0, const TwistFrames& 
   return theta0 + f.top_mref + std::remainder(raw - f.top_mref, 2.0 * M_PI);
 }
 
-void rechartTwistFrames(const Kinematics3& kin, TwistFrames& f, int first) {
+void refreshTwistBranches(const Kinematics3& kin, TwistFrames& f, int first) {
   const int nb = int(kin.size());
   for (int k = 0; k + 1 < nb; ++k) f.mref[k] = referenceTwist(f, k, dir(kin[k]), dir(kin[k + 1]));
   if (first == 0) f.top_mref = topSpringTwist(kin, 0.0, f);
+}
+
+void rechartTwistFrames(const Kinematics3& kin, TwistFrames& f, int first) {
+  const int nb = int(kin.size());
+  refreshTwistBranches(kin, f, first);
   for (int i = first; i < nb; ++i) {
     const Vec3 n = dir(kin[i]);
     f.ref[i] = unitPerp(reference(f, i, n), n);
@@ -99,7 +124,8 @@ void twistAngles(const Kinematics3& kin, const double* theta, const TwistFrames&
 }
 
 double topSpinRate(const Kinematics3& kin, const TwistFrames& f) {
-  return spinConnection(f.centre[0], dir(kin[0])).dot(kin[0].e_dot);
+  const Vec3 n0 = dir(kin[0]);
+  return spinConnection(f.centre[0], n0).dot(kin[0].e_dot) + hangOffSpin(f, n0);
 }
 
 double addTwistForces(const SpatialModel& model, const Kinematics3& kin, const double* theta, const double* omega,
@@ -115,13 +141,16 @@ double addTwistForces(const SpatialModel& model, const Kinematics3& kin, const d
     d.tau[j] = k * d.m[j] + c * d.mdot[j];
     power -= c * d.mdot[j] * d.mdot[j];
   }
+  // A turning hang-off moves the twist next to it by -s: the holder's work -τ s (with ∂V/∂t in it).
+  const double s = hangOffSpin(d.frames, dir(kin[0]));
+  if (held && nj > 0) power -= d.tau[0] * s;
   const double kt = model.torsion().top_stiffness;
   if (kt > 0.0) {  // the top spring: moment -τ_t on θ_0; on e_0 +τ_t a(h, e_0) (∂m_t/∂e_0 = -a(h, e_0))
     d.top_twist = topSpringTwist(kin, theta[0], d.frames);
     const Vec3 a = spinConnection(d.frames.top_axis, dir(kin[0]));
-    const double ct = model.torsion().top_damping, rate = omega[0] - a.dot(kin[0].e_dot);  // m_t'
+    const double ct = model.torsion().top_damping, rate = omega[0] - a.dot(kin[0].e_dot) - s;  // m_t'
     d.top_tau = kt * d.top_twist + ct * rate;
-    power -= ct * rate * rate;
+    power -= ct * rate * rate + d.top_tau * s;
     Q.segment<3>(kE) += d.top_tau * a;
   }
   for (int i = 0; i < nb; ++i) {
