@@ -26,7 +26,8 @@ int coordinatesPerRfe(FormulationKind formulation, bool axial_flexibility);
 // formulation has them, else dense).
 JacobianKind resolvedJacobian(const SolverSettings& s);
 
-// The settings' own values (dt, names of the choices, tolerance, jacobian_interval, rho_inf), whatever the
+// The settings' own values (dt, names of the choices, tolerance, jacobian_interval, rho_inf,
+// newton_tolerance), whatever the
 // space; the 3D core checks its combinations itself (spatial/run_builder.h, unsupported()).
 std::optional<SetupError> checkSolverValues(const SolverSettings& s);
 // checkSolverValues, then the planar core's combination of integrator, formulation and jacobian and its
