@@ -47,9 +47,12 @@ struct Setting3 {
   double h = 0.0;           // solver.dt [s] (dopri5: the output step)
   double tol = NAN;         // dopri5
   double rho_inf = NAN;     // generalized_alpha
+  double newton = NAN;      // midpoint, generalized_alpha: solver.newton_tolerance (NaN: the default)
   std::string label() const {
     char b[96];
-    if (!std::isnan(tol))
+    if (!std::isnan(newton))
+      std::snprintf(b, sizeof(b), "%s newton %.0e", integrator.c_str(), newton);
+    else if (!std::isnan(tol))
       std::snprintf(b, sizeof(b), "%s tol %.0e", integrator.c_str(), tol);
     else if (!std::isnan(rho_inf))
       std::snprintf(b, sizeof(b), "%s rho_inf=%g", integrator.c_str(), rho_inf);
@@ -67,6 +70,7 @@ inline riser_sim::Scene scene3(const std::string& root, int n, const Setting3& s
   o.push_back(b);
   if (!std::isnan(s.tol)) std::snprintf(b, sizeof(b), "solver.tolerance=%.3g", s.tol), o.push_back(b);
   if (!std::isnan(s.rho_inf)) std::snprintf(b, sizeof(b), "solver.rho_inf=%.3g", s.rho_inf), o.push_back(b);
+  if (!std::isnan(s.newton)) std::snprintf(b, sizeof(b), "solver.newton_tolerance=%.3g", s.newton), o.push_back(b);
   return riser_sim::loadSceneFile(root + "/config/scenes/spatial_swing.yaml", o);
 }
 
@@ -102,7 +106,8 @@ inline Run3 run3(const std::string& root, int n, const Setting3& s) {
 }
 
 // The sweep: rk4 at 0.9, 0.5, 0.25 x its estimated limit; dopri5 at tolerances 1e-4..1e-8 with an output
-// step of 10 ms (its steps end on it) and 1e-3..1e-6 at 0.1 s; the implicit schemes at h = 0.1 .. 0.002 s.
+// step of 10 ms (its steps end on it) and 1e-3..1e-6 at 0.1 s; the implicit schemes at h = 0.1 .. 0.002 s;
+// midpoint with a looser Newton tolerance (1e-4, 1e-6) at h = 0.05 .. 0.01 s.
 inline std::vector<Setting3> settings3(double rk4_limit) {
   std::vector<Setting3> out;
   // Steps that divide the duration: every run ends at exactly t = kDuration (the end moves ~1 m/s).
@@ -115,6 +120,8 @@ inline std::vector<Setting3> settings3(double rk4_limit) {
     out.push_back({"generalized_alpha", h, NAN, 0.5});
     out.push_back({"generalized_alpha", h, NAN, 0.0});
   }
+  for (const double newton : {1e-4, 1e-6})
+    for (const double h : {0.05, 1.0 / 30.0, 0.025, 0.02, 0.01}) out.push_back({"midpoint", h, NAN, NAN, newton});
   return out;
 }
 
@@ -123,7 +130,7 @@ inline void sweep3(const std::string& root, const std::string& out_dir, const st
   std::FILE* csv = std::fopen((out_dir + "/tradeoff_spatial.csv").c_str(), "w");
   if (csv)
     std::fprintf(csv, "case,n,integrator,rho_inf,tolerance,h,status,steps,cpu_s,end_error_m,ref_check_m,"
-                      "rk4_limit_s\n");
+                      "rk4_limit_s,newton_tolerance\n");
   std::printf("\n## spatial_swing (3D): end point at t = %g s vs rk4 at h = %g s (same n)\n", kDuration, kRefStep);
   for (const int n : ns) {
     const Run3 ref = run3(root, n, {"rk4", kRefStep});
@@ -145,8 +152,8 @@ inline void sweep3(const std::string& root, const std::string& out_dir, const st
                   r.cpu, err, t1 ? "yes" : "-", t2 ? "yes" : "-");
       std::fflush(stdout);
       if (csv)
-        std::fprintf(csv, "spatial_swing,%d,%s,%g,%g,%.9g,%s,%ld,%.6f,%.6g,%.3g,%.6g\n", n, s.integrator.c_str(),
-                     s.rho_inf, s.tol, s.h, r.status.c_str(), r.steps, r.cpu, err, check, ref.limit);
+        std::fprintf(csv, "spatial_swing,%d,%s,%g,%g,%.9g,%s,%ld,%.6f,%.6g,%.3g,%.6g,%g\n", n, s.integrator.c_str(),
+                     s.rho_inf, s.tol, s.h, r.status.c_str(), r.steps, r.cpu, err, check, ref.limit, s.newton);
     }
   }
   if (csv) std::fclose(csv);

@@ -72,6 +72,9 @@ class Integrator {
   virtual Stats stats() const { return Stats(); }
 };
 
+// Loosest Newton tolerance accepted (IntegratorOptions::newton_tolerance; measured in docs/benchmarks.md).
+constexpr double kMaxNewtonTolerance = 1e-3;
+
 // Settings of the integrators beyond h (solver.tolerance etc.).
 struct IntegratorOptions {
   double tolerance = 1e-6;         // dopri5: atol = rtol on positions and velocities
@@ -82,6 +85,9 @@ struct IntegratorOptions {
   // generalized_alpha: high-frequency spectral radius ρ∞ in [0, 1] (1: no numerical damping, the midpoint
   // rule; 0: the unresolved modes are annihilated in one step). Default: solver.rho_inf's (SolverSettings).
   double rho_inf = 0.5;
+  // midpoint, generalized_alpha: Newton's stopping bound, relative to 1 + |z_i| (implicit_integrators.cpp).
+  // Default: solver.newton_tolerance's (SolverSettings).
+  double newton_tolerance = 1e-11;
 };
 
 // Classical fixed-step fourth-order Runge-Kutta (the paper's scheme).

@@ -39,6 +39,9 @@ struct SolverSettings {
   // solver.rho_inf: generalized_alpha's high-frequency spectral radius ρ∞ in [0, 1]. 0.5: see
   // docs/integrators.md ("generalized_alpha") for the measurements behind it.
   double rho_inf = 0.5;
+  // solver.newton_tolerance: midpoint's and generalized_alpha's Newton stopping bound, relative to 1 + |z_i|,
+  // in (0, 1e-3]. 1e-11: far below any step's own error (docs/integrators.md, "Newton tolerance").
+  double newton_tolerance = 1e-11;
 };
 
 class Simulator : private OdeSystem {

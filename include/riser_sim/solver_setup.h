@@ -26,8 +26,9 @@ int coordinatesPerRfe(FormulationKind formulation, bool axial_flexibility);
 // formulation has them, else dense).
 JacobianKind resolvedJacobian(const SolverSettings& s);
 
-// The settings' own values (dt, names of the choices, tolerance, jacobian_interval, rho_inf), whatever the
-// space; the 3D core checks its combinations itself (spatial/run_builder.h, unsupported()).
+// The settings' own values (dt, names of the choices, tolerance, jacobian_interval, rho_inf,
+// newton_tolerance), whatever the space; the 3D core checks its combinations itself
+// (spatial/run_builder.h, unsupported()).
 std::optional<SetupError> checkSolverValues(const SolverSettings& s);
 // checkSolverValues, then the planar core's combination of integrator, formulation and jacobian and its
 // size limits for a line of `elements` segments.

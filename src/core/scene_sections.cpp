@@ -180,7 +180,7 @@ void parseInitial(const Section& root, Scene& s) {
 void parseSolver(const Section& root, Scene& s) {
   const Section solver =
       root.section("solver", {"dt", "integrator", "formulation", "stabilization", "max_constraint_error", "tolerance",
-                              "jacobian_interval", "jacobian", "rho_inf"});
+                              "jacobian_interval", "jacobian", "rho_inf", "newton_tolerance"});
   const SolverSettings defaults;
   s.solver = defaults;
   s.solver.dt = solver.number("dt", defaults.dt);
@@ -197,6 +197,7 @@ void parseSolver(const Section& root, Scene& s) {
   requireNonNegative(solver.key("jacobian_interval"), s.solver.jacobian_interval);
   s.solver.jacobian = solver.choice("jacobian", defaults.jacobian);
   s.solver.rho_inf = solver.number("rho_inf", defaults.rho_inf);
+  s.solver.newton_tolerance = solver.number("newton_tolerance", defaults.newton_tolerance);
   // The integrator's name, the combination and the size limits: the core's one check (the 3D core checks
   // its combinations in spatial/run_builder.h's unsupported(), below).
   const auto error = s.space == SpaceKind::kSpatial ? checkSolverValues(s.solver)

@@ -50,6 +50,7 @@ Simulator::Simulator(std::shared_ptr<const Model> model, std::unique_ptr<TopMoti
   io.jacobian_interval = settings_.jacobian_interval;
   io.jacobian = resolvedJacobian(settings_);
   io.rho_inf = settings_.rho_inf;
+  io.newton_tolerance = settings_.newton_tolerance;
   integrator_ = makeIntegrator(settings_.integrator, io);
   const int n = 2 * formulation_->positionSize() + 1;
   y_.setZero(n);

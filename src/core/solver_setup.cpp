@@ -29,6 +29,8 @@ std::optional<SetupError> checkSolverValues(const SolverSettings& s) {
   if (!(s.tolerance > 0.0)) return SetupError{"solver.tolerance", "must be > 0"};
   if (!(s.jacobian_interval >= 0.0)) return SetupError{"solver.jacobian_interval", "must be >= 0"};
   if (!(s.rho_inf >= 0.0 && s.rho_inf <= 1.0)) return SetupError{"solver.rho_inf", "must be in [0, 1]"};
+  if (!(s.newton_tolerance > 0.0 && s.newton_tolerance <= kMaxNewtonTolerance))
+    return SetupError{"solver.newton_tolerance", "must be in (0, 1e-3]"};
   return std::nullopt;
 }
 

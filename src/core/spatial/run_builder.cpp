@@ -188,6 +188,7 @@ SpatialRun::SpatialRun(const Scene& scene, RunInputs3 inputs)
   // auto: the O(n) structured solves (spatial/shifted_solver.h); dense on request.
   io.jacobian = scene.solver.jacobian == JacobianKind::kDense ? JacobianKind::kDense : JacobianKind::kStructured;
   io.rho_inf = scene.solver.rho_inf;
+  io.newton_tolerance = scene.solver.newton_tolerance;
   sim_ = std::make_unique<SpatialSimulator>(model_, motion, scene.solver.integrator, io,
                                             scene.solver.stabilization);
   sim_->reset(initial_.kin, 0.0);
