@@ -271,6 +271,38 @@ TEST(ExternalMotion3, TurnsTheTopFlexJoint) {
   }
 }
 
+
+// A driven bottom with a flex joint (the ROV's end of a tether): on an ExternalMotion3 with the ROV's attitude
+// the bottom joint turns with the ROV, and the ROV's yaw of 0.5 rad turns its axis by that yaw.
+TEST(ExternalMotion3, TurnsTheBottomFlexJointWithTheRov) {
+  Scene scene = loadSceneFile(std::string(RISER_SIM_SOURCE_DIR) + "/test/ros/scenes/tether_3d.yaml");
+  scene.bottom_motion.type = MotionKind::kExternal;
+  scene.bottom_flex_joint.enabled = true;
+  scene.bottom_flex_joint.stiffness = 5e3;
+  const Vec3 top(8.0, 0.0, 0.0), rov(1.0, -2.0, -14.0);
+  RunInputs3 in;
+  in.top = top;
+  in.motion = std::make_unique<ExternalMotion3>(top, 0.0);
+  auto bottom = std::make_shared<ExternalMotion3>(rov, Eigen::Quaterniond::Identity(), 0.0);
+  in.bottom_motion = bottom;
+  SpatialRun run(scene, std::move(in));
+  ASSERT_NE(run.bottomFlexJoint(), nullptr);
+  EXPECT_TRUE(run.bottomFlexJoint()->turnsWithHolder());
+  EXPECT_FALSE(run.topFlexJoint() && run.topFlexJoint()->turnsWithHolder());
+  const Vec3 d0 = run.bottomFlexJoint()->axis(0.0).d;
+  for (int k = 1; k <= 20; ++k) {  // yaw 0.5 rad over 1 s, then held
+    const double t = 0.1 * k;
+    bottom->addSample(t, rov, Eigen::Quaterniond(Eigen::AngleAxisd(0.5 * std::min(t, 1.0), Vec3::UnitZ())), run.time());
+    while (run.time() < t - 1e-9) ASSERT_TRUE(run.step()) << run.divergenceReason();
+  }
+  const Vec3 d = run.bottomFlexJoint()->axis(run.time()).d;
+  const Vec3 expected = Eigen::AngleAxisd(0.5, Vec3::UnitZ()) * d0;
+  // The smoothed yaw at 2 s, 1 s after the last change: within the blend's settling of the held value.
+  EXPECT_LT((d - expected).norm(), 1e-3 * d0.head<2>().norm() + 1e-12);
+  EXPECT_GT((d - d0).norm(), 0.4 * d0.head<2>().norm());  // it did turn (the axis is off the vertical)
+  EXPECT_TRUE(run.outputs().bottom_moment.allFinite());
+}
+
 }  // namespace
 }  // namespace spatial
 }  // namespace riser_sim
