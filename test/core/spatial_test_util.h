@@ -76,6 +76,28 @@ inline std::shared_ptr<spatial::SpatialModel> twistShaft(int n, const spatial::T
   return m;
 }
 
+// The torsion of the shaft tests: GJ, ρI_p = 1 kg m, J_end = 10 kg m², the twist damper c_GJ.
+inline constexpr double kShaftRhoIp = 1.0, kShaftJend = 10.0;
+inline spatial::TorsionProperties shaftTorsion(double GJ, double damping) {
+  spatial::TorsionProperties t;
+  t.stiffness = GJ;
+  t.polar_inertia = kShaftRhoIp;
+  t.damping = damping;
+  t.end_polar_inertia = kShaftJend;
+  return t;
+}
+
+// Σ over every part of every rfe of (x_p - A_0) × m_p g [N m]: the weight's moment about the hang-off.
+inline Vec3 weightMoment(const spatial::SpatialModel& m, const spatial::Kinematics3& kin) {
+  Vec3 M = Vec3::Zero();
+  for (int i = 0; i < m.bodies(); ++i)
+    for (int p = 0; p < m.rfe(i).num_parts; ++p) {
+      const RigidPart& part = m.rfe(i).part[p];
+      M += (kin[i].point(part.s0, part.kappa) - kin[0].A).cross(part.mass * m.gravity());
+    }
+  return M;
+}
+
 // Planar chain at rest with Δ = 0, A_0 = top, rfe i at angle phi[i] from the x axis.
 inline Kinematics planarChain(const Model& m, const Vec2& top, const std::vector<double>& phi) {
   Kinematics kin(m.bodies());

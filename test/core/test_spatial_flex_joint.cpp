@@ -12,16 +12,7 @@ namespace {
 
 using namespace spatial;
 
-// Σ over every part of every rfe of (x_p - A_0) × m_p g [N m].
-Vec3 weightMoment(const SpatialModel& m, const Kinematics3& kin) {
-  Vec3 M = Vec3::Zero();
-  for (int i = 0; i < m.bodies(); ++i)
-    for (int p = 0; p < m.rfe(i).num_parts; ++p) {
-      const RigidPart& part = m.rfe(i).part[p];
-      M += (kin[i].point(part.s0, part.kappa) - kin[0].A).cross(part.mass * m.gravity());
-    }
-  return M;
-}
+using spatial_test::weightMoment;
 
 TEST(SpatialFlexJoint, MomentBalancesTheWeightAtRest) {
   spatial_test::LineSpec s = spatial_test::flexibleLine();  // 10 m, 10 kg/m, 50 kg end mass

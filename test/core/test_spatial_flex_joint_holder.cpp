@@ -21,15 +21,7 @@ using spatial_test::ramp;
 using spatial_test::TurningHolder;
 using spatial_test::wobble;
 
-Vec3 weightMoment(const SpatialModel& m, const Kinematics3& kin) {
-  Vec3 M = Vec3::Zero();
-  for (int i = 0; i < m.bodies(); ++i)
-    for (int p = 0; p < m.rfe(i).num_parts; ++p) {
-      const RigidPart& part = m.rfe(i).part[p];
-      M += (kin[i].point(part.s0, part.kappa) - kin[0].A).cross(part.mass * m.gravity());
-    }
-  return M;
-}
+using spatial_test::weightMoment;
 
 TEST(SpatialFlexJointHolder, AgainstItsEnergyWhileTheHolderTurns) {
   spatial_test::LineSpec s = spatial_test::flexibleLine();

@@ -16,17 +16,8 @@ namespace {
 
 using namespace spatial;
 
-constexpr double kL = 10.0, kGJ = 1e4, kRhoIp = 1.0, kJend = 10.0;
-
-// The shaft's torsion: GJ, ρI_p = kRhoIp, J_end = kJend, the twist damper c_GJ.
-TorsionProperties shaftTorsion(double GJ, double damping) {
-  TorsionProperties t;
-  t.stiffness = GJ;
-  t.polar_inertia = kRhoIp;
-  t.damping = damping;
-  t.end_polar_inertia = kJend;
-  return t;
-}
+constexpr double kL = 10.0, kGJ = 1e4, kRhoIp = spatial_test::kShaftRhoIp, kJend = spatial_test::kShaftJend;
+using spatial_test::shaftTorsion;
 
 std::shared_ptr<SpatialModel> freeShaft(int n, double damping) {
   TorsionProperties t = shaftTorsion(kGJ, damping);

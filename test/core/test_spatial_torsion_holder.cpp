@@ -19,16 +19,8 @@ using namespace spatial;
 using spatial_test::ramp;
 using spatial_test::TurningHolder;
 
-constexpr double kL = 10.0, kRhoIp = 1.0, kJend = 10.0;
-
-TorsionProperties shaft(double GJ, double damping) {
-  TorsionProperties t;
-  t.stiffness = GJ;
-  t.polar_inertia = kRhoIp;
-  t.damping = damping;
-  t.end_polar_inertia = kJend;
-  return t;
-}
+constexpr double kL = 10.0, kRhoIp = spatial_test::kShaftRhoIp, kJend = spatial_test::kShaftJend;
+const auto shaft = spatial_test::shaftTorsion;
 
 Kinematics3 straightDown(const SpatialModel& m) {
   return rigidChain(m.line(), Vec3::Zero(), std::vector<Vec3>(m.bodies(), -Vec3::UnitZ()), Vec3::Zero(), Vec3::Zero());
