@@ -34,6 +34,10 @@ struct TopMotionSpec {
   Eigen::Vector3d amplitude3 = Eigen::Vector3d::Zero();  // [m]
   Eigen::Vector3d phase3 = Eigen::Vector3d::Zero();      // per axis [rad] (top.motion.phase: a number or a 3-vector)
   std::vector<Knot3> knots3;
+  // sinusoid, spatial: the holder's attitude, roll/pitch/yaw (Z-Y-X) = attitude3 ∘ cos(2π t / period +
+  // attitude_phase3) [rad] (top.motion.attitude [deg], attitude_phase [rad]); zero: the holder does not turn.
+  Eigen::Vector3d attitude3 = Eigen::Vector3d::Zero();
+  Eigen::Vector3d attitude_phase3 = Eigen::Vector3d::Zero();
 };
 
 // A flex joint at an end (space: spatial; spatial/forces/flex_joint.h): a rotational spring k and damper c

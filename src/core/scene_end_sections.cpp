@@ -33,6 +33,33 @@ void parseKnots(const Section& motion, TopMotionSpec& top, bool planar) {
   }
 }
 
+// A phase: one number for every axis, or [p1, p2, p3] (3D only).
+Eigen::Vector3d parsePhase(const Section& motion, const std::string& k, bool planar) {
+  if (!motion.has(k) || !motion.at(k).IsSequence()) return Eigen::Vector3d::Constant(motion.number(k, 0.0));
+  const std::string key = motion.key(k);
+  const YAML::Node ph = motion.at(k);
+  if (planar) throw SceneError(key, "a phase per axis [px, py, pz] needs space: spatial (a planar sinusoid has one phase)");
+  if (ph.size() != 3) throw SceneError(key, "expected a number or [px, py, pz], got " + describe(ph));
+  Eigen::Vector3d p;
+  for (int i = 0; i < 3; ++i) p[i] = toNumber(ph[i], key + "[" + std::to_string(i) + "]");
+  return p;
+}
+
+// top.motion.attitude [deg] (roll, pitch, yaw amplitudes of the holder) and attitude_phase: sinusoid, 3D only.
+void parseAttitude(const Section& motion, TopMotionSpec& spec, bool planar) {
+  if (!motion.has("attitude")) return;
+  const std::string key = motion.key("attitude");
+  if (planar) throw SceneError(key, "needs space: spatial (the planar holder does not turn)");
+  if (spec.type != MotionKind::kSinusoid) throw SceneError(key, "only with type: sinusoid (it shares its period)");
+  const YAML::Node a = motion.at("attitude");
+  if (!a.IsSequence() || a.size() != 3) throw SceneError(key, "expected [roll, pitch, yaw] in degrees, got " + describe(a));
+  for (int i = 0; i < 3; ++i) spec.attitude3[i] = toNumber(a[i], key + "[" + std::to_string(i) + "]") * M_PI / 180.0;
+  if (!(std::abs(spec.attitude3[1]) < 0.5 * M_PI))
+    throw SceneError(key + "[1]", "the pitch amplitude must be below 90 degrees (Z-Y-X angles), got " +
+                                      formatNumber(spec.attitude3[1] * 180.0 / M_PI));
+  spec.attitude_phase3 = parsePhase(motion, "attitude_phase", planar);
+}
+
 // top.motion or bottom.motion (the same keys): spec.position3 is set by the caller.
 void parseMotion(const Section& motion, TopMotionSpec& spec, bool planar) {
   spec.type = motion.choice("type", MotionKind::kFixed);
@@ -42,18 +69,9 @@ void parseMotion(const Section& motion, TopMotionSpec& spec, bool planar) {
   spec.amplitude = planarOf(spec.amplitude3);
   spec.period = sinusoid ? motion.number("period") : motion.number("period", 1.0);
   requirePositive(motion.key("period"), spec.period);
-  if (motion.has("phase") && motion.at("phase").IsSequence()) {  // per axis: 3D only
-    const std::string key = motion.key("phase");
-    const YAML::Node ph = motion.at("phase");
-    if (planar)
-      throw SceneError(key, "a phase per axis [px, py, pz] needs space: spatial (a planar sinusoid has one phase)");
-    if (ph.size() != 3) throw SceneError(key, "expected a number or [px, py, pz], got " + describe(ph));
-    for (int k = 0; k < 3; ++k) spec.phase3[k] = toNumber(ph[k], key + "[" + std::to_string(k) + "]");
-    spec.phase = spec.phase3.x();
-  } else {
-    spec.phase = motion.number("phase", 0.0);
-    spec.phase3.setConstant(spec.phase);
-  }
+  spec.phase3 = parsePhase(motion, "phase", planar);
+  spec.phase = spec.phase3.x();
+  parseAttitude(motion, spec, planar);
   if (spec.type == MotionKind::kVelocityProfile || motion.has("knots")) parseKnots(motion, spec, planar);
 }
 
@@ -99,7 +117,8 @@ void parseTop(const Section& root, Scene& s) {
   s.top = TopMotionSpec();
   s.top.position3 = top.vec3("position", planar, Eigen::Vector3d::Zero());
   s.top.position = planarOf(s.top.position3);
-  parseMotion(top.section("motion", {"type", "amplitude", "period", "phase", "knots"}), s.top, planar);
+  parseMotion(top.section("motion", {"type", "amplitude", "period", "phase", "knots", "attitude", "attitude_phase"}),
+              s.top, planar);
   s.top_flex_joint = parseFlexJoint(top, planar);
   if (top.has("torsion")) {  // the hang-off's hold on the spin (line.torsion)
     if (!s.torsion.enabled) throw SceneError(top.key("torsion"), "needs line.torsion (the spin is no degree of freedom)");
@@ -128,7 +147,8 @@ void parseBottom(const Section& root, Scene& s) {
     if (bottom.has(k) && !pinned)
       throw SceneError(bottom.key(k), "needs bottom.type: pinned (a free bottom has no joint to move or stiffen)");
   if (bottom.has("motion")) {
-    const Section motion = bottom.section("motion", {"type", "amplitude", "period", "phase", "knots"});
+    const Section motion =
+        bottom.section("motion", {"type", "amplitude", "period", "phase", "knots", "attitude", "attitude_phase"});
     parseMotion(motion, s.bottom_motion, planar);
     if (planar && s.bottom_motion.type != MotionKind::kFixed)
       throw SceneError(motion.key("type"), "needs space: spatial (the planar core pins the bottom at a fixed point)");

@@ -6,9 +6,14 @@
 //   turned axis balances the weight's moment: k angle(R d_h, e_0) = |Σ (x_p - A_0) × m_p g| with R built here
 //   from β and γ (not read from the joint), and the top rfe lies in the yawed plane.
 // - E - E0 - W stays at the scheme's truncation while the holder turns (it would not without τ_s·w).
+// - Offline, `top.motion.attitude` (and `bottom.motion.attitude`) turn the holders of a sinusoid: R and w
+//   consistent (Ṙ Rᵀ = [w]× by differences), the tether scene's joints turn and its energy balance holds;
+//   bad values refused naming the key.
 #include <gtest/gtest.h>
 
+#include "riser_sim/scene_yaml.h"
 #include "riser_sim/spatial/forces/flex_joint.h"
+#include "riser_sim/spatial/run_builder.h"
 #include "spatial_force_checks.h"
 #include "spatial_test_util.h"
 
@@ -106,6 +111,50 @@ TEST(SpatialFlexJointHolder, EnergyBalanceWhileTheHolderTurns) {
   // rk4 at 0.5 ms on this line (highest mode ~1e3 rad/s): (ωh)⁴ ~ 0.1 per period of the stiffest mode, which
   // stays unexcited; measured ~1e-7 of m g L. Bound 1e-5: without the holder's work it is O(|W|).
   EXPECT_LT(worst, 1e-5 * scale);
+}
+
+TEST(SpatialFlexJointHolder, PrescribedAttitudeTurnsTheJoints) {
+  const SinusoidMotion3 m(Vec3(1, 2, 3), Vec3(0.5, 0, 0.2), 7.0, Vec3::Zero(), Vec3(0.1, -0.05, 0.3),
+                          Vec3(0.0, 1.0, -0.5));
+  ASSERT_TRUE(m.rotates());
+  double worst = 0.0;
+  for (double t : {0.0, 0.9, 2.3, 5.1}) {
+    const double h = 1e-5;
+    const Mat3 W = (m.at(t + h).R - m.at(t - h).R) / (2.0 * h) * m.at(t).R.transpose();
+    const Vec3 w = m.at(t).w;
+    worst = std::max(worst, (W - (Mat3() << 0, -w.z(), w.y(), w.z(), 0, -w.x(), -w.y(), w.x(), 0).finished()).norm());
+  }
+  EXPECT_LT(worst, 1e-8);  // central differences at 1e-5 s: (ω h)² ~ 1e-11 of the rates
+  EXPECT_FALSE(SinusoidMotion3(Vec3::Zero(), Vec3(1, 0, 0), 5.0, Vec3::Zero()).rotates());
+
+  Scene scene = loadSceneFile(std::string(RISER_SIM_SOURCE_DIR) + "/config/scenes/spatial_tether.yaml");
+  scene.top.attitude3 = Vec3(5.0, 3.0, 20.0) * M_PI / 180.0;  // the vessel rolls, pitches and yaws
+  scene.bottom_motion.attitude3 = Vec3(0.0, 0.0, 30.0) * M_PI / 180.0;  // the ROV yaws
+  SpatialRun run(scene);
+  ASSERT_TRUE(run.topFlexJoint() && run.bottomFlexJoint());
+  EXPECT_TRUE(run.topFlexJoint()->turnsWithHolder());
+  EXPECT_TRUE(run.bottomFlexJoint()->turnsWithHolder());
+  for (int k = 0; k < 2500; ++k) ASSERT_TRUE(run.step()) << run.divergenceReason();  // 5 s at 2 ms
+  std::printf("[attitude] tether 5 s: energy drift %.2e, top moment max %.1f N m\n", run.energyDrift(),
+              run.maxTopMoment());
+  // The scene's balance without the attitude is ~1e-6 of m g L (docs/spatial.md); the holders' work is in W.
+  EXPECT_LT(std::abs(run.energyDrift()), 1e-5);
+
+  const auto refused = [](const std::string& yaml, const std::string& key) {
+    try {
+      parseScene(YAML::Load("{line: {length: 10, elements: 5, mass_per_length: 10, EA: 1e6, bending: false}, " + yaml + "}"));
+      ADD_FAILURE() << "no SceneError for " << key;
+    } catch (const SceneError& e) {
+      EXPECT_EQ(e.key(), key) << e.what();
+    }
+  };
+  refused("space: spatial, top: {motion: {type: fixed, attitude: [1, 2, 3]}}", "top.motion.attitude");
+  refused("top: {motion: {type: sinusoid, amplitude: [1, 0], period: 5, attitude: [1, 2, 3]}}",
+          "top.motion.attitude");
+  refused("space: spatial, top: {motion: {type: sinusoid, amplitude: [1, 0, 0], period: 5, attitude: [1, 2]}}",
+          "top.motion.attitude");
+  refused("space: spatial, top: {motion: {type: sinusoid, amplitude: [1, 0, 0], period: 5, attitude: [1, 95, 3]}}",
+          "top.motion.attitude[1]");
 }
 
 }  // namespace

@@ -34,17 +34,21 @@ std::optional<SceneIssue> unsupported(const Scene& scene);
 constexpr int kMaxDenseElements3 = 570;
 
 // p(t) = position + amplitude ∘ cos(2π t / period + phase), per axis (phase per axis: a horizontal
-// circle is amplitude [R, R, 0], phase [0, -π/2, 0]).
+// circle is amplitude [R, R, 0], phase [0, -π/2, 0]). With an attitude, the holder also rolls, pitches and
+// yaws: (φ, θ, ψ) = attitude ∘ cos(2π t / period + attitude_phase) [rad], R = Rz(ψ) Ry(θ) Rx(φ).
 class SinusoidMotion3 : public TopMotion3 {
  public:
-  SinusoidMotion3(const Vec3& center, const Vec3& amplitude, double period, const Vec3& phase)
-      : center_(center), amp_(amplitude), omega_(2.0 * M_PI / period), phase_(phase) {}
+  SinusoidMotion3(const Vec3& center, const Vec3& amplitude, double period, const Vec3& phase,
+                  const Vec3& attitude = Vec3::Zero(), const Vec3& attitude_phase = Vec3::Zero())
+      : center_(center), amp_(amplitude), omega_(2.0 * M_PI / period), phase_(phase), att_(attitude),
+        att_phase_(attitude_phase) {}
   PointMotion3 at(double t) const override;
+  bool rotates() const override { return !att_.isZero(); }
 
  private:
   Vec3 center_, amp_;
   double omega_;
-  Vec3 phase_;
+  Vec3 phase_, att_, att_phase_;
 };
 
 // Velocity piecewise linear between knots (the planar VelocityProfileMotion on (x, z) and on y).

@@ -76,6 +76,17 @@ PointMotion3 SinusoidMotion3::at(double t) const {
     m.v[k] = -amp_[k] * omega_ * s;
     m.a[k] = -amp_[k] * omega_ * omega_ * c;
   }
+  if (!rotates()) return m;
+  Vec3 ang, rate;
+  for (int k = 0; k < 3; ++k) {
+    const double arg = omega_ * t + att_phase_[k];
+    ang[k] = att_[k] * std::cos(arg);
+    rate[k] = -att_[k] * omega_ * std::sin(arg);
+  }
+  const Mat3 Rz = Eigen::AngleAxisd(ang.z(), Vec3::UnitZ()).toRotationMatrix();
+  const Mat3 Rzy = Rz * Eigen::AngleAxisd(ang.y(), Vec3::UnitY()).toRotationMatrix();
+  m.R = Rzy * Eigen::AngleAxisd(ang.x(), Vec3::UnitX()).toRotationMatrix();
+  m.w = rate.z() * Vec3::UnitZ() + rate.y() * Rz.col(1) + rate.x() * Rzy.col(0);  // as ExternalMotion3's
   return m;
 }
 
@@ -100,7 +111,8 @@ std::unique_ptr<TopMotion3> buildTopMotion3(const TopMotionSpec& spec) {
     case MotionKind::kExternal: return std::make_unique<FixedMotion3>(spec.position3);
     case MotionKind::kSinusoid:
       if (!(spec.period > 0.0)) throw std::invalid_argument("top.motion.period: must be > 0");
-      return std::make_unique<SinusoidMotion3>(spec.position3, spec.amplitude3, spec.period, spec.phase3);
+      return std::make_unique<SinusoidMotion3>(spec.position3, spec.amplitude3, spec.period, spec.phase3,
+                                               spec.attitude3, spec.attitude_phase3);
     case MotionKind::kVelocityProfile: return std::make_unique<VelocityProfileMotion3>(spec.position3, spec.knots3);
   }
   throw std::invalid_argument("top.motion.type: unknown motion (accepted: " + choiceNames<MotionKind>() + ")");
