@@ -42,7 +42,7 @@ const BadScene kBadScenes[] = {
     {"{line: {lenght: 100, elements: 10, EA: 1e6, EI: 0, mass_per_length: 1}}", "line.lenght", "did you mean 'length'"},
     {"{line: {length: 1, elements: 1, EA: 1, EI: 0, mass_per_length: 1}, solver: {dtt: 1}}", "solver.dtt", "unknown key"},
     {"{line: {length: 1, elements: 1, EA: 1, EI: 0, mass_per_length: 1}, top: {motion: {kind: fixed}}}",
-     "top.motion.kind", "unknown key (accepted: type, amplitude, period, phase, knots)"},
+     "top.motion.kind", "unknown key (accepted: type, amplitude, period, phase, knots, attitude, attitude_phase)"},
     {"{line: {length: 1, elements: 1, EA: 1, EI: 0, mass_per_length: 1}, wind: {speed: 3}}", "wind", "unknown key"},
     // wrong types
     {"{line: {length: 100, elements: ten, EA: 1e6, EI: 0, mass_per_length: 1}}", "line.elements",
