@@ -57,24 +57,28 @@ class ShiftedSolver3 {
   using Mat45 = Eigen::Matrix<double, 4, 5>;
   using Mat47 = Eigen::Matrix<double, 4, 7>;
   using Mat73 = Eigen::Matrix<double, 7, 3>;
+  using Mat43 = Eigen::Matrix<double, 4, 3>;
 
  private:
+  // The solve's fields first (together in memory), then the factor's.
   struct Body {
-    Mat7 M;                 // mass (K, C, K_sub, K_sup, C_sub live in S_: K(i, i), C(i, i), rows i / columns i-1)
-    Mat7 Kup;               // K(i, i+1) = K_sub[i+1]ᵀ + K_sup[i+1] (the right side's coupling to rfe i+1)
-    Row3 gE, pE, rE;        // Baumgarte law of E_i: g δa + p δv + r δq (g = B_E = ∂E/∂q)
-    Vec7 gu, pu, ru;        // Baumgarte law of the unit length
-    // Sweep (factor): Γ = g + c p + c² r of E_i; W = M + cC + c²K + S_{i+1} (the rfes below, as seen by x_i);
+    // Sweep (factor): Γ = g + c p + c² r of E_i; W = M + cC + c²K + S_{i+1} (the rfes below, as seen by x_i),
+    // of which the solve reads the A rows (Wt) and the Δ-e rows of the A columns (Wd);
     // R = [W_uu g_u; γ_uᵀ 0] (u = Δ, e), Ri = the first 4 rows of R⁻¹ (LU with partial pivoting on unit
     // columns), RN = the u rows of R⁻¹ N (x_i's dependence on x_{i-1});
-    // Up = the coupling to x_{i+1}; Xmu = ∂x_i/∂λ_n (pinned end).
-    Row3 Gam;
-    Mat7 W, Up;
+    // Up = the e-e coupling to x_{i+1}; Xmu = ∂x_i/∂λ_n (pinned end).
+    Mat37 Wt;
+    Mat43 Wd;
     Mat45 Ri;
     Mat47 RN;
-    Mat73 Xmu;
-    bool ee = false;        // rfe i-1 and i couple in e-e only (K_sub, K_sup, C_sub): the other blocks are skipped
     Vec7 x;                 // solve: x_i's constant part (backward), then x_v,i (forward)
+    Mat7 M;                 // mass (K, C, K_sub, K_sup, C_sub live in S_: K(i, i), C(i, i), rows i / columns i-1)
+    Mat3 Kup, Up;           // e-e: K(i, i+1) = K_sub[i+1]ᵀ + K_sup[i+1] (the right side's coupling to rfe i+1)
+    Row3 gE, rE, Gam;       // Baumgarte law of E_i: g δa + p δv + r δq (g = B_E = ∂E/∂q)
+    Vec7 gu, ru;            // Baumgarte law of the unit length
+    Row3 pE;
+    Vec7 pu;
+    Mat73 Xmu;
   };
   void assembleRhs(int blk, const VecX& b, Vec11& r) const;
   int blocks() const { return nb_ + (pinned_ ? 1 : 0); }

@@ -78,9 +78,6 @@ Row3 combine(const Row3& g, double cp, const Row3& p, double cr, const Row3& r) 
   return Row3{g.a + cp * p.a + cr * r.a, g.b + cp * p.b + cr * r.b, g.d + cp * p.d + cr * r.d};
 }
 
-// Only the e-e block of a 7x7 coupling is nonzero.
-bool eeOnly(const Mat7& X) { return X.topRows<4>().isZero(0.0) && X.bottomLeftCorner<3, 4>().isZero(0.0); }
-
 // The first Nr rows of A⁻¹ (A overwritten by its LU): N solves on unit columns.
 template <int N, int Nr>
 void invRows(Eigen::Matrix<double, N, N>& A, Eigen::Matrix<double, Nr, N>& out) {
@@ -105,10 +102,12 @@ ShiftedSolver3::ShiftedSolver3(const SpatialModel& model, double stabilization)
       axial_(model.options().axial_flexibility) {
   body_.resize(nb_ + 1);  // + the pinned end's block (used when the bottom is pinned)
   for (Body& B : body_) {
-    for (Mat7* m : {&B.M, &B.Kup}) m->setZero();
+    B.M.setZero();
+    B.Kup.setZero();
     B.gE = B.pE = B.rE = B.Gam = Row3();
     for (Vec7* v : {&B.gu, &B.pu, &B.ru}) v->setZero();
-    B.W.setZero();
+    B.Wt.setZero();
+    B.Wd.setZero();
     B.Up.setZero();
     B.Ri.setZero();
     B.RN.setZero();
@@ -184,7 +183,7 @@ void ShiftedSolver3::setLinearization(const NaturalData& d, const Eigen::Ref<con
       K.block<1, 3>(kDelta3, kE) -= L.transpose();
       K.block<3, 1>(kE, kDelta3) -= L;
     } else {  // Δ locked: x_v,Δ = b_v,Δ
-      for (Mat7* X : {&K, &C, &S_.K_sub[i], &S_.K_sup[i], &S_.C_sub[i]}) X->row(kDelta3).setZero(), X->col(kDelta3).setZero();
+      for (Mat7* X : {&K, &C}) X->row(kDelta3).setZero(), X->col(kDelta3).setZero();
       M(kDelta3, kDelta3) = 1.0;
     }
     // E = A + len e: E'' = A'' + Δ'' e + len e'' + 2Δ' e', law E'' + 2ω E' + ω² E (+ prescribed).
@@ -204,11 +203,7 @@ void ShiftedSolver3::setLinearization(const NaturalData& d, const Eigen::Ref<con
     B.pu.segment<3>(kE) = 2.0 * b.e_dot + 2.0 * w * b.e;
     B.ru.segment<3>(kE) = edd + 2.0 * w * b.e_dot + (w * w) * b.e;
   }
-  // K(i, i+1) once per linearisation (after the locked-Δ rows and columns are cleared above).
-  for (int i = 0; i + 1 < nb_; ++i) body_[i].Kup = S_.K_sub[i + 1].transpose() + S_.K_sup[i + 1];
-  // The shipped terms couple neighbours in e-e only (bending): the sweep skips the zero blocks then (exact).
-  body_[0].ee = false;
-  for (int i = 1; i < nb_; ++i) body_[i].ee = eeOnly(S_.K_sub[i]) && eeOnly(S_.K_sup[i]) && eeOnly(S_.C_sub[i]);
+  for (int i = 0; i + 1 < nb_; ++i) body_[i].Kup = S_.K_sub[i + 1].transpose() + S_.K_sup[i + 1];  // K(i, i+1)
   linearized_ = true;
   factored_ = false;
 }
@@ -230,57 +225,45 @@ void ShiftedSolver3::factor(double c) {
   for (int i = 0; i < nb_; ++i) {
     Body& B = body_[i];
     B.Gam = combine(B.gE, c, B.pE, c2, B.rE);
-    if (i + 1 >= nb_) continue;
-    if (body_[i + 1].ee)
-      B.Up.block<3, 3>(kE, kE) = (c * S_.C_sub[i + 1].block<3, 3>(kE, kE)).transpose() + c2 * B.Kup.block<3, 3>(kE, kE);
-    else
-      B.Up = (c * S_.C_sub[i + 1]).transpose() + c2 * B.Kup;
+    if (i + 1 < nb_) B.Up = (c * S_.C_sub[i + 1]).transpose() + c2 * B.Kup;
   }
   Mat7 Snext = Mat7::Zero();
   Mat73 T = Mat73::Zero();
   if (pinned_) T = -mulT(body_[nb_ - 1].gE, Mat3::Identity());
   Mat5 R;
   Eigen::Matrix<double, 4, 7> N;
-  Mat7 Phi;
+  Mat7 Phi, W;
   for (int i = nb_ - 1; i >= 0; --i) {
     Body& B = body_[i];
-    B.W = B.M + c * S_.C_diag[i] + c2 * S_.K_diag[i] + Snext;
-    R.topLeftCorner<4, 4>() = B.W.block<4, 4>(kDelta3, kDelta3);
+    W = B.M + c * S_.C_diag[i] + c2 * S_.K_diag[i] + Snext;
+    B.Wt = W.topRows<3>();
+    B.Wd = W.block<4, 3>(kDelta3, kA);
+    R.topLeftCorner<4, 4>() = W.block<4, 4>(kDelta3, kDelta3);
     R.block<4, 1>(0, 4) = B.gu.segment<4>(kDelta3);
     R.block<1, 4>(4, 0) = (B.gu + c * B.pu + c2 * B.ru).segment<4>(kDelta3).transpose();
     R(4, 4) = 0.0;
     invRows<5, 4>(R, B.Ri);
     Eigen::Matrix<double, 3, 7> Lam;
-    const bool ee = B.ee;
     if (i > 0) {
       const Body& P = body_[i - 1];
-      N = rmul((1.0 / s) * B.W.block<4, 3>(kDelta3, kA), P.Gam);
-      Mat7 Lo;
-      if (ee) {
-        N.block<3, 3>(1, kE) += c * S_.C_sub[i].block<3, 3>(kE, kE) + c2 * S_.K_sub[i].block<3, 3>(kE, kE);
-      } else {
-        Lo = c * S_.C_sub[i] + c2 * S_.K_sub[i];
-        N += Lo.bottomRows<4>();
-      }
+      N = rmul((1.0 / s) * B.Wd, P.Gam);
+      N.block<3, 3>(1, kE) += c * S_.C_sub[i] + c2 * S_.K_sub[i];
       B.RN.noalias() = B.Ri.leftCols<4>() * N;  // N's row 5 (the unit-length row) is zero
       Phi.topRows<3>() = rmul((1.0 / s) * Mat3::Identity(), P.Gam);
       Phi.bottomRows<4>() = -B.RN;
-      Lam.noalias() = -(B.W.topRows<3>() * Phi);
-      if (!ee) Lam -= Lo.topRows<3>();
+      Lam.noalias() = -(B.Wt * Phi);
       Snext = mulT(P.gE, -Lam);
-      if (ee) Snext.bottomRows<3>().noalias() += P.Up.block<3, 3>(kE, kE) * Phi.bottomRows<3>();
-      else Snext.noalias() += P.Up * Phi;
+      Snext.bottomRows<3>().noalias() += P.Up * Phi.bottomRows<3>();
     }
     if (pinned_) {  // f_i's and s_i's dependence on μ
       B.Xmu.topRows<3>().setZero();
       B.Xmu.bottomRows<4>().noalias() = -(B.Ri.leftCols<4>() * T.bottomRows<4>());
       if (i > 0) {
         Eigen::Matrix<double, 3, 3> Tl = -T.topRows<3>();
-        Tl.noalias() -= B.W.topRows<3>() * B.Xmu;
+        Tl.noalias() -= B.Wt * B.Xmu;
         const Body& P = body_[i - 1];
         T = mulT(P.gE, -Tl);
-        if (ee) T.bottomRows<3>().noalias() += P.Up.block<3, 3>(kE, kE) * B.Xmu.bottomRows<3>();
-        else T.noalias() += P.Up * B.Xmu;
+        T.bottomRows<3>().noalias() += P.Up * B.Xmu.bottomRows<3>();
       }
     }
   }
@@ -323,14 +306,8 @@ void ShiftedSolver3::assembleRhs(int blk, const VecX& b, Vec11& r) const {
   const Body& B = body_[blk];
   r.head<3>() += bv(blk).segment<3>(kA) - (c * w2) * bq(blk).segment<3>(kA);
   Vec7 kq = S_.K_diag[blk] * bq(blk);
-  if (blk > 0) {
-    if (B.ee) kq.tail<3>().noalias() += S_.K_sub[blk].block<3, 3>(kE, kE) * bq(blk - 1).tail<3>();
-    else kq.noalias() += S_.K_sub[blk] * bq(blk - 1);
-  }
-  if (blk + 1 < nb_) {
-    if (body_[blk + 1].ee) kq.tail<3>().noalias() += B.Kup.block<3, 3>(kE, kE) * bq(blk + 1).tail<3>();
-    else kq.noalias() += B.Kup * bq(blk + 1);
-  }
+  if (blk > 0) kq.tail<3>().noalias() += S_.K_sub[blk] * bq(blk - 1).tail<3>();
+  if (blk + 1 < nb_) kq.tail<3>().noalias() += B.Kup * bq(blk + 1).tail<3>();
   r.segment<7>(3).noalias() = B.M * bv(blk) - c * kq;
   r[10] = B.gu.dot(bv(blk)) - c * B.ru.dot(bq(blk));
 }
@@ -345,17 +322,16 @@ void ShiftedSolver3::solve(const VecX& b, VecX& x) {
     phi = r.segment<7>(3) - snext;
     const Vec3 a = (1.0 / s_) * r.head<3>();
     y.head<4>() = phi.segment<4>(kDelta3);
-    y.head<4>().noalias() -= B.W.block<4, 3>(kDelta3, kA) * a;
+    y.head<4>().noalias() -= B.Wd * a;
     y[4] = r[10];
     B.x.head<3>() = a;
     B.x.tail<4>().noalias() = B.Ri * y;
     if (i > 0) {
       Vec3 l = phi.head<3>();
-      l.noalias() -= B.W.topRows<3>() * B.x;
+      l.noalias() -= B.Wt * B.x;
       const Body& P = body_[i - 1];
       snext = mulT(P.gE, -l);
-      if (B.ee) snext.tail<3>().noalias() += P.Up.block<3, 3>(kE, kE) * B.x.tail<3>();
-      else snext.noalias() += P.Up * B.x;
+      snext.tail<3>().noalias() += P.Up * B.x.tail<3>();
     }
   }
   Vec7 px;

@@ -99,19 +99,19 @@ void BendingSpring::addStiffness(const SpatialModel& model, const Kinematics3& k
       const Mat3 dgb_a = (I3 - u * u.transpose() - w * w.transpose() + cs * w * u.transpose()) / (la * lb);
       S.K_diag[i - 1].block<3, 3>(kE, kE) -= k * (-psi * ga * ga.transpose() + phi * dga_a);
       S.K_diag[i].block<3, 3>(kE, kE) -= k * (-psi * gb * gb.transpose() + phi * dgb_b);
-      S.K_sub[i].block<3, 3>(kE, kE) -= k * (-psi * gb * ga.transpose() + phi * dgb_a);
+      S.K_sub[i] -= k * (-psi * gb * ga.transpose() + phi * dgb_a);
     }
     if (c != 0.0) {
       const Mat3 Xa = cross(a), Xb = cross(b);
       S.C_diag[i - 1].block<3, 3>(kE, kE) -= c * Xa * Xa;
       S.C_diag[i].block<3, 3>(kE, kE) -= c * Xb * Xb;
-      S.C_sub[i].block<3, 3>(kE, kE) += c * Xb * Xa;
+      S.C_sub[i] += c * Xb * Xa;
       const Mat3 Xad = cross(kin[i - 1].e_dot), Xbd = cross(kin[i].e_dot);
       const Mat3 Xt = cross(-c * (kin[i].omega() - kin[i - 1].omega()));
       S.K_diag[i - 1].block<3, 3>(kE, kE) += c * Xa * Xad + Xt;
       S.K_diag[i].block<3, 3>(kE, kE) += c * Xb * Xbd - Xt;
-      S.K_sub[i].block<3, 3>(kE, kE) -= c * Xb * Xad;
-      S.K_sup[i].block<3, 3>(kE, kE) += c * (Xad * Xb - Xa * Xbd);  // K_ab - K_baᵀ
+      S.K_sub[i] -= c * Xb * Xad;
+      S.K_sup[i] += c * (Xad * Xb - Xa * Xbd);  // K_ab - K_baᵀ
     }
   }
 }
