@@ -18,6 +18,15 @@ struct PointMotion3 {
   Vec3 w = Vec3::Zero();      // the holder's angular velocity, world frame [rad/s]
 };
 
+// m.R = Rz(ψ) Ry(θ) Rx(φ) and m.w = ψ' z + θ' Rz y + φ' Rz Ry x (each rate about its axis where it acts) from the
+// Z-Y-X angles (φ, θ, ψ) [rad] and their rates [rad/s]: the holder's attitude of the motions that turn it.
+inline void setAttitudeZYX(const Vec3& angles, const Vec3& rates, PointMotion3& m) {
+  const Mat3 Rz = Eigen::AngleAxisd(angles.z(), Vec3::UnitZ()).toRotationMatrix();
+  const Mat3 Rzy = Rz * Eigen::AngleAxisd(angles.y(), Vec3::UnitY()).toRotationMatrix();
+  m.R = Rzy * Eigen::AngleAxisd(angles.x(), Vec3::UnitX()).toRotationMatrix();
+  m.w = rates.z() * Vec3::UnitZ() + rates.y() * Rz.col(1) + rates.x() * Rzy.col(0);
+}
+
 class TopMotion3 {
  public:
   virtual ~TopMotion3() = default;

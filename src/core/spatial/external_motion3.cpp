@@ -35,18 +35,14 @@ PointMotion3 ExternalMotion3::at(double t) const {
   PointMotion3 m{Vec3(a.p.x(), b.p.x(), a.p.y()), Vec3(a.v.x(), b.v.x(), a.v.y()), Vec3(a.a.x(), b.a.x(), a.a.y())};
   if (!rotates_) return m;
   const PointMotion rp = rp_.at(t), yw = yaw_.at(t);
-  const double roll = rp.p.x(), pitch = rp.p.y(), yaw = yw.p.x();
-  const Mat3 Rz = Eigen::AngleAxisd(yaw, Vec3::UnitZ()).toRotationMatrix();
-  const Mat3 Rzy = Rz * Eigen::AngleAxisd(pitch, Vec3::UnitY()).toRotationMatrix();
-  m.R = Rzy * Eigen::AngleAxisd(roll, Vec3::UnitX()).toRotationMatrix();
-  // ω = ψ' z + θ' Rz y + φ' Rz Ry x (each angle's rate about its axis where it acts).
-  m.w = yw.v.x() * Vec3::UnitZ() + rp.v.y() * Rz.col(1) + rp.v.x() * Rzy.col(0);
+  setAttitudeZYX(Vec3(rp.p.x(), rp.p.y(), yw.p.x()), Vec3(rp.v.x(), rp.v.y(), yw.v.x()), m);
   return m;
 }
 
 void ExternalMotion3::reset(double t, const Vec3& p) {
   xz_.reset(t, Vec2(p.x(), p.z()));
   y_.reset(t, Vec2(p.y(), 0.0));
+  if (!rotates_) return;
   rp_.reset(t, rpOf(last_angles_));
   yaw_.reset(t, yawOf(last_angles_));
 }
@@ -61,8 +57,10 @@ bool ExternalMotion3::addSample(double t_sample, const Vec3& p, double t_now) {
   if (!p.allFinite()) return false;
   if (!xz_.addSample(t_sample, Vec2(p.x(), p.z()), t_now)) return false;
   y_.addSample(t_sample, Vec2(p.y(), 0.0), t_now);
-  rp_.addSample(t_sample, rpOf(last_angles_), t_now);
-  yaw_.addSample(t_sample, yawOf(last_angles_), t_now);
+  if (rotates_) {
+    rp_.addSample(t_sample, rpOf(last_angles_), t_now);
+    yaw_.addSample(t_sample, yawOf(last_angles_), t_now);
+  }
   return true;
 }
 
@@ -78,6 +76,7 @@ bool ExternalMotion3::addSample(double t_sample, const Vec3& p, const Eigen::Qua
 void ExternalMotion3::shiftSampleTimes(double dt) {
   xz_.shiftSampleTimes(dt);
   y_.shiftSampleTimes(dt);
+  if (!rotates_) return;
   rp_.shiftSampleTimes(dt);
   yaw_.shiftSampleTimes(dt);
 }

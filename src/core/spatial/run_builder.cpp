@@ -83,10 +83,7 @@ PointMotion3 SinusoidMotion3::at(double t) const {
     ang[k] = att_[k] * std::cos(arg);
     rate[k] = -att_[k] * omega_ * std::sin(arg);
   }
-  const Mat3 Rz = Eigen::AngleAxisd(ang.z(), Vec3::UnitZ()).toRotationMatrix();
-  const Mat3 Rzy = Rz * Eigen::AngleAxisd(ang.y(), Vec3::UnitY()).toRotationMatrix();
-  m.R = Rzy * Eigen::AngleAxisd(ang.x(), Vec3::UnitX()).toRotationMatrix();
-  m.w = rate.z() * Vec3::UnitZ() + rate.y() * Rz.col(1) + rate.x() * Rzy.col(0);  // as ExternalMotion3's
+  setAttitudeZYX(ang, rate, m);
   return m;
 }
 
