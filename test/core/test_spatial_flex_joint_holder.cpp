@@ -139,6 +139,13 @@ TEST(SpatialFlexJointHolder, PrescribedAttitudeTurnsTheJoints) {
               run.maxTopMoment());
   // The scene's balance without the attitude is ~1e-6 of m g L (docs/spatial.md); the holders' work is in W.
   EXPECT_LT(std::abs(run.energyDrift()), 1e-5);
+  EXPECT_TRUE(run.initial().equilibrium);  // phase 0: the holders start at rest
+  // A quarter period on, the vessel is turning at t = 0 and the joints' dampers load the line at rest: said so.
+  Scene turning = scene;
+  turning.top.attitude_phase3 = Vec3::Constant(0.5 * M_PI);
+  SpatialRun moving(turning);
+  EXPECT_FALSE(moving.initial().equilibrium);
+  EXPECT_NE(moving.initial().about.find("a holder turns at t = 0"), std::string::npos) << moving.initial().about;
 
   const auto refused = [](const std::string& yaml, const std::string& key) {
     try {

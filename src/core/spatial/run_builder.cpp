@@ -188,6 +188,20 @@ SpatialRun::SpatialRun(const Scene& scene, RunInputs3 inputs)
     initial_.about += "; not an equilibrium with the flex joints, which start loaded (" + joints.loaded +
                       " from their axis; the statics pin the ends)";
   }
+  // A holder already turning at t = 0 (an attitude's phase, a vessel turning when the node starts) drags a line
+  // at rest through the dampers it carries: the joint's, and the twist's with line.torsion held at the top.
+  const TorsionProperties& tp = model_->torsion();
+  const bool twist_damped = model_->hasTorsion() && !tp.free_top && (tp.damping > 0.0 || tp.top_damping > 0.0);
+  const auto turning = [](const std::shared_ptr<const TopMotion3>& m) {
+    return m && m->rotates() ? m->at(0.0).w.norm() : 0.0;
+  };
+  const double w_top = turning(motion), w_bottom = turning(model_->bottomMotion());
+  if ((w_top > 0.0 && ((top_joint_ && scene.top_flex_joint.damping > 0.0) || twist_damped)) ||
+      (w_bottom > 0.0 && bottom_joint_ && scene.bottom_flex_joint.damping > 0.0)) {
+    initial_.equilibrium = false;
+    initial_.about += "; not an equilibrium: a holder turns at t = 0 (top " + fmt(w_top) + ", bottom " +
+                      fmt(w_bottom) + " rad/s) and its dampers load the line at rest";
+  }
   // The statics' end force stays on as a constant end load (hold), so the start is an exact equilibrium.
   if (scene.initial.type == InitialKind::kDisplaced && scene.initial.end_force == EndForceKind::kHold)
     model_->addTerm(std::make_unique<EndLoad3>(initial_.end_force));
