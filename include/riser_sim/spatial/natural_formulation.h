@@ -35,7 +35,8 @@ struct Reactions3 {
 // One evaluation's results and workspaces, sized once by NaturalFormulation::makeData().
 class NaturalData {
  public:
-  explicit NaturalData(const SpatialModel& model);
+  // dense: the dense path's per-rfe W, WE too (NaturalFormulation with closed_form false).
+  NaturalData(const SpatialModel& model, bool dense);
   double t = 0.0;
   PointMotion3 top;
   PointMotion3 bottom;  // the pinned bottom's anchor at t (SpatialModel::bottomAt)
@@ -55,13 +56,17 @@ class NaturalData {
     // S, Sk_rho = S_k rho couple the prescribed n·e'' = bdd into the (A·n, Δ) rows.
     Vec3 n;
     double rho, a_aa, a_ad, a_dd, t_AA, t_Ae, t_ee, S, Sk_rho, bdd;
-    Mat7 W;    // dense path only (last: the closed form's fields stay together in memory)
-    Mat73 WE;  // dense path only
+  };
+  // The dense path's W and WE = W B_Eᵀ, apart (empty in the closed form: its per-rfe data stays small).
+  struct DenseBody {
+    Mat7 W;
+    Mat73 WE;
   };
   VecX Q, h;
   VecX acc;  // v' of this evaluation (7 per rfe)
   VecX dy;   // workspace [q'; v'] for linearize()
   AlignedVector<Body> body;
+  AlignedVector<DenseBody> dense;
   AlignedVector<Mat3> diag, low, up;
   AlignedVector<Vec3> rhs, lambda;
   // Torsion on: the charts (set by NaturalFormulation::initTwist, moved by rechartTwist), the twist of this
@@ -85,7 +90,7 @@ class NaturalFormulation {
   // y = [q; θ; v; ω; rest]: θ, ω (one per rfe) only with torsion on (torsion.h); θ_0 = ω_0 = 0 (held).
   int positionSize() const { return model_.dofs() + twistDofs(); }
   int twistDofs() const { return model_.hasTorsion() ? model_.bodies() : 0; }
-  std::unique_ptr<NaturalData> makeData() const { return std::make_unique<NaturalData>(model_); }
+  std::unique_ptr<NaturalData> makeData() const { return std::make_unique<NaturalData>(model_, !closed_form_); }
   // y = [q; v] (its first 2 * positionSize() entries) from / to rfe kinematics.
   void packState(const Kinematics3& kin, VecX& y) const;
   void kinematics(const VecX& y, Kinematics3& kin) const;

@@ -14,7 +14,7 @@
 namespace riser_sim {
 namespace spatial {
 
-NaturalData::NaturalData(const SpatialModel& model) : kin(model.bodies()) {
+NaturalData::NaturalData(const SpatialModel& model, bool dense_path) : kin(model.bodies()) {
   const int nb = model.bodies(), nc = nb + 1;
   reactions.joint.assign(nc, Vec3::Zero());
   Q.setZero(model.dofs());
@@ -22,6 +22,7 @@ NaturalData::NaturalData(const SpatialModel& model) : kin(model.bodies()) {
   acc.setZero(model.dofs());
   dy.setZero(2 * model.dofs());
   body.resize(nb);
+  if (dense_path) dense.resize(nb);
   diag.assign(nc, Mat3::Zero());
   low.assign(nc, Mat3::Zero());
   up.assign(nc, Mat3::Zero());
@@ -98,7 +99,8 @@ void NaturalFormulation::denseBody(int i, NaturalData& d) const {
   }
   if (!d.added.empty()) addAddedMassBlock(d.added[i], b, axial, M);
   NaturalData::Body& c = d.body[i];
-  Mat7& W = c.W;
+  NaturalData::DenseBody& dn = d.dense[i];
+  Mat7& W = dn.W;
   W = M.llt().solve(Mat7::Identity());
   if (!axial) {
     W.row(kDelta3).setZero();
@@ -112,10 +114,10 @@ void NaturalFormulation::denseBody(int i, NaturalData& d) const {
   c.a.noalias() = W * f;
   c.a += (gamma / s) * u;
   // B_E = [I, e, len I]: E'' = B_E u'' + 2Δ' e'.
-  c.WE = W.middleCols<3>(kA) + W.col(kDelta3) * b.e.transpose() + b.len * W.middleCols<3>(kE);
+  dn.WE = W.middleCols<3>(kA) + W.col(kDelta3) * b.e.transpose() + b.len * W.middleCols<3>(kE);
   c.AA = W.block<3, 3>(kA, kA);
-  c.AE = c.WE.middleRows<3>(kA);
-  c.EE = c.WE.middleRows<3>(kA) + b.e * c.WE.row(kDelta3) + b.len * c.WE.middleRows<3>(kE);
+  c.AE = dn.WE.middleRows<3>(kA);
+  c.EE = dn.WE.middleRows<3>(kA) + b.e * dn.WE.row(kDelta3) + b.len * dn.WE.middleRows<3>(kE);
   c.aA = c.a.segment<3>(kA);
   c.aE = c.a.segment<3>(kA) + c.a[kDelta3] * b.e + b.len * c.a.segment<3>(kE) + 2.0 * b.delta_dot * b.e_dot;
 }
@@ -270,7 +272,7 @@ void NaturalFormulation::derivative(double t, const VecX& y, const PointMotion3&
       f.segment<3>(kE) += b.len * L;
       closedFormAcceleration(c, f, dy.data() + vo + kDofPerBody3 * i);
     } else {
-      dy.segment<7>(vo + kDofPerBody3 * i).noalias() = c.a - c.W.middleCols<3>(kA) * d.lambda[i] + c.WE * d.lambda[i + 1];
+      dy.segment<7>(vo + kDofPerBody3 * i).noalias() = c.a - d.dense[i].W.middleCols<3>(kA) * d.lambda[i] + d.dense[i].WE * d.lambda[i + 1];
     }
   }
   for (int k = 0; k <= nb; ++k) d.reactions.joint[k] = d.lambda[k];
