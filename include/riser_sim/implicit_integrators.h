@@ -60,17 +60,23 @@ class ImplicitIntegrator : public Integrator {
   Stats stats_;
 };
 
-// Schemes with one implicit stage z = b + c f(t + θh, z) (c = κh; b from y0 and the scheme's history),
-// solved by modified Newton with (I - cJ): the predictor carries the last step's increment on
-// (z0 = y0 + θ (y0 - y_prev)), a stale Jacobian is refreshed once, and when Newton still fails the step
-// is retried as 2, 4, 8 equal substeps before giving up. The scheme supplies b and the end of the step.
+// Schemes with one implicit stage z = b + c f(t + θh, z) (c = κh; b from y0 and the scheme's history;
+// z = y0 + θ (y1 - y0) on q, v), solved by modified Newton with (I - cJ). The predictor extrapolates the
+// last equal steps' increments d1, d2, d3 (newest first): z0 = y0 + a d1 + b d2 + c d3, exact for a
+// smooth solution to second order in its increments and for a component the scheme carries as r∞^k (its
+// root at hλ -> -∞: midpoint -1, generalized_alpha -ρ∞), the unresolved stiff modes a linear
+// extrapolation mispredicts by twice their size every step; after one or two equal steps it carries the
+// last increment on (z0 = y0 + θ d1). A stale Jacobian is refreshed once, and when Newton still fails the
+// step is retried as 2, 4, 8 equal substeps before giving up. The scheme supplies b and the end of the step.
 class OneStageImplicit : public ImplicitIntegrator {
  public:
-  OneStageImplicit(const IntegratorOptions& options, double theta, double kappa)
-      : ImplicitIntegrator(options), theta_(theta), kappa_(kappa) {}
+  // stiff_root: r∞, in [-1, 0].
+  OneStageImplicit(const IntegratorOptions& options, double theta, double kappa, double stiff_root);
   void reset(const StateLayout& layout) override;
-  void restart() override { ImplicitIntegrator::restart(); have_prev_ = false; }
+  void restart() override { ImplicitIntegrator::restart(); equal_steps_ = 0; }
   bool step(OdeSystem& sys, double t, VecX& y, double h) override;
+  // The predictor's weights (a, b, c) on the last three increments (for its test).
+  const Eigen::Vector3d& predictorWeights() const { return weights_; }
   int stages() const override { return 3; }  // typical: 2 Newton iterations + the end evaluation
   // The last converged Newton solve: its solves, and its stopping test's measure over that test's bound
   // (<= 1: the smaller of |Δz| / tol and, from the second solve on, η/(1-η) |Δz| / (tol / 10)). A system
@@ -101,9 +107,11 @@ class OneStageImplicit : public ImplicitIntegrator {
   static constexpr int kMaxPieces = 8;  // substeps tried when Newton fails on the whole step
   bool newton(OdeSystem& sys, double t, const VecX& y0, const VecX& base, double h);
   bool single(OdeSystem& sys, double t, VecX& y, double h);
-  VecX g_, dz_, dy_prev_, y_save_, f_save_;
+  VecX g_, dz_, y_save_, f_save_;
+  VecX d_[3];  // the last increments y1 - y0 of equal steps h_prev_, newest first
+  Eigen::Vector3d weights_;
   NewtonReport last_newton_;
-  bool have_prev_ = false;
+  int equal_steps_ = 0;  // how many of d_ hold such increments (0: no predictor)
   double h_prev_ = 0.0;
 };
 
@@ -112,7 +120,7 @@ class OneStageImplicit : public ImplicitIntegrator {
 // invariants exactly. For long conservative runs.
 class ImplicitMidpoint : public OneStageImplicit {
  public:
-  explicit ImplicitMidpoint(const IntegratorOptions& options) : OneStageImplicit(options, 0.5, 0.5) {}
+  explicit ImplicitMidpoint(const IntegratorOptions& options) : OneStageImplicit(options, 0.5, 0.5, -1.0) {}
   std::string name() const override { return "midpoint"; }
 
  protected:

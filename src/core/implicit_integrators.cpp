@@ -124,16 +124,33 @@ void OneStageImplicit::reset(const StateLayout& layout) {
   }
   ImplicitIntegrator::reset(layout);
   const int n = layout.size;
-  for (VecX* v : {&z_, &fz_, &g_, &dz_, &dy_prev_, &y_save_, &f_save_}) v->setZero(n);
-  have_prev_ = false;
+  for (VecX* v : {&z_, &fz_, &g_, &dz_, &d_[0], &d_[1], &d_[2], &y_save_, &f_save_}) v->setZero(n);
+  equal_steps_ = 0;
+}
+
+// The predictor's weights: with increments d_k = y_{1-k} - y_{-k}, a d1 + b d2 + c d3 = θ (y1 - y0) when
+// the increments are linear in k (d_k = d0 - kδ: a + b + c = θ, a + 2b + 3c = 0) and when y_k = r^k
+// (d_k = (r - 1) r^-k: a r² + b r + c = θ r³). Determinant (1 - r)², nonzero for r <= 0. Midpoint: (½, ½, -½);
+// r = 0: (2θ, -θ, 0), the quadratic extrapolation.
+OneStageImplicit::OneStageImplicit(const IntegratorOptions& options, double theta, double kappa, double stiff_root)
+    : ImplicitIntegrator(options), theta_(theta), kappa_(kappa) {
+  const double r = stiff_root;
+  if (!(r >= -1.0 && r <= 0.0)) throw std::invalid_argument("implicit integrator: stiff root must be in [-1, 0]");
+  Eigen::Matrix3d A;
+  A << 1.0, 1.0, 1.0, 1.0, 2.0, 3.0, r * r, r, 1.0;
+  weights_ = A.partialPivLu().solve(Eigen::Vector3d(theta, 0.0, theta * r * r * r));
 }
 
 // Solves z = base + c f(t + θh, z), c = κh, on the first 2p entries; fz_ = f(t + θh, z) at exit.
 bool OneStageImplicit::newton(OdeSystem& sys, double t, const VecX& y0, const VecX& base, double h) {
   const double tz = t + theta_ * h, c = kappa_ * h, tol = options_.newton_tolerance;
-  // Predictor: the last step's increment carried on (z0 = y0 + θ (y0 - y_prev)), else y0.
-  if (have_prev_ && t == t_end_ && y0 == y_end_ && h == h_prev_) {
-    z_.head(m_) = y0.head(m_) + theta_ * dy_prev_.head(m_);
+  // Predictor (see the class): from the last equal steps' increments when this step follows them, else y0.
+  if (equal_steps_ > 0 && t == t_end_ && y0 == y_end_ && h == h_prev_) {
+    if (equal_steps_ == 3)
+      z_.head(m_) = y0.head(m_) + weights_[0] * d_[0].head(m_) + weights_[1] * d_[1].head(m_) +
+                    weights_[2] * d_[2].head(m_);
+    else
+      z_.head(m_) = y0.head(m_) + theta_ * d_[0].head(m_);
     sys.rhs(tz, z_, fz_);
     ++stats_.rhs;
   } else {
@@ -191,14 +208,17 @@ bool OneStageImplicit::single(OdeSystem& sys, double t, VecX& y, double h) {
     ok = newton(sys, t, y, base, h);
   }
   if (!ok) {
-    have_prev_ = false;
+    equal_steps_ = 0;
     return false;
   }
-  have_prev_ = true;
+  // The increments move down one place (d_[2] is reused for the new one: no allocation).
+  equal_steps_ = (equal_steps_ > 0 && h == h_prev_) ? std::min(equal_steps_ + 1, 3) : 1;
   h_prev_ = h;
-  dy_prev_.head(m_) = y.head(m_);
+  d_[2].swap(d_[1]);
+  d_[1].swap(d_[0]);
+  d_[0].head(m_) = y.head(m_);
   advance(y, h);
-  dy_prev_.head(m_) = y.head(m_) - dy_prev_.head(m_);
+  d_[0].head(m_) = y.head(m_) - d_[0].head(m_);
   ++stats_.substeps;
   // End evaluation: the next step's f0 (and the last stage the simulator's divergence check reads).
   sys.rhs(t + h, y, f0_);
@@ -210,7 +230,7 @@ bool OneStageImplicit::step(OdeSystem& sys, double t, VecX& y, double h) {
   // Structured solves with the predictor at hand use no f(t, y) after a projection (the system linearises
   // at its own evaluations): it is made only for a retry in substeps or a scheme's history. Otherwise
   // f0_ is the last step's end evaluation, or f(t, y) is made (the forces changed).
-  bool lazy = structured_ && have_prev_ && t == t_end_ && h == h_prev_ && y == y_end_ && (f0_valid_ || f0_projected_) &&
+  bool lazy = structured_ && equal_steps_ > 0 && t == t_end_ && h == h_prev_ && y == y_end_ && (f0_valid_ || f0_projected_) &&
               !historyNeedsF0(t, y);
   if (!lazy) {
     startValue(sys, t, y);
@@ -266,7 +286,7 @@ double gammaOf(double rho) { return 0.5 + alphaM(rho) - alphaF(rho); }
 
 GeneralizedAlpha::GeneralizedAlpha(const IntegratorOptions& options)
     : OneStageImplicit(options, alphaF(checkedRhoInf(options.rho_inf)),
-                       alphaF(options.rho_inf) * gammaOf(options.rho_inf) / alphaM(options.rho_inf)),
+                       alphaF(options.rho_inf) * gammaOf(options.rho_inf) / alphaM(options.rho_inf), -options.rho_inf),
       rho_inf_(options.rho_inf),
       alpha_m_(alphaM(options.rho_inf)),
       alpha_f_(alphaF(options.rho_inf)),
