@@ -65,8 +65,8 @@ class ImplicitIntegrator : public Integrator {
 // last equal steps' increments d1, d2, d3 (newest first): z0 = y0 + a d1 + b d2 + c d3, exact for a
 // smooth solution to second order in its increments and for a component the scheme carries as r∞^k (its
 // root at hλ -> -∞: midpoint -1, generalized_alpha -ρ∞), the unresolved stiff modes a linear
-// extrapolation mispredicts by twice their size every step; after one or two equal steps it carries the
-// last increment on (z0 = y0 + θ d1). A stale Jacobian is refreshed once, and when Newton still fails the
+// extrapolation mispredicts by twice their size every step. After one or two equal steps, or when the
+// last step's stage lay nearer it, the last increment is carried on instead (z0 = y0 + θ d1). A stale Jacobian is refreshed once, and when Newton still fails the
 // step is retried as 2, 4, 8 equal substeps before giving up. The scheme supplies b and the end of the step.
 class OneStageImplicit : public ImplicitIntegrator {
  public:
@@ -112,6 +112,7 @@ class OneStageImplicit : public ImplicitIntegrator {
   Eigen::Vector3d weights_;
   NewtonReport last_newton_;
   int equal_steps_ = 0;  // how many of d_ hold such increments (0: no predictor)
+  bool weighted_ = true;  // the weighted start (else the last increment's): the one nearer the last stage
   double h_prev_ = 0.0;
 };
 

@@ -146,7 +146,7 @@ bool OneStageImplicit::newton(OdeSystem& sys, double t, const VecX& y0, const Ve
   const double tz = t + theta_ * h, c = kappa_ * h, tol = options_.newton_tolerance;
   // Predictor (see the class): from the last equal steps' increments when this step follows them, else y0.
   if (equal_steps_ > 0 && t == t_end_ && y0 == y_end_ && h == h_prev_) {
-    if (equal_steps_ == 3)
+    if (equal_steps_ == 3 && weighted_)
       z_.head(m_) = y0.head(m_) + weights_[0] * d_[0].head(m_) + weights_[1] * d_[1].head(m_) +
                     weights_[2] * d_[2].head(m_);
     else
@@ -210,6 +210,17 @@ bool OneStageImplicit::single(OdeSystem& sys, double t, VecX& y, double h) {
   if (!ok) {
     equal_steps_ = 0;
     return false;
+  }
+  // Which start was nearer this step's stage, for the next step: the weighted one, or the last increment
+  // carried on (better on modes the scheme resolves only in part, e.g. a swing's bending at h ω ~ 1).
+  if (equal_steps_ == 3) {
+    double e_lin = 0.0, e_w = 0.0;
+    for (int i = 0; i < m_; ++i) {
+      const double s = 1.0 / (1.0 + std::abs(z_[i])), dz = y[i] - z_[i];
+      e_lin = std::max(e_lin, std::abs(dz + theta_ * d_[0][i]) * s);
+      e_w = std::max(e_w, std::abs(dz + weights_[0] * d_[0][i] + weights_[1] * d_[1][i] + weights_[2] * d_[2][i]) * s);
+    }
+    weighted_ = e_w <= e_lin;
   }
   // The increments move down one place (d_[2] is reused for the new one: no allocation).
   equal_steps_ = (equal_steps_ > 0 && h == h_prev_) ? std::min(equal_steps_ + 1, 3) : 1;
