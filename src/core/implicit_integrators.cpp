@@ -213,12 +213,13 @@ bool OneStageImplicit::single(OdeSystem& sys, double t, VecX& y, double h) {
   }
   // Which start was nearer this step's stage, for the next step: the weighted one, or the last increment
   // carried on (better on modes the scheme resolves only in part, e.g. a swing's bending at h ω ~ 1).
-  if (equal_steps_ == 3) {
+  if (equal_steps_ == 3) {  // squared 2-norms: one pass, no division
+    const double a = weights_[0], b = weights_[1], c = weights_[2];
     double e_lin = 0.0, e_w = 0.0;
     for (int i = 0; i < m_; ++i) {
-      const double s = 1.0 / (1.0 + std::abs(z_[i])), dz = y[i] - z_[i];
-      e_lin = std::max(e_lin, std::abs(dz + theta_ * d_[0][i]) * s);
-      e_w = std::max(e_w, std::abs(dz + weights_[0] * d_[0][i] + weights_[1] * d_[1][i] + weights_[2] * d_[2][i]) * s);
+      const double dz = y[i] - z_[i], lin = dz + theta_ * d_[0][i], w = dz + a * d_[0][i] + b * d_[1][i] + c * d_[2][i];
+      e_lin += lin * lin;
+      e_w += w * w;
     }
     weighted_ = e_w <= e_lin;
   }
