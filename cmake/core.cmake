@@ -54,6 +54,7 @@ add_library(riser_sim_core
   src/core/spatial/simulator.cpp
   src/core/spatial/independent_formulation.cpp
   src/core/spatial/modal.cpp
+  src/core/spatial/statics.cpp
   src/core/spatial/modal_characters.cpp
   src/core/spatial/forces/gravity.cpp
   src/core/spatial/forces/axial_spring.cpp

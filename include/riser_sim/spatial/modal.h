@@ -14,13 +14,10 @@
 #include <vector>
 
 #include "riser_sim/spatial/model.h"
+#include "riser_sim/spatial/statics.h"  // SpatialModalOptions; the equilibria the modes are about
 
 namespace riser_sim {
 namespace spatial {
-
-struct SpatialModalOptions {
-  double fd_step = 1e-6;  // central-difference step: chart units (~rad) for u, x segment length for Δ
-};
 
 struct SpatialMode {
   double omega2 = 0.0;  // ω² [1/s²]; < 0: unstable in this direction
@@ -46,19 +43,6 @@ struct SpatialModalResult {
   MatX stiffness, mass;
 };
 
-// Static equilibrium of the line at rest hanging from A_0 = guess[0].A: Newton on Q_θ = 0 with the
-// finite-difference K, from the guess's directions and Δ (its joints are closed from A_0); a pinned end held
-// at bottomPoint() with its force as a multiplier. Throws std::runtime_error when it does not reach a residual
-// of 1e-12 of the weight (and an end gap of 1e-12 of the length) in `iterations`.
-Kinematics3 spatialEquilibrium(const SpatialModel& model, const Kinematics3& guess, int iterations = 20,
-                               const SpatialModalOptions& options = SpatialModalOptions());
-// Static equilibrium of a free end whose horizontal position is held at `xy` [m] by a horizontal force: Newton
-// on Q_θ + Φᵀ F = 0 with the gap E_xy - xy as a constraint and F = (F_x, F_y, 0) its multiplier (a dead load:
-// its geometric stiffness in K), from `guess` and `force` (in: the first guess of F; out: F [N], the force on
-// the line's end). Throws std::runtime_error when it does not reach a residual of 1e-12 of the weight and a
-// gap of 1e-12 of the length in `iterations`.
-Kinematics3 spatialEquilibriumHeldEnd(const SpatialModel& model, const Kinematics3& guess, const Vec2& xy, Vec3& force,
-                                      int iterations = 30, const SpatialModalOptions& options = SpatialModalOptions());
 // Modes about `equilibrium` (zero velocities); a pinned end held (the modes in the null space of its Jacobian,
 // the anchor's force a dead load). Throws std::runtime_error when the eigen-solve fails.
 SpatialModalResult computeSpatialModes(const SpatialModel& model, const Kinematics3& equilibrium,

@@ -17,6 +17,7 @@
 #include "riser_sim/spatial/shifted_solver.h"
 
 namespace riser_sim {
+class OneStageImplicit;  // implicit_integrators.h
 namespace spatial {
 
 class SpatialSimulator : private OdeSystem {
@@ -98,7 +99,8 @@ class SpatialSimulator : private OdeSystem {
   double t_lin_ = 0.0, c_pending_ = 0.0;
   long evaluations_ = 0, evaluations_at_lin_ = 0, evaluations_at_solve_ = 0;
   int solves_ = 0, age_ = 0, backoff_ = 0, wait_ = 0;
-  bool lin_pending_ = false, newton_ = false, reused_ = false, force_lin_ = true;
+  bool lin_pending_ = false, reused_ = false, force_lin_ = true;
+  const OneStageImplicit* newton_ = nullptr;  // the integrator when it is a Newton scheme (its reports)
   Kinematics3 kin_;
   double t_ = 0.0;
   double projection_tol_ = 0.0;

@@ -7,7 +7,7 @@
 #include <stdexcept>
 
 #include "riser_sim/spatial/forces/end_load.h"
-#include "riser_sim/spatial/modal.h"
+#include "riser_sim/spatial/statics.h"
 #include "riser_sim/spatial/natural_formulation.h"
 #include "riser_sim/spatial/relaxation.h"
 #include "riser_sim/spatial/run_builder.h"

@@ -30,7 +30,7 @@ SpatialSimulator::SpatialSimulator(std::shared_ptr<const SpatialModel> model, st
   y_.setZero(n);
   dy_.setZero(n);
   y_lin_.setZero(n);
-  newton_ = kind == IntegratorKind::kMidpoint || kind == IntegratorKind::kGeneralizedAlpha;
+  newton_ = dynamic_cast<const OneStageImplicit*>(integrator_.get());  // midpoint, generalized_alpha
   integrator_->reset(StateLayout{n, formulation_.positionSize()});
 }
 
@@ -100,10 +100,9 @@ void SpatialSimulator::linearize(double t, const VecX& y) {
 // about margin ((age_ + 1) / age_)^solves (measured on the step-cost bench line: the rate after the
 // second solve 6e-5, 1.3e-4, 2e-4, 3e-4, 4e-4 one to five steps after it at n = 1000).
 bool SpatialSimulator::staleNext() const {
-  const auto* newton = dynamic_cast<const OneStageImplicit*>(integrator_.get());
-  if (!newton || newton->lastNewton().solves != solves_) return false;  // a retry in substeps: no estimate
+  if (!newton_ || newton_->lastNewton().solves != solves_) return false;  // a retry in substeps: no estimate
   const double growth = double(age_ + 1) / double(age_);
-  return newton->lastNewton().margin * std::pow(growth, solves_) > 1.0;
+  return newton_->lastNewton().margin * std::pow(growth, solves_) > 1.0;
 }
 
 void SpatialSimulator::factorShifted(double c) {

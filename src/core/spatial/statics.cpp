@@ -1,0 +1,109 @@
+#include "riser_sim/spatial/statics.h"
+
+#include <Eigen/LU>
+#include <Eigen/QR>
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "rest_line.h"
+
+namespace riser_sim {
+namespace spatial {
+
+using detail::RestLine;
+
+Kinematics3 spatialEquilibrium(const SpatialModel& model, const Kinematics3& guess, int iterations,
+                               const SpatialModalOptions& options) {
+  RestLine line(model, guess, options.fd_step);
+  VecX theta = line.theta();
+  const bool pinned = model.bottom() == BottomBoundary::kPinned;
+  const double gap_tol = 1e-12 * model.line().length();
+  auto converged = [&] {
+    return line.residual(theta, model) < 1e-12 && (!pinned || line.endGap(theta, model).norm() < gap_tol);
+  };
+  const int p = line.size();
+  // A free top in twist: K is singular along the rigid spin (Q_φ = 0 there); least-norm Newton steps.
+  const bool free_spin = model.hasTorsion() && model.torsion().free_top;
+  auto solve = [free_spin](const MatX& A, const VecX& b) -> VecX {
+    return free_spin ? VecX(A.completeOrthogonalDecomposition().solve(b)) : VecX(A.partialPivLu().solve(b));
+  };
+  for (int it = 0; it < iterations; ++it) {
+    if (converged()) return line.kinematics(theta, model);
+    const MatX K = line.stiffness(theta, model);
+    if (!pinned) {
+      theta += solve(K, VecX(line.forces(theta)));  // Q(θ + δ) ≈ Q - K δ = 0
+      continue;
+    }
+    // Pinned: Q - K δ + Φᵀ ν = 0 (ν: the anchor's force beyond the model's), E_n - p_b + Φ δ = 0.
+    const MatX Phi = line.endJacobian(theta);
+    MatX A = MatX::Zero(p + 3, p + 3);
+    A.topLeftCorner(p, p) = K;
+    A.topRightCorner(p, 3) = -Phi.transpose();
+    A.bottomLeftCorner(3, p) = Phi;
+    VecX b(p + 3);
+    b.head(p) = line.forces(theta);
+    b.tail(3) = -line.endGap(theta, model);
+    theta += solve(A, b).head(p);
+  }
+  if (converged()) return line.kinematics(theta, model);
+  throw std::runtime_error("spatialEquilibrium: Newton did not converge");
+}
+
+Kinematics3 spatialEquilibriumHeldEnd(const SpatialModel& model, const Kinematics3& guess, const Vec2& xy, Vec3& force,
+                                      int iterations, const SpatialModalOptions& options) {
+  if (model.bottom() == BottomBoundary::kPinned)
+    throw std::invalid_argument("spatialEquilibriumHeldEnd: a free end only (a pinned one is held in full)");
+  RestLine line(model, guess, options.fd_step);
+  VecX theta = line.theta();
+  const int p = line.size();
+  Eigen::Matrix<double, 3, 2> P = Eigen::Matrix<double, 3, 2>::Zero();  // λ = P ν: horizontal
+  P(0, 0) = P(1, 1) = 1.0;
+  Vec2 nu = force.head<2>();
+  double weight = 0.0;
+  for (int i = 0; i < model.bodies(); ++i) weight += model.rfe(i).mass;
+  weight *= model.gravity().norm();
+  const double L = model.line().length();
+  auto gap = [&] { return Vec2(line.kinematics(theta, model).back().end().head<2>() - xy); };
+  auto residual = [&] {  // as RestLine::residual, with the end's force ν
+    const VecX R = line.loaded(theta, P * nu);
+    double r = 0.0;
+    for (int c = 0; c < p; ++c) r = std::max(r, std::abs(R[c]) / (line.isDelta(c) ? weight : weight * L));
+    return r;
+  };
+  for (int it = 0; it <= iterations; ++it) {
+    if (residual() < 1e-12 && gap().norm() < 1e-12 * L) {
+      force = P * nu;
+      return line.kinematics(theta, model);
+    }
+    if (it == iterations) break;
+    // R(θ, ν) = Q + Φᵀ P ν: K_ν δ - Φᵀ P Δν = R, P ᵀ Φ δ = -gap (K_ν: ν's geometric stiffness in).
+    const MatX K = line.stiffness(theta, model, P * nu);
+    const MatX G = P.transpose() * line.endJacobian(theta);
+    MatX A = MatX::Zero(p + 2, p + 2);
+    A.topLeftCorner(p, p) = K;
+    A.topRightCorner(p, 2) = -G.transpose();
+    A.bottomLeftCorner(2, p) = G;
+    VecX b(p + 2);
+    b.head(p) = line.loaded(theta, P * nu);
+    b.tail(2) = -gap();
+    const VecX x = A.partialPivLu().solve(b);
+    // Backtracking on residual + gap / L: a contact (the seabed's kink at zero penetration) can make the full
+    // step overshoot.
+    const double merit0 = residual() + gap().norm() / L;
+    const VecX theta0 = theta;
+    const Vec2 nu0 = nu;
+    for (double a = 1.0;; a *= 0.5) {
+      theta = theta0 + a * x.head(p);
+      nu = nu0 + a * x.tail(2);
+      if (a < 1.0 / 64.0 || residual() + gap().norm() / L < merit0) break;
+    }
+  }
+  throw std::runtime_error("the 3D equilibrium with the end held horizontally did not converge in " +
+                           std::to_string(iterations) + " Newton iterations (residual " + std::to_string(residual()) +
+                           " of the weight, gap " + std::to_string(gap().norm()) + " m)");
+}
+
+}  // namespace spatial
+}  // namespace riser_sim
