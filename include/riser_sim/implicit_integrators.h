@@ -66,8 +66,9 @@ class ImplicitIntegrator : public Integrator {
 // smooth solution to second order in its increments and for a component the scheme carries as r∞^k (its
 // root at hλ -> -∞: midpoint -1, generalized_alpha -ρ∞), the unresolved stiff modes a linear
 // extrapolation mispredicts by twice their size every step. After one or two equal steps, or when the
-// last step's stage lay nearer it, the last increment is carried on instead (z0 = y0 + θ d1). A stale Jacobian is refreshed once, and when Newton still fails the
-// step is retried as 2, 4, 8 equal substeps before giving up. The scheme supplies b and the end of the step.
+// last step's stage lay nearer it, the last increment is carried on instead (z0 = y0 + θ d1). A stale
+// Jacobian is refreshed once, and when Newton still fails the step is retried as 2, 4, 8 equal substeps
+// before giving up. The scheme supplies b and the end of the step.
 class OneStageImplicit : public ImplicitIntegrator {
  public:
   // stiff_root: r∞, in [-1, 0].

@@ -213,7 +213,7 @@ bool OneStageImplicit::single(OdeSystem& sys, double t, VecX& y, double h) {
   }
   // Which start was nearer this step's stage, for the next step: the weighted one, or the last increment
   // carried on (better on modes the scheme resolves only in part, e.g. a swing's bending at h ω ~ 1).
-  if (equal_steps_ == 3) {  // squared 2-norms: one pass, no division
+  if (equal_steps_ == 3 && h == h_prev_) {  // squared 2-norms: one pass, no division
     const double a = weights_[0], b = weights_[1], c = weights_[2];
     double e_lin = 0.0, e_w = 0.0;
     for (int i = 0; i < m_; ++i) {

@@ -35,8 +35,8 @@ struct Reactions3 {
 // One evaluation's results and workspaces, sized once by NaturalFormulation::makeData().
 class NaturalData {
  public:
-  // dense: the dense path's per-rfe W, WE too (NaturalFormulation with closed_form false).
-  NaturalData(const SpatialModel& model, bool dense);
+  // dense_path: the dense path's per-rfe W, WE too (NaturalFormulation with closed_form false).
+  NaturalData(const SpatialModel& model, bool dense_path);
   double t = 0.0;
   PointMotion3 top;
   PointMotion3 bottom;  // the pinned bottom's anchor at t (SpatialModel::bottomAt)
