@@ -212,7 +212,7 @@ bool OneStageImplicit::single(OdeSystem& sys, double t, VecX& y, double h) {
     return false;
   }
   // Which start was nearer this step's stage, for the next step: the weighted one, or the last increment
-  // carried on (better on modes the scheme resolves only in part, e.g. a swing's bending at h ω ~ 1).
+  // carried on (the better one on the swing scene: docs/integrators.md).
   if (equal_steps_ == 3 && h == h_prev_) {  // squared 2-norms: one pass, no division
     const double a = weights_[0], b = weights_[1], c = weights_[2];
     double e_lin = 0.0, e_w = 0.0;
