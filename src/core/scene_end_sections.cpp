@@ -47,7 +47,11 @@ Eigen::Vector3d parsePhase(const Section& motion, const std::string& k, bool pla
 
 // top.motion.attitude [deg] (roll, pitch, yaw amplitudes of the holder) and attitude_phase: sinusoid, 3D only.
 void parseAttitude(const Section& motion, TopMotionSpec& spec, bool planar) {
-  if (!motion.has("attitude")) return;
+  if (!motion.has("attitude")) {
+    if (motion.has("attitude_phase"))
+      throw SceneError(motion.key("attitude_phase"), "needs attitude: [roll, pitch, yaw] (the phase of its sinusoid)");
+    return;
+  }
   const std::string key = motion.key("attitude");
   if (planar) throw SceneError(key, "needs space: spatial (the planar holder does not turn)");
   if (spec.type != MotionKind::kSinusoid) throw SceneError(key, "only with type: sinusoid (it shares its period)");

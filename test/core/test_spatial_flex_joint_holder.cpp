@@ -162,6 +162,8 @@ TEST(SpatialFlexJointHolder, PrescribedAttitudeTurnsTheJoints) {
           "top.motion.attitude");
   refused("space: spatial, top: {motion: {type: sinusoid, amplitude: [1, 0, 0], period: 5, attitude: [1, 95, 3]}}",
           "top.motion.attitude[1]");
+  refused("space: spatial, top: {motion: {type: sinusoid, amplitude: [1, 0, 0], period: 5, attitude_phase: 1}}",
+          "top.motion.attitude_phase");
 }
 
 }  // namespace
