@@ -38,6 +38,12 @@ class ShiftedSolver3 {
   // Linearisation at the evaluation d (its kinematics, forces, joint reactions) with its accelerations
   // acc = v' (7 per rfe).
   void setLinearization(const NaturalData& d, const Eigen::Ref<const VecX>& acc);
+  // A kept factor turned with the line (docs/spatial.md, "The kept factor turns with the line"): until the
+  // next setLinearization(), solve() sees each rfe's director rate, and the rate of A_{i+1} - A_i, turned
+  // back by R_i, the smallest rotation taking the linearisation's director e_i to d's (a similarity
+  // transform of the kept matrix: its joint and unit-length rows follow the turned directors; the same
+  // solution where the factor is exact, fewer Newton iterations where the line turned).
+  void followDirectors(const NaturalData& d);
   // Block LU of the KKT matrix for c = κh [s].
   void factor(double c);
   // x = (I - c J)^-1 b on the first 2p entries (c of the last factor()).
@@ -80,7 +86,8 @@ class ShiftedSolver3 {
     Vec7 pu;
     Mat73 Xmu;
   };
-  void assembleRhs(int blk, const VecX& b, Vec11& r) const;
+  void assembleRhs(int blk, const VecX& b, const VecX& b_rates, Vec11& r) const;
+  const VecX& turnedBack(const VecX& b);
   int blocks() const { return nb_ + (pinned_ ? 1 : 0); }
   // Φ_i v: x_i's dependence on x_{i-1} ([Γ_{i-1} / s; -RN_u]).
   template <typename In, typename Out>
@@ -93,6 +100,9 @@ class ShiftedSolver3 {
   bool pinned_ = false;
   AlignedVector<Body> body_;  // nb_ + 1 (the last: the pinned end's block)
   SpatialStiffness S_;
+  AlignedVector<Mat3> turn_;  // followDirectors' R_i
+  bool turning_ = false;
+  VecX b_turned_;  // the right side's rates turned back (entries vo_..vo_ + nq_)
   std::vector<double> t_diag_, t_mul_;  // torsion: the Thomas factor's pivots and multipliers
   Mat3 Sm_inv_ = Mat3::Zero();           // pinned: (Γ_{n-1} ∂x_{n-1}/∂λ_n)⁻¹
   double c_ = 0.0, s_ = 1.0;

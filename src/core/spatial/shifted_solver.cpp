@@ -115,6 +115,8 @@ ShiftedSolver3::ShiftedSolver3(const SpatialModel& model, double stabilization)
     B.x.setZero();
   }
   S_.resize(nb_);
+  turn_.assign(nb_, Mat3::Identity());
+  b_turned_.setZero(2 * (nq_ + nt_));
   t_diag_.assign(nt_, 1.0);
   t_mul_.assign(nt_, 0.0);
 }
@@ -206,6 +208,29 @@ void ShiftedSolver3::setLinearization(const NaturalData& d, const Eigen::Ref<con
   for (int i = 0; i + 1 < nb_; ++i) body_[i].Kup = S_.K_sub[i + 1].transpose() + S_.K_sup[i + 1];  // K(i, i+1)
   linearized_ = true;
   factored_ = false;
+  turning_ = false;
+}
+
+// The linearisation's director is gu's e part. A director turned by more than 60° (no kept factor lives
+// that long) keeps R = I.
+void ShiftedSolver3::followDirectors(const NaturalData& d) {
+  if (!linearized_) return;
+  for (int i = 0; i < nb_; ++i) {
+    const Vec3 a = body_[i].gu.segment<3>(kE), e = d.kin[i].e.normalized();
+    const double cs = a.dot(e);
+    Mat3& R = turn_[i];
+    if (!(cs > 0.5)) {
+      R.setIdentity();
+      continue;
+    }
+    const Vec3 v = a.cross(e);  // R = cos I + [v]x + (1 - cos) w wᵀ with v = sin w (Rodrigues)
+    R = (v / (1.0 + cs)) * v.transpose();
+    R.diagonal().array() += cs;
+    R(0, 1) -= v.z(), R(1, 0) += v.z();
+    R(0, 2) += v.y(), R(2, 0) -= v.y();
+    R(1, 2) -= v.x(), R(2, 1) += v.x();
+  }
+  turning_ = true;
 }
 
 template <typename In, typename Out>
@@ -293,10 +318,10 @@ void ShiftedSolver3::factor(double c) {
 }
 
 // Right side of block blk: rows g b_v - c r b_q, then M b_v - c K b_q, then the unit-length row.
-void ShiftedSolver3::assembleRhs(int blk, const VecX& b, Vec11& r) const {
+void ShiftedSolver3::assembleRhs(int blk, const VecX& b, const VecX& b_rates, Vec11& r) const {
   const double c = c_, w2 = omega_ * omega_;
   auto bq = [&](int i) { return b.segment<7>(kDofPerBody3 * i); };
-  auto bv = [&](int i) { return b.segment<7>(vo_ + kDofPerBody3 * i); };
+  auto bv = [&](int i) { return b_rates.segment<7>(vo_ + kDofPerBody3 * i); };
   r.setZero();
   if (blk > 0) {
     const Body& P = body_[blk - 1];
@@ -312,13 +337,30 @@ void ShiftedSolver3::assembleRhs(int blk, const VecX& b, Vec11& r) const {
   r[10] = B.gu.dot(bv(blk)) - c * B.ru.dot(bq(blk));
 }
 
+// b's rates (entries vo_.. of b_turned_) in the linearisation's frame: e_i' by R_iᵀ, A_{i+1}' - A_i' by
+// R_iᵀ (A_0' and Δ' as they are).
+const VecX& ShiftedSolver3::turnedBack(const VecX& b) {
+  b_turned_.segment<3>(vo_ + kA) = b.segment<3>(vo_ + kA);
+  for (int i = 0; i < nb_; ++i) {
+    const int v = vo_ + kDofPerBody3 * i;
+    const Mat3& R = turn_[i];
+    b_turned_[v + kDelta3] = b[v + kDelta3];
+    b_turned_.segment<3>(v + kE).noalias() = R.transpose() * b.segment<3>(v + kE);
+    if (i + 1 < nb_)
+      b_turned_.segment<3>(v + kDofPerBody3 + kA) =
+          b_turned_.segment<3>(v + kA) + R.transpose() * (b.segment<3>(v + kDofPerBody3 + kA) - b.segment<3>(v + kA));
+  }
+  return b_turned_;
+}
+
 void ShiftedSolver3::solve(const VecX& b, VecX& x) {
+  const VecX& b_rates = turning_ ? turnedBack(b) : b;  // the director and joint rates' entries read from it
   Vec11 r;
   Vec7 snext = Vec7::Zero(), phi;
   Eigen::Matrix<double, 5, 1> y;
   for (int i = nb_ - 1; i >= 0; --i) {  // backward: f_i (x_i's constant part), s_i
     Body& B = body_[i];
-    assembleRhs(i, b, r);
+    assembleRhs(i, b, b_rates, r);
     phi = r.segment<7>(3) - snext;
     const Vec3 a = (1.0 / s_) * r.head<3>();
     y.head<4>() = phi.segment<4>(kDelta3);
@@ -340,12 +382,20 @@ void ShiftedSolver3::solve(const VecX& b, VecX& x) {
     body_[i].x += px;
   }
   if (pinned_) {
-    assembleRhs(nb_, b, r);
+    assembleRhs(nb_, b, b_rates, r);
     const Vec3 mu = -(Sm_inv_ * (r.head<3>() + mul(body_[nb_ - 1].Gam, body_[nb_ - 1].x)));
     for (int i = 0; i < nb_; ++i) body_[i].x.noalias() += body_[i].Xmu * mu;
   }
+  Vec3 y_prev = Vec3::Zero(), x_prev = Vec3::Zero();  // turning: A_{i-1}' in the kept frame, and turned
   for (int i = 0; i < nb_; ++i) {
-    const Vec7& xv = body_[i].x;
+    Vec7& xv = body_[i].x;
+    if (turning_) {  // and forward again
+      xv.tail<3>() = turn_[i] * xv.tail<3>();
+      const Vec3 y = xv.head<3>();
+      if (i > 0) xv.head<3>() = x_prev + turn_[i - 1] * (y - y_prev);
+      y_prev = y;
+      x_prev = xv.head<3>();
+    }
     x.segment<7>(vo_ + kDofPerBody3 * i) = xv;
     x.segment<7>(kDofPerBody3 * i) = b.segment<7>(kDofPerBody3 * i) + c_ * xv;
   }

@@ -130,6 +130,7 @@ void SpatialSimulator::solveShifted(const VecX& b, VecX& x) {
     formulation_.factorShifted(c_pending_, *shifted_);
     lin_pending_ = false;
   }
+  if (reused_ && solves_ == 1) shifted_->followDirectors(*data_);  // at the step's predictor (its last evaluation)
   formulation_.solveShifted(b, x, *shifted_);
 }
 
