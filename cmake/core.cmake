@@ -74,7 +74,7 @@ target_link_libraries(riser_sim_core PUBLIC yaml-cpp)
 # The stepping code at -O3 whatever the build type, except the sanitizer build (scripts/test_sanitize.sh:
 # its -O1 must win; -O3 under ASan compiled the core ~1.8x slower).
 set(RISER_SIM_OPT $<$<NOT:$<CONFIG:Sanitize>>:-O3>)
-target_compile_options(riser_sim_core PRIVATE ${RISER_SIM_OPT})
+target_compile_options(riser_sim_core PRIVATE ${RISER_SIM_OPT} -fno-semantic-interposition)
 # Most core files spent ~2 of their ~3 s of CPU parsing Eigen: one precompiled header for them all.
 set(RISER_SIM_PCH_HEADERS <Eigen/Dense> <algorithm> <cmath> <functional> <memory> <sstream> <stdexcept>
   <string> <vector>)

@@ -67,7 +67,7 @@ class NaturalData {
   VecX dy;   // workspace [q'; v'] for linearize()
   AlignedVector<Body> body;
   AlignedVector<DenseBody> dense;
-  AlignedVector<Mat3> diag, low, up;
+  AlignedVector<Mat3> diag, up;
   AlignedVector<Vec3> rhs, lambda;
   // Torsion on: the charts (set by NaturalFormulation::initTwist, moved by rechartTwist), the twist of this
   // evaluation and its [θ; ω].

@@ -24,7 +24,6 @@ NaturalData::NaturalData(const SpatialModel& model, bool dense_path) : kin(model
   body.resize(nb);
   if (dense_path) dense.resize(nb);
   diag.assign(nc, Mat3::Zero());
-  low.assign(nc, Mat3::Zero());
   up.assign(nc, Mat3::Zero());
   rhs.assign(nc, Vec3::Zero());
   lambda.assign(nc, Vec3::Zero());
@@ -217,16 +216,18 @@ void NaturalFormulation::derivative(double t, const VecX& y, const PointMotion3&
   }
 
   // Rows k = 0..n (+ n+1 pinned): c_k = E_{k-1} - A_k, E_{-1} = top point, A_{n+1} = bottom point; the
-  // force on rfe k at A_k is -λ_k, on rfe k-1 at its end +λ_k (as the planar AbsoluteFormulation).
+  // force on rfe k at A_k is -λ_k, on rfe k-1 at its end +λ_k (as the planar AbsoluteFormulation). Row k:
+  // low_k λ_{k-1} + D_k λ_k + up_k λ_{k+1} = rhs_k with up_k = -AE_k, low_k = -AE_{k-1}ᵀ.
   const double w = omega_;
   double cmax = 0.0;
   for (int k = 0; k < nc; ++k) {
     Vec3 c, cd, r;
-    Mat3 dk = Mat3::Zero();
+    Mat3 dk;
     if (k == 0) {
       c = top.p - d.kin[0].A;
       cd = top.v - d.kin[0].A_dot;
       r = -top.a;
+      dk.setZero();
     } else {
       const BodyKinematics3& bp = d.kin[k - 1];
       // A_{n+1}: the pinned bottom's anchor p_b(t), its acceleration prescribed as the top's.
@@ -236,28 +237,76 @@ void NaturalFormulation::derivative(double t, const VecX& y, const PointMotion3&
       cd = bp.endVelocity() - Akd;
       r = -d.body[k - 1].aE;
       if (k == nb) r += d.bottom.a;
-      dk += d.body[k - 1].EE;
-      d.low[k] = -d.body[k - 1].AE.transpose();
+      dk = d.body[k - 1].EE;
     }
     if (k < nb) {
       r += d.body[k].aA;
       dk += d.body[k].AA;
-      d.up[k] = (k < nb - 1 || pinned) ? Mat3(-d.body[k].AE) : Mat3::Zero();
+      if (k < nb - 1 || pinned)
+        d.up[k] = -d.body[k].AE;
+      else
+        d.up[k].setZero();
     }
-    d.rhs[k] = r - 2.0 * w * cd - w * w * c;
+    d.rhs[k] = r - 2.0 * w * cd - (w * w) * c;
     cmax = std::max(cmax, c.squaredNorm());
     d.diag[k] = dk;
   }
-  // Block Thomas; diag[k] is replaced by the inverse of its eliminated value (each inverted once).
-  d.diag[0] = d.diag[0].inverse().eval();
-  for (int k = 1; k < nc; ++k) {
-    const Mat3 L = d.low[k] * d.diag[k - 1];
-    d.diag[k] -= L * d.up[k - 1];
-    d.diag[k] = d.diag[k].inverse().eval();
-    d.rhs[k] -= L * d.rhs[k - 1];
+  // Block Thomas from both ends at once (two independent chains of 3x3 inverses, which the CPU overlaps:
+  // the chain is the evaluation's critical path), meeting at row m; diag[k] keeps the inverse of the
+  // eliminated block.
+  auto low = [&](int k) -> Mat3 { return -d.body[k - 1].AE.transpose(); };
+  // The closed form's blocks are symmetric (its compliances are p n nᵀ + q (I - n nᵀ)): the inverse from the
+  // upper triangle (6 cofactors), the dense path's in general.
+  auto inverse = [this](const Mat3& A) -> Mat3 {
+    if (!closed_form_) return A.inverse();
+    const double a = A(0, 0), b = A(0, 1), c = A(0, 2), e = A(1, 1), f = A(1, 2), g = A(2, 2);
+    const double c00 = e * g - f * f, c01 = c * f - b * g, c02 = b * f - c * e;
+    const double inv = 1.0 / (a * c00 + b * c01 + c * c02);
+    const double c11 = (a * g - c * c) * inv, c12 = (b * c - a * f) * inv, c22 = (a * e - b * b) * inv;
+    Mat3 R;
+    R << c00 * inv, c01 * inv, c02 * inv, c01 * inv, c11, c12, c02 * inv, c12, c22;
+    return R;
+  };
+  const int m = nc / 2;
+  for (int j = 0; j < nc - m; ++j) {
+    const int kt = j, kb = nc - 1 - j;
+    if (kt < m) {
+      if (kt > 0) {
+        const Mat3 L = low(kt) * d.diag[kt - 1];
+        d.diag[kt].noalias() -= L * d.up[kt - 1];
+        d.rhs[kt].noalias() -= L * d.rhs[kt - 1];
+      }
+      d.diag[kt] = inverse(d.diag[kt]);
+    }
+    if (kb > m) {
+      if (kb < nc - 1) {
+        const Mat3 U = d.up[kb] * d.diag[kb + 1];
+        d.diag[kb].noalias() -= U * low(kb + 1);
+        d.rhs[kb].noalias() -= U * d.rhs[kb + 1];
+      }
+      d.diag[kb] = inverse(d.diag[kb]);
+    }
   }
-  d.lambda[nc - 1] = d.diag[nc - 1] * d.rhs[nc - 1];
-  for (int k = nc - 2; k >= 0; --k) d.lambda[k] = d.diag[k] * (d.rhs[k] - d.up[k] * d.lambda[k + 1]);
+  {
+    Mat3 D = d.diag[m];
+    Vec3 r = d.rhs[m];
+    if (m > 0) {
+      const Mat3 L = low(m) * d.diag[m - 1];
+      D.noalias() -= L * d.up[m - 1];
+      r.noalias() -= L * d.rhs[m - 1];
+    }
+    if (m < nc - 1) {
+      const Mat3 U = d.up[m] * d.diag[m + 1];
+      D.noalias() -= U * low(m + 1);
+      r.noalias() -= U * d.rhs[m + 1];
+    }
+    d.lambda[m] = inverse(D) * r;
+  }
+  for (int j = 1; j < nc - m || m - j >= 0; ++j) {
+    const int kt = m - j, kb = m + j;
+    if (kt >= 0) d.lambda[kt] = d.diag[kt] * (d.rhs[kt] - d.up[kt] * d.lambda[kt + 1]);
+    if (kb < nc) d.lambda[kb] = d.diag[kb] * (d.rhs[kb] - low(kb) * d.lambda[kb - 1]);
+  }
   if (!pinned) d.lambda[nb] = Vec3::Zero();
 
   dy.head(nq) = y.segment(vo, nq);

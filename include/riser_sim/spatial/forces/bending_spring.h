@@ -25,6 +25,9 @@ class BendingSpring : public SpatialForceTerm {
   static double angle(const Vec3& a, const Vec3& b) { return std::atan2(a.cross(b).norm(), a.dot(b)); }
   // θ / sin θ without cancellation near 0 (the spring force's factor).
   static double thetaOverSin(double theta);
+  // θ/sinθ from sin²θ <= kSeriesSin2 (θ < 90°), by its series (bending_spring.cpp).
+  static double asinOverSin(double sin2);
+  static constexpr double kSeriesSin2 = 0.01;
   // [rad] from π: the bending direction is undefined there, no spring force (flex joints likewise).
   static constexpr double kFoldedTol = 1e-12;
 };

@@ -14,9 +14,18 @@ double BendingSpring::thetaOverSin(double theta) {
   return theta / std::sin(theta);
 }
 
+// asin(x)/x = θ/sinθ from x² = sin²θ (θ < 90°): its Maclaurin series to x¹⁴, c_j = (2j)! / (4^j (j!)² (2j+1));
+// for x² <= kSeriesSin2 = 0.01 the first term left out, c_8 x¹⁶ = 1.2e-18, is below round-off.
+double BendingSpring::asinOverSin(double x2) {
+  constexpr double c[8] = {1.0, 1.0 / 6.0, 3.0 / 40.0, 5.0 / 112.0, 35.0 / 1152.0, 63.0 / 2816.0, 231.0 / 13312.0, 143.0 / 10240.0};
+  const double x4 = x2 * x2, x8 = x4 * x4;  // Estrin's scheme: three levels, not a chain of seven
+  const double p01 = c[0] + c[1] * x2, p23 = c[2] + c[3] * x2, p45 = c[4] + c[5] * x2, p67 = c[6] + c[7] * x2;
+  return (p01 + x4 * p23) + x8 * (p45 + x4 * p67);
+}
+
 // V = ½ k θ²: Q_b = -k θ ∂θ/∂b = k (θ/sinθ) / (|a||b|) (a - (a·b) b/|b|²), Q_a likewise with a, b swapped.
-// With sinθ = |a×b| / (|a||b|) the factor is k θ / |a×b| (no sin, no square root) away from θ = 0; below
-// 1e-4 rad the series of θ/sinθ over |a||b|.
+// With sinθ = |a×b| / (|a||b|) the factor is k (θ/sinθ) / (|a||b|): below ~5.7° (sin²θ <= 0.01, a·b > 0) by
+// asinOverSin's series (no atan2: a tenth of the 3D evaluation), above as k θ / |a×b| with θ = atan2.
 void BendingSpring::addForces(const SpatialModel& model, const Kinematics3& kin, double t, VecX& Q) const {
   addForcesAndPower(model, kin, t, Q);
 }
@@ -30,11 +39,20 @@ double BendingSpring::addForcesAndPower(const SpatialModel& model, const Kinemat
     double* qa = Q.data() + kDofPerBody3 * (i - 1);
     double* qb = Q.data() + kDofPerBody3 * i;
     if (k != 0.0) {
-      const double ab = a.dot(b), s = a.cross(b).norm(), theta = std::atan2(s, ab);
-      if (theta < M_PI - kFoldedTol) {
-        const double aa = a.squaredNorm(), bb = b.squaredNorm();
-        const double f = theta < 1e-4 ? k * thetaOverSin(theta) / std::sqrt(aa * bb) : k * theta / s;
-        const Vec3 Fa = f * (b - (ab / aa) * a), Fb = f * (a - (ab / bb) * b);
+      const double ab = a.dot(b), ss = a.cross(b).squaredNorm(), aa = a.squaredNorm(), bb = b.squaredNorm();
+      const double r2 = 1.0 / (aa * bb), sin2 = ss * r2;  // 1 / (|a||b|)², sin²θ
+      double f = 0.0;
+      bool bent = true;
+      if (ab > 0.0 && sin2 <= kSeriesSin2) {  // θ below ~5.7°, the usual bend between neighbours
+        f = k * asinOverSin(sin2) * std::sqrt(r2);
+      } else {
+        const double s = std::sqrt(ss), theta = std::atan2(s, ab);
+        bent = theta < M_PI - kFoldedTol;
+        f = k * theta / s;
+      }
+      if (bent) {
+        const double ab_r2 = ab * r2;  // a·b / |a|² = ab_r2 |b|²
+        const Vec3 Fa = f * (b - (ab_r2 * bb) * a), Fb = f * (a - (ab_r2 * aa) * b);
         for (int j = 0; j < 3; ++j) qa[kE + j] += Fa[j], qb[kE + j] += Fb[j];
       }
     }
