@@ -82,33 +82,18 @@ TEST(SpatialTurnedFactor, RigidTurnGivesTheFreshSolve) {
   EXPECT_GT(gap_kept, 0.1 * angle);  // the kept factor alone is off by about the angle: the turn is the fix
 }
 
-// The step-cost bench line (bench/step_cost.cpp: 100 m, EA 1e7 N, EI 1e4 N m², damping 1e4 N s and
-// 1e2 N m² s, 500 kg end mass, released straight 20° off the vertical under a 1 m, 10 s sway) at n = 1000,
-// midpoint with structured solves at h = 1 ms, over the release transient (0.2 s). Kept unturned, the factor
-// went stale as the directors turned: 2.8-2.9 Newton solves per step; turned: 2.0-2.05 (bench runs, the
-// tree before and after). 2.3 separates the two.
+// The step-cost bench line (spatial_test::benchLine) at n = 1000, midpoint with structured solves at h = 1 ms,
+// over the release transient (0.2 s). Kept unturned, the factor went stale as the directors turned: 2.8-2.9
+// Newton solves per step; turned: 2.0-2.06 (bench runs, the tree before and after). 2.3 separates the two.
 constexpr double kTurnedSolvesPerStep = 2.3;
 
 TEST(SpatialTurnedFactor, LongLineKeepsTwoNewtonSolvesPerStep) {
   const int n = 1000;
-  LineProperties props;
-  props.mass_per_length = 10.0;
-  props.EA = 1e7;
-  props.EI = 1e4;
-  props.axial_damping = 1e4;
-  props.bending_damping = 100.0;
-  auto m2 = std::make_shared<Model>(100.0, n, props, ModelOptions(), 500.0, 9.81);
-  auto m3 = std::make_shared<SpatialModel>(100.0, n, props, ModelOptions(), 500.0, Vec3(0, 0, -9.81));
-  m3->addTerm(std::make_unique<spatial::Gravity>());
-  m3->addTerm(std::make_unique<spatial::AxialSpring>());
-  m3->addTerm(std::make_unique<spatial::BendingSpring>());
-  std::vector<double> phi(m2->bodies(), -M_PI / 2 + 20.0 * M_PI / 180.0);
-  const Kinematics kin = spatial_test::planarChain(*m2, Vec2::Zero(), phi);
+  auto m = spatial_test::benchLine(n);
   IntegratorOptions o;
   o.jacobian = JacobianKind::kStructured;
-  SpatialSimulator sim(m3, std::make_unique<PlanarMotion3>(spatial_test::topSway(Vec2(1, 0), 10.0)),
-                       IntegratorKind::kMidpoint, o);
-  sim.reset(fromPlanar(kin), 0.0);
+  SpatialSimulator sim(m, spatial_test::benchSway(), IntegratorKind::kMidpoint, o);
+  sim.reset(spatial_test::benchReleased(*m), 0.0);
   const int steps = 200;
   for (int k = 0; k < steps; ++k) ASSERT_TRUE(sim.step(1e-3)) << sim.integrator().failure();
   const double solves = double(sim.integrator().stats().newton) / steps;
