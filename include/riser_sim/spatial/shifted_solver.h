@@ -78,7 +78,11 @@ class ShiftedSolver3 {
     Mat45 Ri;
     Mat47 RN;
     Vec7 x;                 // solve: x_i's constant part (backward), then x_v,i (forward)
-    Mat7 M;                 // mass (K, C, K_sub, K_sup, C_sub live in S_: K(i, i), C(i, i), rows i / columns i-1)
+    // The mass without added mass, for the solve's M b_v: m I, m_k e, S I; m_k eᵀ, m_k e·e, S_k eᵀ; S I, S_k e,
+    // I_A I (Δ locked: 1 on Δ, no m_k, S_k). The whole 7x7 M lives in M_ (the factor's, and the solve's with
+    // added mass); K, C, K_sub, K_sup, C_sub in S_: K(i, i), C(i, i), rows i / columns i-1.
+    double m = 0.0, mk = 0.0, S = 0.0, Sk = 0.0, I = 0.0;
+    Vec3 e = Vec3::Zero();
     Mat3 Kup, Up;           // e-e: K(i, i+1) = K_sub[i+1]ᵀ + K_sup[i+1] (the right side's coupling to rfe i+1)
     Row3 gE, rE, Gam;       // Baumgarte law of E_i: g δa + p δv + r δq (g = B_E = ∂E/∂q)
     Vec7 gu, ru;            // Baumgarte law of the unit length
@@ -87,6 +91,8 @@ class ShiftedSolver3 {
     Mat73 Xmu;
   };
   void assembleRhs(int blk, const VecX& b, const VecX& b_rates, Vec11& r) const;
+  template <typename V>
+  Vec7 massTimes(int i, const V& v) const;
   const VecX& turnedBack(const VecX& b);
   int blocks() const { return nb_ + (pinned_ ? 1 : 0); }
   // Φ_i v: x_i's dependence on x_{i-1} ([Γ_{i-1} / s; -RN_u]).
@@ -99,6 +105,8 @@ class ShiftedSolver3 {
   const bool axial_;
   bool pinned_ = false;
   AlignedVector<Body> body_;  // nb_ + 1 (the last: the pinned end's block)
+  AlignedVector<Mat7> M_;     // per rfe: the mass, added mass included
+  bool added_ = false;        // the last linearisation had added mass (the solve reads M_)
   SpatialStiffness S_;
   AlignedVector<Mat3> turn_;  // followDirectors' R_i
   bool turning_ = false;

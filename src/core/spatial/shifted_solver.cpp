@@ -102,7 +102,6 @@ ShiftedSolver3::ShiftedSolver3(const SpatialModel& model, double stabilization)
       axial_(model.options().axial_flexibility) {
   body_.resize(nb_ + 1);  // + the pinned end's block (used when the bottom is pinned)
   for (Body& B : body_) {
-    B.M.setZero();
     B.Kup.setZero();
     B.gE = B.pE = B.rE = B.Gam = Row3();
     for (Vec7* v : {&B.gu, &B.pu, &B.ru}) v->setZero();
@@ -115,6 +114,7 @@ ShiftedSolver3::ShiftedSolver3(const SpatialModel& model, double stabilization)
     B.x.setZero();
   }
   S_.resize(nb_);
+  M_.assign(nb_, Mat7::Zero());
   turn_.assign(nb_, Mat3::Identity());
   b_turned_.setZero(2 * (nq_ + nt_));
   t_diag_.assign(nt_, 1.0);
@@ -126,6 +126,7 @@ ShiftedSolver3::ShiftedSolver3(const SpatialModel& model, double stabilization)
 // director multiplier μ on e (force μ e) and the joint force λ_{i+1} at E_i on Δ-e ([λ; e·λ; len λ]).
 void ShiftedSolver3::setLinearization(const NaturalData& d, const Eigen::Ref<const VecX>& acc) {
   pinned_ = model_.bottom() == BottomBoundary::kPinned;  // read per linearisation, as derivative() does
+  added_ = !d.added.empty();
   S_.setZero();
   for (const auto& term : model_.terms()) term->addStiffness(model_, d.kin, d.t, S_);
   const Mat3 I3 = Mat3::Identity();
@@ -139,8 +140,10 @@ void ShiftedSolver3::setLinearization(const NaturalData& d, const Eigen::Ref<con
     const double m = r.mass, mk = r.mass_k, S = r.firstMoment(b.delta), Sk = r.firstMomentK(b.delta);
     const double I = r.inertiaAboutA(b.delta);
     const Vec3& L = d.lambda[i + 1];  // zero at a free end
-    Mat7& M = B.M;
+    Mat7& M = M_[i];
     M.setZero();
+    B.m = m, B.S = S, B.I = I, B.e = b.e;
+    B.mk = axial_ ? mk : 0.0, B.Sk = axial_ ? Sk : 0.0;
     M.block<3, 3>(kA, kA) = m * I3;
     M.block<3, 3>(kA, kE) = S * I3;
     M.block<3, 3>(kE, kA) = S * I3;
@@ -260,7 +263,7 @@ void ShiftedSolver3::factor(double c) {
   Mat7 Phi, W;
   for (int i = nb_ - 1; i >= 0; --i) {
     Body& B = body_[i];
-    W = B.M + c * S_.C_diag[i] + c2 * S_.K_diag[i] + Snext;
+    W = M_[i] + c * S_.C_diag[i] + c2 * S_.K_diag[i] + Snext;
     B.Wt = W.topRows<3>();
     B.Wd = W.block<4, 3>(kDelta3, kA);
     R.topLeftCorner<4, 4>() = W.block<4, 4>(kDelta3, kDelta3);
@@ -317,6 +320,21 @@ void ShiftedSolver3::factor(double c) {
   factored_ = true;
 }
 
+// M_i v: from the rfe's few numbers (the solve reads 64 B per rfe instead of the 7x7 block), or M_ with
+// added mass.
+template <typename V>
+Vec7 ShiftedSolver3::massTimes(int i, const V& v) const {
+  if (added_) return M_[i] * v;
+  const Body& B = body_[i];
+  const Vec3 vA = v.template head<3>(), ve = v.template tail<3>();
+  const double vd = v[kDelta3];
+  Vec7 out;
+  out.head<3>() = B.m * vA + (B.mk * vd) * B.e + B.S * ve;
+  out[kDelta3] = axial_ ? B.mk * B.e.dot(vA) + (B.mk * B.e.squaredNorm()) * vd + B.Sk * B.e.dot(ve) : vd;
+  out.tail<3>() = B.S * vA + (B.Sk * vd) * B.e + B.I * ve;
+  return out;
+}
+
 // Right side of block blk: rows g b_v - c r b_q, then M b_v - c K b_q, then the unit-length row.
 void ShiftedSolver3::assembleRhs(int blk, const VecX& b, const VecX& b_rates, Vec11& r) const {
   const double c = c_, w2 = omega_ * omega_;
@@ -333,7 +351,7 @@ void ShiftedSolver3::assembleRhs(int blk, const VecX& b, const VecX& b_rates, Ve
   Vec7 kq = S_.K_diag[blk] * bq(blk);
   if (blk > 0) kq.tail<3>().noalias() += S_.K_sub[blk] * bq(blk - 1).tail<3>();
   if (blk + 1 < nb_) kq.tail<3>().noalias() += B.Kup * bq(blk + 1).tail<3>();
-  r.segment<7>(3).noalias() = B.M * bv(blk) - c * kq;
+  r.segment<7>(3) = massTimes(blk, bv(blk)) - c * kq;
   r[10] = B.gu.dot(bv(blk)) - c * B.ru.dot(bq(blk));
 }
 
