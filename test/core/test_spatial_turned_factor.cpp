@@ -1,5 +1,5 @@
-// A kept structured factor turned with the line (ShiftedSolver3::followDirectors, docs/spatial.md "The kept
-// factor turns with the line"): exact under a rigid turn of the line, and what it buys on a long line.
+// A kept structured factor turned with the line (ShiftedSolver3::followDirectors; docs/spatial_step_cost.md,
+// "The kept factor turns with the line"): exact under a rigid turn of the line, and what it buys on a long line.
 #include <gtest/gtest.h>
 
 #include <cmath>

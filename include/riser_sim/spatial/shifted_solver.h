@@ -38,7 +38,7 @@ class ShiftedSolver3 {
   // Linearisation at the evaluation d (its kinematics, forces, joint reactions) with its accelerations
   // acc = v' (7 per rfe).
   void setLinearization(const NaturalData& d, const Eigen::Ref<const VecX>& acc);
-  // A kept factor turned with the line (docs/spatial.md, "The kept factor turns with the line"): until the
+  // A kept factor turned with the line (docs/spatial_step_cost.md, "The kept factor turns with the line"): until the
   // next setLinearization(), solve() sees each rfe's director rate, and the rate of A_{i+1} - A_i, turned
   // back by R_i, the smallest rotation taking the linearisation's director e_i to d's (a similarity
   // transform of the kept matrix: its joint and unit-length rows follow the turned directors; the same
