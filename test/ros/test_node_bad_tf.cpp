@@ -66,18 +66,20 @@ TEST(NodeBadTf, RejectedCountedAndLogThrottled) {
   Recorder<riser_sim::Tension> tension(nh, kName + "/tension");
   Recorder<diagnostic_msgs::DiagnosticArray> diag(nh, "/diagnostics");
   enum Phase { kGood, kNan, kZeroQuaternion };
-  std::atomic<int> phase{kGood}, bad_sent{0};
+  std::atomic<int> phase{kGood}, bad_sent{0}, ticks{0};
   ros::WallTimer timer = nh.createWallTimer(ros::WallDuration(0.02), [&](const ros::WallTimerEvent&) {
+    const int p = phase;  // read once: a message built in one phase and counted in another was a flake
     tf2_msgs::TFMessage m;
     m.transforms.resize(1);
     geometry_msgs::TransformStamped& t = m.transforms[0];
     t.header.stamp = ros::Time::now();
     t.header.frame_id = "world";
     t.child_frame_id = "vessel";
-    t.transform.translation.x = phase == kNan ? NAN : 2.0;
-    t.transform.rotation.w = phase == kZeroQuaternion ? 0.0 : 1.0;
+    t.transform.translation.x = p == kNan ? NAN : 2.0;
+    t.transform.rotation.w = p == kZeroQuaternion ? 0.0 : 1.0;
     tf_pub.publish(m);
-    if (phase != kGood) ++bad_sent;
+    if (p != kGood) ++bad_sent;
+    ++ticks;
   });
   ASSERT_TRUE(tension.waitCount(1, 30.0)) << "the node did not start on good tf";
 
@@ -92,6 +94,8 @@ TEST(NodeBadTf, RejectedCountedAndLogThrottled) {
   phase = kZeroQuaternion;
   ASSERT_TRUE(waitFor([&] { return ros::WallTime::now() - t0 > ros::WallDuration(2.0); }, 5.0));
   phase = kGood;
+  const int tick = ticks;  // a tick in flight may still have read a bad phase: two more, and it has counted
+  ASSERT_TRUE(waitFor([&] { return ticks >= tick + 2; }, 5.0));
   const int sent = bad_sent;
   EXPECT_GE(sent, 80);  // 50 Hz for 2 s, whatever the machine's load did to the timer
 
