@@ -47,8 +47,10 @@ add_library(riser_sim_core
   src/core/spatial/model.cpp
   src/core/spatial/kinematics.cpp
   src/core/spatial/natural_formulation.cpp
+  src/core/spatial/joint_reactions.cpp
   src/core/spatial/natural_state.cpp
   src/core/spatial/shifted_solver.cpp
+  src/core/spatial/shifted_linearization.cpp
   src/core/spatial/torsion.cpp
   src/core/spatial/independent_torsion.cpp
   src/core/spatial/simulator.cpp

@@ -128,6 +128,7 @@ class NaturalFormulation {
   double unitGamma(const BodyKinematics3& b) const;  // e·e'' prescribed by the Baumgarte-held |e| = 1
   void denseBody(int i, NaturalData& d) const;
   void closedFormBody(int i, NaturalData& d) const;
+  void jointReactions(NaturalData& d) const;  // joint_reactions.cpp
   static void closedFormAcceleration(const NaturalData::Body& c, const Vec7& f, double* udd);
   const SpatialModel& model_;
   const double omega_;
