@@ -52,6 +52,7 @@ add_library(riser_sim_core
   src/core/spatial/shifted_solver.cpp
   src/core/spatial/shifted_linearization.cpp
   src/core/spatial/torsion.cpp
+  src/core/spatial/bending_axes.cpp
   src/core/spatial/independent_torsion.cpp
   src/core/spatial/simulator.cpp
   src/core/spatial/independent_formulation.cpp

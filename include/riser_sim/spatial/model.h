@@ -53,6 +53,15 @@ class SpatialModel {
   bool hasTorsion() const { return has_torsion_; }
   const TorsionProperties& torsion() const { return torsion_; }
 
+  // Bending stiffness about the rfes' material axes (bending_axes.h): EI_1 about axis 1, EI_2 about axis 2
+  // [N m^2]; the line's EI must be their mean (the isotropic BendingSpring carries it). axis1: axis 1 at the
+  // hang-off at t = 0 (world; its part normal to the top rfe is taken). Needs setTorsion first (the axes turn
+  // with the spin). Throws std::invalid_argument naming what is wrong.
+  void setBendingAxes(double EI1, double EI2, const Vec3& axis1);
+  bool hasBendingAxes() const { return has_axes_; }
+  double bendingSplit() const { return split_; }  // σ = (EI_1 - EI_2) / (2d) [N m/rad]
+  const Vec3& bendingAxis() const { return axis1_; }  // zero without axes
+
   void addTerm(std::unique_ptr<SpatialForceTerm> term);
   const std::vector<std::unique_ptr<SpatialForceTerm>>& terms() const { return terms_; }
 
@@ -65,6 +74,9 @@ class SpatialModel {
   std::vector<std::unique_ptr<SpatialForceTerm>> terms_;
   TorsionProperties torsion_;
   bool has_torsion_ = false;
+  bool has_axes_ = false;
+  double split_ = 0.0;
+  Vec3 axis1_ = Vec3::Zero();
 };
 
 }  // namespace spatial

@@ -60,6 +60,8 @@ struct TwistData {
   std::vector<double> m, mdot, tau;  // per joint k (rfes k, k+1): twist [rad], its rate, moment k m + c m' [N m]
   AlignedVector<Vec3> kb;            // per joint
   std::vector<double> moment;        // per rfe: moment about e_i of the springs and dampers [N m]
+  std::vector<double> bend;          // per rfe: its part from the bending axes (bending_axes.h) [N m]
+  AlignedVector<Vec3> m1;            // per rfe: material axis 1 (a workspace of the bending axes)
   double top_twist = 0.0, top_tau = 0.0;  // top spring: its twist m_t [rad], moment k_t m_t + c_t m_t' [N m]
   void resize(int bodies);
 };
@@ -78,10 +80,12 @@ double twistStiffness(const SpatialModel& model);
 double twistDamping(const SpatialModel& model);
 double polarInertia(const SpatialModel& model, int i);
 
-// Frames at the start: centres at e_i, the hang-off's axis e_0 with a reference ⟂ e_0, the references
-// transported down the line across the joints (so m_ref = 0 at the start).
+// Frames at the start: centres at e_i, the hang-off's axis e_0 with a reference ⟂ e_0 (axis1's part normal to
+// e_0 when given, the material axis 1 of bending_axes.h; else the world axis least aligned with e_0), the
+// references transported down the line across the joints (so m_ref = 0 at the start).
 // The hang-off's frame then is fixed in a holder at attitude I (holdHangOff for another).
-void initTwistFrames(const Kinematics3& kin, TwistFrames& f);
+// Throws std::invalid_argument when axis1 is within 1e-6 rad of e_0.
+void initTwistFrames(const Kinematics3& kin, TwistFrames& f, const Vec3& axis1 = Vec3::Zero());
 // The hang-off's frame as it is now, fixed in a holder whose attitude is now R0 (holder frame -> world).
 void holdHangOff(TwistFrames& f, const Mat3& R0);
 // The hang-off's frame at the holder's attitude R turning at w [rad/s] (world); `held`: rfe 0's chart is the
@@ -102,12 +106,12 @@ Vec3 materialDirector(const TwistFrames& f, int i, const Vec3& e, double theta);
 void twistAngles(const Kinematics3& kin, const double* theta, const TwistFrames& f, double* m, Vec3* kb);
 // Spin rate of rfe 0 held by the hang-off: a(h, e_0)·e'_0 + hangOffSpin.
 double topSpinRate(const Kinematics3& kin, const TwistFrames& f);
-// Twist forces at (kin, θ, ω): adds the e part (twist, hang-off, gyroscopic J ω e × e') to Q (7 per rfe),
+// Twist forces at (kin, θ, ω): adds the e part (twist, hang-off, gyroscopic J ω e × e', the bending axes') to Q,
 // (a free top: θ_0, ω_0 are rfe 0's own, no hang-off part)
 // fills d.m, d.mdot, d.tau, d.kb, d.moment; returns the dampers' power [W] (<= 0).
 double addTwistForces(const SpatialModel& model, const Kinematics3& kin, const double* theta, const double* omega,
                       TwistData& d, VecX& Q);
-// Σ ½ (GJ/d) m_k² [J].
+// Σ ½ (GJ/d) m_k² (+ the top spring's, + the bending axes' part) [J].
 double twistEnergy(const SpatialModel& model, const Kinematics3& kin, const double* theta, TwistData& d);
 
 }  // namespace spatial

@@ -109,7 +109,7 @@ void IndependentFormulation3::packState(const Kinematics3& kin, SphereCharts& ch
   charts.twist.ref.assign(nb, Vec3::Zero());
   charts.twist.mref.assign(nb - 1, 0.0);
   charts.kin = kin;
-  initTwistFrames(kin, charts.twist);
+  initTwistFrames(kin, charts.twist, model_.bendingAxis());
   y.segment(k_ * nb, nt_).setZero();
   y.segment(p + k_ * nb, nt_).setZero();
 }

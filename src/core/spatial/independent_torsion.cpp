@@ -4,7 +4,10 @@
 // Twist: m_k = φ_{k+1} - φ_k + m_ref,k(e_k, e_{k+1}). At fixed φ the frame of rfe i spins by a_i·δe_i beyond
 // the minimal rotation, so ∂m_k/∂e_k = kb_k - a_k and ∂m_k/∂e_{k+1} = kb_k + a_{k+1}; the damper's Rayleigh
 // function ½ (c_GJ/d) m'_k² has the same derivatives in the rates.
+#include <algorithm>
 #include <cmath>
+
+#include "riser_sim/spatial/bending_axes.h"
 
 #include "riser_sim/spatial/independent_formulation.h"
 
@@ -67,9 +70,12 @@ void IndependentFormulation3::addTwistForces(const VecX& y, const SphereCharts& 
     power -= ct * rate * rate + t.top_tau * s;
     d.Q.segment<3>(kE) += t.top_tau * a;
   }
+  std::fill(t.bend.begin(), t.bend.end(), 0.0);
+  addBendingAxesForces(model_, d.kin, d.phi.data(), charts.twist, t.m1, d.Q, t.bend.data());
+  if (s0_ > 0) power -= t.bend[0] * s;  // the holder spins rfe 0's axes: ∂V/∂t
   for (int i = 0; i < nb; ++i) {
     const double ti = i < nj ? t.tau[i] : 0.0, tp = i > 0 ? t.tau[i - 1] : 0.0;
-    t.moment[i] = ti - tp - (i == 0 ? t.top_tau : 0.0);
+    t.moment[i] = ti - tp - (i == 0 ? t.top_tau : 0.0) + t.bend[i];
     Vec3 F = t.moment[i] * d.conn[i];
     if (i < nj) F -= ti * t.kb[i];
     if (i > 0) F -= tp * t.kb[i - 1];
@@ -158,7 +164,8 @@ double IndependentFormulation3::twistEnergy(const VecX& y, const SphereCharts& c
   double v = 0.0;
   for (double m : d.twist.m) v += m * m;
   const double kt = model_.torsion().top_stiffness, mt = kt > 0.0 ? topSpringTwist(kin, d.phi[0], charts.twist) : 0.0;
-  return 0.5 * twistStiffness(model_) * v + 0.5 * kt * mt * mt;
+  return 0.5 * twistStiffness(model_) * v + 0.5 * kt * mt * mt +
+         bendingAxesEnergy(model_, kin, d.phi.data(), charts.twist);
 }
 
 }  // namespace spatial

@@ -3,6 +3,7 @@
 #include "riser_sim/force_term.h"  // the held planar Model destroys its (empty) term list
 #include "riser_sim/spatial/force_term.h"
 
+#include <cmath>
 #include <stdexcept>
 
 namespace riser_sim {
@@ -20,6 +21,18 @@ void SpatialModel::setTorsion(const TorsionProperties& t) {
                                 "the end's polar inertia >= 0");
   torsion_ = t;
   has_torsion_ = true;
+}
+
+void SpatialModel::setBendingAxes(double EI1, double EI2, const Vec3& axis1) {
+  if (!has_torsion_) throw std::invalid_argument("bending axes: need torsion (the material axes turn with the spin)");
+  if (!(EI1 > 0.0 && EI2 > 0.0)) throw std::invalid_argument("bending axes: EI_1 and EI_2 must be > 0");
+  const double mean = 0.5 * (EI1 + EI2), EI = line_.line().EI;
+  if (!(std::abs(EI - mean) <= 1e-12 * mean))
+    throw std::invalid_argument("bending axes: the line's EI must be the mean of EI_1 and EI_2");
+  if (!(axis1.allFinite() && axis1.norm() > 0.0)) throw std::invalid_argument("bending axes: axis 1 must be finite, not 0");
+  has_axes_ = true;
+  split_ = line_.options().bending ? 0.5 * (EI1 - EI2) / line_.segmentLength() : 0.0;
+  axis1_ = axis1.normalized();
 }
 
 void SpatialModel::setBottomMotion(std::shared_ptr<const TopMotion3> motion) {

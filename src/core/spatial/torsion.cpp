@@ -1,8 +1,12 @@
 #include "riser_sim/spatial/torsion.h"
 
+#include <algorithm>
 #include <cmath>
 
+#include "riser_sim/spatial/bending_axes.h"
 #include "riser_sim/spatial/model.h"
+
+#include <stdexcept>
 
 namespace riser_sim {
 namespace spatial {
@@ -32,6 +36,8 @@ void TwistData::resize(int bodies) {
   tau.assign(nj, 0.0);
   kb.assign(nj, Vec3::Zero());
   moment.assign(bodies, 0.0);
+  bend.assign(bodies, 0.0);
+  m1.assign(bodies, Vec3::Zero());
 }
 
 double twistStiffness(const SpatialModel& model) { return model.torsion().stiffness / model.line().segmentLength(); }
@@ -49,13 +55,15 @@ double polarInertia(const SpatialModel& model, int i) {
   return t.polar_inertia * model.rfe(i).length + (i == model.bodies() - 1 ? t.end_polar_inertia : 0.0);
 }
 
-void initTwistFrames(const Kinematics3& kin, TwistFrames& f) {
+void initTwistFrames(const Kinematics3& kin, TwistFrames& f, const Vec3& axis1) {
   const int nb = int(kin.size());
   const Vec3 n0 = dir(kin[0]);
   int axis = 0;  // the world axis least aligned with e_0
   n0.cwiseAbs().minCoeff(&axis);
   f.centre[0] = n0;
-  f.ref[0] = unitPerp(Vec3::Unit(axis), n0);
+  if (axis1.squaredNorm() > 0.0 && !(axis1.cross(n0).norm() > 1e-6 * axis1.norm()))
+    throw std::invalid_argument("the bending axis 1 lies along the top rfe: no material frame");
+  f.ref[0] = unitPerp(axis1.squaredNorm() > 0.0 ? axis1 : Vec3::Unit(axis), n0);
   for (int i = 1; i < nb; ++i) {
     const Vec3 np = dir(kin[i - 1]), n = dir(kin[i]);
     f.centre[i] = n;
@@ -153,8 +161,11 @@ double addTwistForces(const SpatialModel& model, const Kinematics3& kin, const d
     power -= ct * rate * rate + d.top_tau * s;
     Q.segment<3>(kE) += d.top_tau * a;
   }
+  std::fill(d.bend.begin(), d.bend.end(), 0.0);
+  addBendingAxesForces(model, kin, theta, d.frames, d.m1, Q, d.bend.data());
+  if (held) power -= d.bend[0] * s;  // the holder spins rfe 0's axes: ∂V/∂t
   for (int i = 0; i < nb; ++i) {
-    d.moment[i] = (i < nj ? d.tau[i] : 0.0) - (i > 0 ? d.tau[i - 1] : 0.0) - (i == 0 ? d.top_tau : 0.0);
+    d.moment[i] = (i < nj ? d.tau[i] : 0.0) - (i > 0 ? d.tau[i - 1] : 0.0) - (i == 0 ? d.top_tau : 0.0) + d.bend[i];
     Vec3 qe = Vec3::Zero();
     if (i < nj) qe -= d.tau[i] * d.kb[i];
     if (i > 0) qe -= d.tau[i - 1] * d.kb[i - 1];
@@ -172,12 +183,8 @@ double twistEnergy(const SpatialModel& model, const Kinematics3& kin, const doub
   twistAngles(kin, theta, d.frames, d.m.data(), d.kb.data());
   double v = 0.0;
   for (double m : d.m) v += m * m;
-  const double kt = model.torsion().top_stiffness;
-  if (kt > 0.0) {
-    const double mt = topSpringTwist(kin, theta[0], d.frames);
-    return 0.5 * twistStiffness(model) * v + 0.5 * kt * mt * mt;
-  }
-  return 0.5 * twistStiffness(model) * v;
+  const double kt = model.torsion().top_stiffness, mt = kt > 0.0 ? topSpringTwist(kin, theta[0], d.frames) : 0.0;
+  return 0.5 * twistStiffness(model) * v + 0.5 * kt * mt * mt + bendingAxesEnergy(model, kin, theta, d.frames);
 }
 
 }  // namespace spatial
