@@ -43,6 +43,7 @@ add_library(riser_sim_core
   src/core/spatial/run_builder.cpp
   src/core/spatial/external_motion3.cpp
   src/core/spatial/initial_state.cpp
+  src/core/spatial/initial_twist.cpp
   src/core/spatial/forces/end_load.cpp
   src/core/spatial/model.cpp
   src/core/spatial/kinematics.cpp

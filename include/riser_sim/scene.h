@@ -76,6 +76,14 @@ struct TorsionSpec {
   bool free_top = false;           // top.torsion: free (the hang-off leaves the spin free)
 };
 
+// line.EI: [EI_1, EI_2] with line.bending_axis (space: spatial, line.torsion): bending stiffness about the rfes'
+// two material axes (spatial/bending_axes.h); LineProperties::EI holds their mean.
+struct BendingAxesSpec {
+  bool enabled = false;
+  double EI1 = 0.0, EI2 = 0.0;  // about axis 1, about axis 2 = e × axis 1 [N m^2]
+  Eigen::Vector3d axis = Eigen::Vector3d::Zero();  // axis 1 at the hang-off at t = 0 (world; its part normal to the top rfe)
+};
+
 struct HydroSpec {
   bool enabled = false;
   double drag_tangential = 0.0;      // D_ξ
@@ -93,6 +101,7 @@ struct Scene {
   ModelOptions options;
   double end_mass = 0.0;  // line.end_mass [kg]
   TorsionSpec torsion;    // line.torsion
+  BendingAxesSpec bending_axes;  // line.EI: [EI_1, EI_2], line.bending_axis
   double gravity = 9.81;  // environment.gravity [m/s^2]
   TopMotionSpec top;
   FlexJointSpec top_flex_joint;  // top.flex_joint (3D)

@@ -32,6 +32,37 @@ namespace {
 
 // ---- sections ----
 
+// line.EI: [EI_1, EI_2]: the stiffness about the two material axes (3D, with line.bending_axis and
+// line.torsion: checked by parseBendingAxes once those are read); LineProperties::EI gets their mean.
+void parseBendingAxesEI(const Section& line, Scene& s) {
+  const std::string key = line.key("EI");
+  const YAML::Node ei = line.at("EI");
+  if (ei.size() != 2) throw SceneError(key, "expected a number or [EI_1, EI_2] (about two material axes), got " + describe(ei));
+  if (s.space != SpaceKind::kSpatial)
+    throw SceneError(key, "[EI_1, EI_2] needs space: spatial (the planar core bends in its plane only)");
+  if (!s.options.bending) throw SceneError(key, "[EI_1, EI_2] contradicts line.bending: false");
+  BendingAxesSpec& b = s.bending_axes;
+  b.enabled = true;
+  b.EI1 = toNumber(ei[0], key + "[0]");
+  b.EI2 = toNumber(ei[1], key + "[1]");
+  requirePositive(key + "[0]", b.EI1);
+  requirePositive(key + "[1]", b.EI2);
+  s.line.EI = 0.5 * (b.EI1 + b.EI2);
+}
+
+// line.bending_axis: axis 1 of line.EI: [EI_1, EI_2] at the hang-off (needs both and line.torsion).
+void parseBendingAxes(const Section& line, Scene& s) {
+  BendingAxesSpec& b = s.bending_axes;
+  if (line.has("bending_axis") && !b.enabled)
+    throw SceneError(line.key("bending_axis"), "needs line.EI: [EI_1, EI_2] (the stiffness about the two axes)");
+  if (!b.enabled) return;
+  if (!s.torsion.enabled)
+    throw SceneError(line.key("EI"), "[EI_1, EI_2] needs line.torsion (the material axes turn with the line's spin)");
+  b.axis = line.vec3("bending_axis", false);
+  if (!(b.axis.allFinite() && b.axis.norm() > 0.0))
+    throw SceneError(line.key("bending_axis"), "must be a non-zero direction [x, y, z] (material axis 1 at the hang-off)");
+}
+
 // line: geometry + material, or EA / EI / mass_per_length directly (never both).
 void parseCrossSection(const Section& line, Scene& s) {
   const bool geometry = line.has("youngs_modulus") || line.has("density");
@@ -81,8 +112,12 @@ void parseCrossSection(const Section& line, Scene& s) {
     s.line.EA = s.options.axial_flexibility ? line.number("EA") : line.number("EA", 0.0);
     if (s.options.axial_flexibility) requirePositive(line.key("EA"), s.line.EA);
     requireNonNegative(line.key("EA"), s.line.EA);
-    s.line.EI = s.options.bending ? line.number("EI") : line.number("EI", 0.0);
-    requireNonNegative(line.key("EI"), s.line.EI);
+    if (line.has("EI") && line.at("EI").IsSequence()) {
+      parseBendingAxesEI(line, s);
+    } else {
+      s.line.EI = s.options.bending ? line.number("EI") : line.number("EI", 0.0);
+      requireNonNegative(line.key("EI"), s.line.EI);
+    }
   }
 }
 
@@ -114,7 +149,7 @@ void parseLine(const Section& root, Scene& s) {
   const Section line = root.section(
       "line", {"length", "elements", "outer_diameter", "inner_diameter", "youngs_modulus", "density", "EA", "EI",
                "mass_per_length", "end_mass", "bending", "axial_flexibility", "axial_damping", "axial_damping_ratio",
-               "bending_damping", "torsion"});
+               "bending_damping", "torsion", "bending_axis"});
   s.length = line.number("length");
   requirePositive(line.key("length"), s.length);
   s.elements = line.integer("elements");
@@ -141,6 +176,7 @@ void parseLine(const Section& root, Scene& s) {
   s.end_mass = line.number("end_mass", 0.0);
   requireNonNegative(line.key("end_mass"), s.end_mass);
   parseTorsion(line, s);
+  parseBendingAxes(line, s);
 }
 
 void parseInitial(const Section& root, Scene& s) {

@@ -45,8 +45,11 @@ struct SpatialModalResult {
 
 // Modes about `equilibrium` (zero velocities); a pinned end held (the modes in the null space of its Jacobian,
 // the anchor's force a dead load). Throws std::runtime_error when the eigen-solve fails.
+// material_axes (torsion on, given and not empty): the equilibrium's spins as each rfe's material axis 1 (a line
+// twisted by bending axes, statics.h); else untwisted.
 SpatialModalResult computeSpatialModes(const SpatialModel& model, const Kinematics3& equilibrium,
-                                       const SpatialModalOptions& options = SpatialModalOptions());
+                                       const SpatialModalOptions& options = SpatialModalOptions(),
+                                       const AlignedVector<Vec3>* material_axes = nullptr);
 
 }  // namespace spatial
 }  // namespace riser_sim

@@ -77,6 +77,11 @@ struct InitialState3 {
   Vec3 plane_direction = Vec3::UnitX();  // horizontal unit vector of the statics' plane
   double max_acceleration = 0.0;  // largest |acceleration| of a joint or the end at rest [m/s^2]
   double acceleration_bound = 0.0;
+  // Torsion on: the largest |moment about e_i| on a free spin at rest [N m] and its bound; with bending axes
+  // (line.EI: [EI_1, EI_2]) bent between them, each rfe's material axis 1 (the spins; empty: untwisted).
+  double max_twist_moment = 0.0;
+  double twist_moment_bound = 0.0;
+  AlignedVector<Vec3> material_axes;
 };
 
 // The initial state (initial_state.cpp). The scene without its waves: what the statics and the equilibrium check see (the current stays, steady at t = 0).
@@ -85,6 +90,11 @@ Scene stillWater(const Scene& scene);
 // at rest (velocities ignored), with end_force on the end (free bottom) or the end pinned where kin puts it;
 // `where` gets the rfe. ~0 for an equilibrium: solveInitialState3's check.
 double restAcceleration(const Scene& scene, const Kinematics3& kin, const Vec3& end_force, const Vec3& top, int& where);
+// The same check with the spins (torsion on): the material axes 1 per rfe (empty: untwisted; a held rfe 0 has the
+// hang-off's frame made at kin); `moment` gets the largest |moment about e_i| on a free spin [N m], `moment_where`
+// its rfe.
+double restAcceleration(const Scene& scene, const Kinematics3& kin, const Vec3& end_force, const Vec3& top,
+                        const AlignedVector<Vec3>& material_axes, int& where, double& moment, int& moment_where);
 
 // The scene's initial state with A_0 at top. Throws std::runtime_error("initial: ...") when the statics
 // fail, the problem is not planar, or the rotated state is not an equilibrium of the 3D model.

@@ -10,21 +10,29 @@ namespace spatial {
 // The finite-difference step of the statics and of the modes (modal.h).
 struct SpatialModalOptions {
   double fd_step = 1e-6;  // central-difference step: chart units (~rad) for u, x segment length for Δ
+  // spatialEquilibrium, spatialEquilibriumHeldEnd: settle in a stable equilibrium. Plain Newton finds any (a line bent about its stiff axis
+  // is one); with this each step's K is shifted by σ M until it is positive definite on the motions the ends
+  // allow (Cholesky), σ = 0 near a stable equilibrium, and the one found is checked stable (else it throws).
+  bool stable = false;
 };
 
 // Static equilibrium of the line at rest hanging from A_0 = guess[0].A: Newton on Q_θ = 0 with the
 // finite-difference K, from the guess's directions and Δ (its joints are closed from A_0); a pinned end held
 // at bottomPoint() with its force as a multiplier. Throws std::runtime_error when it does not reach a residual
 // of 1e-12 of the weight (and an end gap of 1e-12 of the length) in `iterations`.
+// Torsion on, material_axes given: in, the guess's material axis 1 per rfe (its spins; empty: untwisted); out,
+// the equilibrium's (torsion.h: frame-free). The hang-off's frame is the one initTwistFrames makes at the guess.
 Kinematics3 spatialEquilibrium(const SpatialModel& model, const Kinematics3& guess, int iterations = 20,
-                               const SpatialModalOptions& options = SpatialModalOptions());
+                               const SpatialModalOptions& options = SpatialModalOptions(),
+                               AlignedVector<Vec3>* material_axes = nullptr);
 // Static equilibrium of a free end whose horizontal position is held at `xy` [m] by a horizontal force: Newton
 // on Q_θ + Φᵀ F = 0 with the gap E_xy - xy as a constraint and F = (F_x, F_y, 0) its multiplier (a dead load:
 // its geometric stiffness in K), from `guess` and `force` (in: the first guess of F; out: F [N], the force on
 // the line's end). Throws std::runtime_error when it does not reach a residual of 1e-12 of the weight and a
 // gap of 1e-12 of the length in `iterations`.
 Kinematics3 spatialEquilibriumHeldEnd(const SpatialModel& model, const Kinematics3& guess, const Vec2& xy, Vec3& force,
-                                      int iterations = 30, const SpatialModalOptions& options = SpatialModalOptions());
+                                      int iterations = 30, const SpatialModalOptions& options = SpatialModalOptions(),
+                                      AlignedVector<Vec3>* material_axes = nullptr);
 
 }  // namespace spatial
 }  // namespace riser_sim

@@ -102,6 +102,9 @@ void refreshTwistBranches(const Kinematics3& kin, TwistFrames& f, int first = 1)
 // Material director of rfe i: its reference at unit e turned by θ about e (frame-independent; for comparing
 // formulations with different charts).
 Vec3 materialDirector(const TwistFrames& f, int i, const Vec3& e, double theta);
+// Spin angles θ_i [rad] turning each rfe's reference at kin (frames f) onto the material axis m1[i] (unit, ⟂ e_i):
+// materialDirector's inverse.
+void spinsFromAxes(const Kinematics3& kin, const TwistFrames& f, const AlignedVector<Vec3>& m1, double* theta);
 // m_k and kb_k per joint at (kin, θ), unwrapped against f.mref.
 void twistAngles(const Kinematics3& kin, const double* theta, const TwistFrames& f, double* m, Vec3* kb);
 // Spin rate of rfe 0 held by the hang-off: a(h, e_0)·e'_0 + hangOffSpin.

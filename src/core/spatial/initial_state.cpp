@@ -12,6 +12,7 @@
 #include "riser_sim/spatial/relaxation.h"
 #include "riser_sim/spatial/run_builder.h"
 #include "riser_sim/statics.h"
+#include "initial_twist.h"
 
 namespace riser_sim {
 namespace spatial {
@@ -65,6 +66,14 @@ CurrentSpec planarCurrent(const CurrentSpec& c, const Vec2& u, double& across) {
   return p;
 }
 
+// line.bending_axis must leave a direction across the top rfe to measure the spin from.
+void checkBendingAxis(const Scene& scene, const Kinematics3& kin) {
+  const Vec3& a = scene.bending_axes.axis;
+  if (scene.bending_axes.enabled && !(a.normalized().cross(kin[0].e.normalized()).norm() > 1e-6))
+    throw std::runtime_error("line.bending_axis: lies along the top rfe at t = 0 (within 1e-6 rad): give material "
+                             "axis 1 across the line");
+}
+
 }  // namespace
 
 Scene stillWater(const Scene& scene) {
@@ -74,8 +83,14 @@ Scene stillWater(const Scene& scene) {
   return s;
 }
 
+double restAcceleration(const Scene& scene, const Kinematics3& kin, const Vec3& end_force, const Vec3& top, int& where) {
+  double moment = 0.0;
+  int moment_where = 0;
+  return restAcceleration(scene, kin, end_force, top, AlignedVector<Vec3>(), where, moment, moment_where);
+}
+
 double restAcceleration(const Scene& scene, const Kinematics3& kin, const Vec3& end_force, const Vec3& top,
-                        int& where) {
+                        const AlignedVector<Vec3>& material_axes, int& where, double& moment, int& moment_where) {
   std::shared_ptr<SpatialModel> model = buildSpatialModel(stillWater(scene));
   if (scene.bottom == BottomBoundary::kPinned) model->setBottom(BottomBoundary::kPinned, kin.back().end());
   if (end_force.squaredNorm() > 0.0 && scene.bottom != BottomBoundary::kPinned)
@@ -85,7 +100,13 @@ double restAcceleration(const Scene& scene, const Kinematics3& kin, const Vec3& 
   const int nq = f.positionSize();  // the velocities' offset (torsion adds θ to q)
   VecX y = VecX::Zero(2 * nq), dy = VecX::Zero(2 * nq);
   f.packState(kin, y);
-  f.initTwist(y, *data);  // untwisted: no twist forces
+  f.initTwist(y, *data);  // untwisted unless the material axes say otherwise
+  const int first = model->hasTorsion() ? firstSpin(*model) : model->bodies();
+  if (!material_axes.empty() && model->hasTorsion()) {
+    VecX theta(model->bodies());
+    spinsFromAxes(kin, data->twist.frames, material_axes, theta.data());  // a held rfe 0 keeps the hang-off's
+    for (int i = first; i < model->bodies(); ++i) y[model->dofs() + i] = theta[i];
+  }
   f.derivative(0.0, y, PointMotion3{top, Vec3::Zero(), Vec3::Zero()}, dy, *data);
   double amax = 0.0;
   where = 0;
@@ -96,6 +117,10 @@ double restAcceleration(const Scene& scene, const Kinematics3& kin, const Vec3& 
     const double a = std::max(aA.norm(), aE.norm());
     if (!(a <= amax)) amax = a, where = i;  // a NaN wins
   }
+  moment = 0.0;
+  moment_where = 0;
+  for (int i = first; i < model->bodies(); ++i)
+    if (!(std::abs(data->twist.moment[i]) <= moment)) moment = std::abs(data->twist.moment[i]), moment_where = i;
   return amax;
 }
 
@@ -130,6 +155,9 @@ InitialState3 solveInitialState3(const Scene& scene, const Vec3& top) {
   // The planar scene in that plane: x along u from the top, y_up = z.
   Scene ps = scene;
   ps.space = SpaceKind::kPlanar;
+  bool principal = true;  // bending axes: the plane's bend is about one of them (else the 3D Newton twists it)
+  if (scene.bending_axes.enabled) ps.line.EI = detail::planarBendingStiffness(scene, normal, principal);
+  ps.bending_axes = BendingAxesSpec();
   ps.top = TopMotionSpec();
   ps.top.position = Vec2(0.0, top.z());
   ps.initial.end_dx = scene.initial.end_offset.norm();
@@ -147,6 +175,7 @@ InitialState3 solveInitialState3(const Scene& scene, const Vec3& top) {
   if (kind == InitialKind::kStraight) {
     init.kin = fromPlanar(straightLine(*planar, ps.top.position, scene.initial.angle), R, origin);
     init.equilibrium = false;
+    checkBendingAxis(scene, init.kin);
     init.about = "straight line (not an equilibrium)";
     init.statics.converged = true;
     init.statics.message = init.about;
@@ -226,11 +255,33 @@ InitialState3 solveInitialState3(const Scene& scene, const Vec3& top) {
                  " s, " + std::to_string(r.steps) + " steps)";
     init.max_acceleration = restAcceleration(scene, init.kin, init.end_force, top, where);
   }
+  // The spins at rest (torsion on): a moment on a free spin is a residual as a force is, bounded as the 3D
+  // statics' moment rows are, relative to weight x length (100x initial.tolerance, plus round-off).
+  checkBendingAxis(scene, init.kin);
+  init.twist_moment_bound = (100.0 * scene.initial.tolerance + 1e-12) * W * L;
+  int moment_where = 0;
+  const auto atRest = [&] {
+    init.max_acceleration = restAcceleration(scene, init.kin, init.end_force, top, init.material_axes, where,
+                                             init.max_twist_moment, moment_where);
+    return init.max_acceleration <= init.acceleration_bound && init.max_twist_moment <= init.twist_moment_bound;
+  };
+  // Bending axes: a line bent between them twists (and leaves the plane): Newton in 3D with the spins.
+  if (!atRest() && scene.bending_axes.enabled) {
+    const bool end_held = kind == InitialKind::kDisplaced && !free_hang;
+    detail::twistedEquilibrium(scene, end_held, top.head<2>() + scene.initial.end_offset, init);
+    init.about += std::string("; ") + (principal ? "" : "bent between the bending axes: ") +
+                  "then Newton in 3D with the spins (the line twists)";
+    atRest();
+  }
   if (!(init.max_acceleration <= init.acceleration_bound))
     throw std::runtime_error("initial: the " + std::string(name(kind)) + " equilibrium rotated into 3D is not an "
                              "equilibrium of the 3D model: acceleration " + fmt(init.max_acceleration) +
                              " m/s^2 at rest at rfe " + std::to_string(where) + " (bound " +
                              fmt(init.acceleration_bound) + " m/s^2 from initial.tolerance)");
+  if (!(init.max_twist_moment <= init.twist_moment_bound))
+    throw std::runtime_error("initial: the " + std::string(name(kind)) + " equilibrium is not at rest in twist: " +
+                             fmt(init.max_twist_moment) + " N m about rfe " + std::to_string(moment_where) +
+                             "'s axis (bound " + fmt(init.twist_moment_bound) + " N m from initial.tolerance)");
   return init;
 }
 

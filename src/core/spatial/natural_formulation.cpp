@@ -20,7 +20,7 @@ NaturalData::NaturalData(const SpatialModel& model, bool dense_path) : kin(model
   Q.setZero(model.dofs());
   h.setZero(model.dofs());
   acc.setZero(model.dofs());
-  dy.setZero(2 * model.dofs());
+  dy.setZero(2 * (model.dofs() + (model.hasTorsion() ? nb : 0)));  // [q; θ; v; ω] (linearize's evaluation)
   body.resize(nb);
   if (dense_path) dense.resize(nb);
   diag.assign(nc, Mat3::Zero());

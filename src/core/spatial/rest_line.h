@@ -16,7 +16,8 @@ namespace detail {
 // (the right side at θ' = 0, where the velocity and top terms vanish), M_θ and the FD stiffness.
 class RestLine {
  public:
-  RestLine(const SpatialModel& model, const Kinematics3& kin, double fd_step)
+  // axes (torsion on, when given and not empty): the guess's material axes 1 per rfe, its spins (else untwisted).
+  RestLine(const SpatialModel& model, const Kinematics3& kin, double fd_step, const AlignedVector<Vec3>* axes = nullptr)
       : f_(model), data_(f_.makeData()), p_(f_.positionSize()), fd_step_(fd_step) {
     top_.p = kin[0].A;
     Kinematics3 rest = kin;
@@ -24,6 +25,11 @@ class RestLine {
     y_.setZero(2 * p_);
     dy_.setZero(2 * p_);
     f_.packState(rest, charts_, y_);  // charts centred on kin's directors: u = 0
+    if (axes && !axes->empty() && model.hasTorsion()) {
+      VecX spins(model.bodies());
+      spinsFromAxes(rest, charts_.twist, *axes, spins.data());
+      f_.setSpins(spins, VecX::Zero(model.bodies()), y_);
+    }
     theta_ = y_.head(p_);
   }
   int size() const { return p_; }
@@ -90,6 +96,13 @@ class RestLine {
     Kinematics3 kin(model.bodies());
     f_.kinematics(y_, charts_, top_, kin);
     return kin;
+  }
+  // Torsion on: material axis 1 of every rfe at θ (world, unit; frame-free: the spins' result); else untouched.
+  void materialAxes(const VecX& theta, const SpatialModel& model, AlignedVector<Vec3>* axes) {
+    if (!axes || !model.hasTorsion()) return;
+    const Kinematics3 kin = kinematics(theta, model);
+    axes->resize(model.bodies());
+    for (int i = 0; i < model.bodies(); ++i) (*axes)[i] = f_.materialDirector(y_, charts_, kin, i);
   }
 
  private:

@@ -144,6 +144,8 @@ std::shared_ptr<SpatialModel> buildSpatialModel(const Scene& scene) {
                                         scene.top_flex_joint.torsional_stiffness,
                                         scene.top_flex_joint.torsional_damping});
   }
+  if (scene.bending_axes.enabled)
+    model->setBendingAxes(scene.bending_axes.EI1, scene.bending_axes.EI2, scene.bending_axes.axis);
   return model;
 }
 
@@ -215,6 +217,12 @@ SpatialRun::SpatialRun(const Scene& scene, RunInputs3 inputs)
   sim_ = std::make_unique<SpatialSimulator>(model_, motion, scene.solver.integrator, io,
                                             scene.solver.stabilization);
   sim_->reset(initial_.kin, 0.0);
+  if (!initial_.material_axes.empty()) {  // the spins of an equilibrium twisted by the bending axes
+    const int nb = model_->bodies();
+    VecX theta(nb);
+    spinsFromAxes(initial_.kin, sim_->lastEvaluation().twist.frames, initial_.material_axes, theta.data());
+    sim_->setTwist(theta, VecX::Zero(nb));
+  }
   sim_->estimateStability();
   const int nb = model_->bodies();
   out_.points.resize(nb + 1);

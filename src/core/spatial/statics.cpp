@@ -1,5 +1,6 @@
 #include "riser_sim/spatial/statics.h"
 
+#include <Eigen/Cholesky>
 #include <Eigen/LU>
 #include <Eigen/QR>
 #include <algorithm>
@@ -14,9 +15,44 @@ namespace spatial {
 
 using detail::RestLine;
 
+namespace {
+
+// Z: an orthonormal basis of the motions the constraint rows C allow (C Z = 0; C empty: the identity).
+MatX tangent(const MatX& C, int p) {
+  if (C.rows() == 0) return MatX::Identity(p, p);
+  Eigen::HouseholderQR<MatX> qr(C.transpose());
+  return MatX(qr.householderQ()).rightCols(p - C.rows());
+}
+
+bool positiveDefinite(const MatX& A) { return Eigen::LLT<MatX>(0.5 * (A + A.transpose())).info() == Eigen::Success; }
+
+// The least σ in {0, s, 4s, 16s, ...} (s = 1e-6 of K's stiffest diagonal over M's heaviest) that makes K + σ M
+// positive definite on the motions C allows: a Newton step with it goes downhill in the energy, so the
+// iteration is pushed off a saddle (an unstable equilibrium) and settles in a stable one; σ = 0 near one.
+double stabilizingShift(const MatX& K, const MatX& M, const MatX& C) {
+  const MatX Z = tangent(C, int(K.rows()));
+  const MatX Kr = Z.transpose() * K * Z, Mr = Z.transpose() * M * Z;
+  if (positiveDefinite(Kr)) return 0.0;
+  double sigma = 1e-6 * K.diagonal().cwiseAbs().maxCoeff() / M.diagonal().cwiseAbs().maxCoeff();
+  for (int k = 0; k < 60 && !positiveDefinite(Kr + sigma * Mr); ++k) sigma *= 4.0;
+  return sigma;
+}
+
+// Throws unless K is positive definite on the motions C allows (a rigid spin of a free top, neutral, passes at
+// 1e-9 of the stiffest diagonal).
+void requireStable(const MatX& K, const MatX& M, const MatX& C) {
+  const MatX Z = tangent(C, int(K.rows()));
+  const double neutral = 1e-9 * K.diagonal().cwiseAbs().maxCoeff() / M.diagonal().cwiseAbs().maxCoeff();
+  if (!positiveDefinite(Z.transpose() * (K + neutral * M) * Z))
+    throw std::runtime_error("the equilibrium found is unstable (its stiffness is negative in some motion the ends "
+                             "allow)");
+}
+
+}  // namespace
+
 Kinematics3 spatialEquilibrium(const SpatialModel& model, const Kinematics3& guess, int iterations,
-                               const SpatialModalOptions& options) {
-  RestLine line(model, guess, options.fd_step);
+                               const SpatialModalOptions& options, AlignedVector<Vec3>* material_axes) {
+  RestLine line(model, guess, options.fd_step, material_axes);
   VecX theta = line.theta();
   const bool pinned = model.bottom() == BottomBoundary::kPinned;
   const double gap_tol = 1e-12 * model.line().length();
@@ -29,33 +65,60 @@ Kinematics3 spatialEquilibrium(const SpatialModel& model, const Kinematics3& gue
   auto solve = [free_spin](const MatX& A, const VecX& b) -> VecX {
     return free_spin ? VecX(A.completeOrthogonalDecomposition().solve(b)) : VecX(A.partialPivLu().solve(b));
   };
+  // Pinned: the anchor's force λ a multiplier whose geometric stiffness is in K (a dead load at fixed λ):
+  // Q + Φᵀ λ - K_λ δ + Φᵀ Δλ = 0, E_n - p_b + Φ δ = 0. Steps halved (to 1/64) until residual + gap / L falls.
+  Vec3 lambda = pinned ? line.anchorForce(theta, model) : Vec3::Zero();
+  const double L = model.line().length();
+  auto merit = [&] { return line.residual(theta, model) + (pinned ? line.endGap(theta, model).norm() / L : 0.0); };
   for (int it = 0; it < iterations; ++it) {
-    if (converged()) return line.kinematics(theta, model);
-    const MatX K = line.stiffness(theta, model);
-    if (!pinned) {
-      theta += solve(K, VecX(line.forces(theta)));  // Q(θ + δ) ≈ Q - K δ = 0
-      continue;
+    if (converged()) {
+      if (options.stable)
+        requireStable(line.stiffness(theta, model, lambda), line.mass(theta),
+                      pinned ? line.endJacobian(theta) : MatX(0, p));
+      line.materialAxes(theta, model, material_axes);
+      return line.kinematics(theta, model);
     }
-    // Pinned: Q - K δ + Φᵀ ν = 0 (ν: the anchor's force beyond the model's), E_n - p_b + Φ δ = 0.
-    const MatX Phi = line.endJacobian(theta);
-    MatX A = MatX::Zero(p + 3, p + 3);
-    A.topLeftCorner(p, p) = K;
-    A.topRightCorner(p, 3) = -Phi.transpose();
-    A.bottomLeftCorner(3, p) = Phi;
-    VecX b(p + 3);
-    b.head(p) = line.forces(theta);
-    b.tail(3) = -line.endGap(theta, model);
-    theta += solve(A, b).head(p);
+    MatX K = line.stiffness(theta, model, lambda);
+    if (options.stable) {
+      const MatX M = line.mass(theta);
+      K += stabilizingShift(K, M, pinned ? line.endJacobian(theta) : MatX(0, p)) * M;
+    }
+    VecX x;
+    if (!pinned) {
+      x = solve(K, VecX(line.forces(theta)));  // Q(θ + δ) ≈ Q - K δ = 0
+    } else {
+      const MatX Phi = line.endJacobian(theta);
+      MatX A = MatX::Zero(p + 3, p + 3);
+      A.topLeftCorner(p, p) = K;
+      A.topRightCorner(p, 3) = -Phi.transpose();
+      A.bottomLeftCorner(3, p) = Phi;
+      VecX b(p + 3);
+      b.head(p) = line.loaded(theta, lambda);
+      b.tail(3) = -line.endGap(theta, model);
+      x = solve(A, b);
+    }
+    const double merit0 = merit();
+    const VecX theta0 = theta;
+    const Vec3 lambda0 = lambda;
+    for (double a = 1.0;; a *= 0.5) {
+      theta = theta0 + a * x.head(p);
+      if (pinned) lambda = lambda0 + a * x.tail<3>();
+      if (a < 1.0 / 64.0 || merit() < merit0) break;
+    }
   }
-  if (converged()) return line.kinematics(theta, model);
+  if (converged()) {
+    line.materialAxes(theta, model, material_axes);
+    return line.kinematics(theta, model);
+  }
   throw std::runtime_error("spatialEquilibrium: Newton did not converge");
 }
 
 Kinematics3 spatialEquilibriumHeldEnd(const SpatialModel& model, const Kinematics3& guess, const Vec2& xy, Vec3& force,
-                                      int iterations, const SpatialModalOptions& options) {
+                                      int iterations, const SpatialModalOptions& options,
+                                      AlignedVector<Vec3>* material_axes) {
   if (model.bottom() == BottomBoundary::kPinned)
     throw std::invalid_argument("spatialEquilibriumHeldEnd: a free end only (a pinned one is held in full)");
-  RestLine line(model, guess, options.fd_step);
+  RestLine line(model, guess, options.fd_step, material_axes);
   VecX theta = line.theta();
   const int p = line.size();
   Eigen::Matrix<double, 3, 2> P = Eigen::Matrix<double, 3, 2>::Zero();  // λ = P ν: horizontal
@@ -74,13 +137,20 @@ Kinematics3 spatialEquilibriumHeldEnd(const SpatialModel& model, const Kinematic
   };
   for (int it = 0; it <= iterations; ++it) {
     if (residual() < 1e-12 && gap().norm() < 1e-12 * L) {
+      if (options.stable)
+        requireStable(line.stiffness(theta, model, P * nu), line.mass(theta), P.transpose() * line.endJacobian(theta));
       force = P * nu;
+      line.materialAxes(theta, model, material_axes);
       return line.kinematics(theta, model);
     }
     if (it == iterations) break;
     // R(θ, ν) = Q + Φᵀ P ν: K_ν δ - Φᵀ P Δν = R, P ᵀ Φ δ = -gap (K_ν: ν's geometric stiffness in).
-    const MatX K = line.stiffness(theta, model, P * nu);
+    MatX K = line.stiffness(theta, model, P * nu);
     const MatX G = P.transpose() * line.endJacobian(theta);
+    if (options.stable) {
+      const MatX M = line.mass(theta);
+      K += stabilizingShift(K, M, G) * M;
+    }
     MatX A = MatX::Zero(p + 2, p + 2);
     A.topLeftCorner(p, p) = K;
     A.topRightCorner(p, 2) = -G.transpose();

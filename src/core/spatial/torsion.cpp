@@ -122,6 +122,13 @@ Vec3 materialDirector(const TwistFrames& f, int i, const Vec3& e, double theta) 
   return std::cos(theta) * u + std::sin(theta) * e.cross(u);
 }
 
+void spinsFromAxes(const Kinematics3& kin, const TwistFrames& f, const AlignedVector<Vec3>& m1, double* theta) {
+  for (int i = 0; i < int(kin.size()); ++i) {
+    const Vec3 n = dir(kin[i]);
+    theta[i] = angleAbout(unitPerp(reference(f, i, n), n), m1[i], n);
+  }
+}
+
 void twistAngles(const Kinematics3& kin, const double* theta, const TwistFrames& f, double* m, Vec3* kb) {
   const int nb = int(kin.size());
   for (int k = 0; k + 1 < nb; ++k) {
