@@ -9,6 +9,8 @@
 
 #include "riser_sim/spatial/bending_axes.h"
 #include "riser_sim/spatial/forces/flex_joint.h"
+#include "riser_sim/spatial/natural_formulation.h"
+#include "riser_sim/spatial/shifted_solver.h"
 #include "riser_sim/spatial/statics.h"
 #include "spatial_independent_util.h"
 
@@ -305,5 +307,22 @@ TEST(SpatialBendingAxes, ImplicitSchemeConvergesWithoutTheAxesInItsJacobian) {
   EXPECT_LT(err[0] / err[1], 5.0);
 }
 
+// linearize() evaluates a state it was not handed into the data's own dy: sized for [q; θ; v; ω] with torsion on
+// (it held [q; v] only: a heap overflow a twisted implicit run could reach).
+TEST(SpatialBendingAxes, LinearizationWorkspaceHoldsTheSpins) {
+  LineSpec s = spatial_test::flexibleLine();
+  s.segments = 4;
+  const auto m = axesModel(s, Vec3(0, 0, -s.g), Vec3::UnitX());
+  const NaturalFormulation f(*m, 50.0);
+  const auto d = f.makeData();
+  EXPECT_EQ(d->dy.size(), 2 * f.positionSize());
+  const std::vector<Vec3> dirs(m->bodies(), Vec3(0.3, 0.1, -1.0).normalized());
+  VecX y = VecX::Zero(2 * f.positionSize());
+  f.packState(rigidChain(m->line(), Vec3::Zero(), dirs, Vec3::Zero(), Vec3::Zero()), y);
+  f.initTwist(y, *d);
+  const auto solver = f.makeShifted();
+  f.linearize(0.0, y, PointMotion3{}, *d, *solver);
+  EXPECT_TRUE(d->dy.allFinite());
+}
 }  // namespace
 }  // namespace riser_sim

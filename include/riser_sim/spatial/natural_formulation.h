@@ -64,7 +64,7 @@ class NaturalData {
   };
   VecX Q, h;
   VecX acc;  // v' of this evaluation (7 per rfe)
-  VecX dy;   // workspace [q'; v'] for linearize()
+  VecX dy;   // workspace [q'; θ'; v'; ω'] for linearize()
   AlignedVector<Body> body;
   AlignedVector<DenseBody> dense;
   AlignedVector<Mat3> diag, up;
