@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 
 #include "output_file.h"
 #include "run_output.h"
@@ -81,9 +82,13 @@ int runSpatial(const Scene& scene, const CliOptions& opt) {
     return fail(kExitInternal, e.what());
   }
   const spatial::InitialState3& init = run->initial();
-  info("initial state (%s): %s; %s; end force (%g, %g, %g) N; largest acceleration at rest %g m/s^2 (bound %g)",
+  char spins[96] = "";
+  if (scene.torsion.enabled)
+    std::snprintf(spins, sizeof(spins), "; largest moment on a spin at rest %g N m (bound %g)", init.max_twist_moment,
+                  init.twist_moment_bound);
+  info("initial state (%s): %s; %s; end force (%g, %g, %g) N; largest acceleration at rest %g m/s^2 (bound %g)%s",
        name(scene.initial.type), init.about.c_str(), init.statics.message.c_str(), init.end_force.x(),
-       init.end_force.y(), init.end_force.z(), init.max_acceleration, init.acceleration_bound);
+       init.end_force.y(), init.end_force.z(), init.max_acceleration, init.acceleration_bound, spins);
   info("%s", stabilityMessage(run->explicitFixedStep(), name(scene.solver.integrator), run->highestFrequency(),
                               run->stableStepEstimate(), run->dt())
                  .c_str());
@@ -169,6 +174,8 @@ int runSpatial(const Scene& scene, const CliOptions& opt) {
         .add("end_force_z", init.end_force.z())
         .add("initial_acceleration", init.max_acceleration)
         .add("initial_acceleration_bound", init.acceleration_bound);
+    if (scene.torsion.enabled)
+      j.add("initial_twist_moment", init.max_twist_moment).add("initial_twist_moment_bound", init.twist_moment_bound);
     rc = finishRun(end, &j);
   } else {
     rc = finishRun(end, nullptr);

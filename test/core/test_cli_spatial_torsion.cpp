@@ -148,6 +148,7 @@ TEST(CliSpatialTorsion, FlatUmbilicalScene) {
   std::map<std::string, std::string> j = summary(r);
   EXPECT_EQ(j["status"], "ok");
   EXPECT_LE(num(j, "initial_acceleration"), num(j, "initial_acceleration_bound"));
+  EXPECT_LE(num(j, "initial_twist_moment"), num(j, "initial_twist_moment_bound"));
   EXPECT_LT(std::abs(num(j, "energy_drift")), 1e-7);  // of m g L; ~4e-9 measured
   EXPECT_GT(std::abs(num(j, "top_twist")), 1.0);      // [N m]
   const CliRun m = runCli("--scene " + scene + " --quiet --modes 12");
