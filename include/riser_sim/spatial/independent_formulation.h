@@ -86,6 +86,10 @@ class IndependentFormulation3 {
   // dθ/dt, dθ'/dt on the first 2 positionSize() entries; data holds the evaluation (top reaction).
   void derivative(double t, const VecX& y, const SphereCharts& charts, const PointMotion3& top, VecX& dy,
                   IndependentData3& data) const;
+  // The generalised forces only: data.rhs (M_θ θ'' = rhs before the pinned end's force) and data.Phi, O(n);
+  // the mass matrix and its solve (O(n²), O(n³)) are skipped (the statics' finite differences need no more).
+  void forces(double t, const VecX& y, const SphereCharts& charts, const PointMotion3& top,
+              IndependentData3& data) const;
   // Re-centres the chart of every rfe with |u| > threshold on its current director (u = 0, exact in
   // position and velocity). Returns how many charts moved.
   // Torsion on: the twist charts move too (to every e_i, the spins' rates φ' follow).
@@ -114,6 +118,10 @@ class IndependentFormulation3 {
   const int nt_;  // spin coordinates (0 without torsion)
   void spinPhase(const VecX& y, const SphereCharts& charts, IndependentData3& d) const;  // φ, ω, a per rfe
   void addTwistForces(const VecX& y, const SphereCharts& charts, IndependentData3& d) const;
+  // derivative() in two parts: the forces (and with `mass` M_θ), then M_θ's solve and the reactions.
+  void assemble(double t, const VecX& y, const SphereCharts& charts, const PointMotion3& top, IndependentData3& d,
+                bool mass) const;
+  void solve(const VecX& y, VecX& dy, IndependentData3& d) const;
   void addSpinInertia(const VecX& y, const SphereCharts& charts, IndependentData3& d) const;
   void recentreTwist(VecX& y, SphereCharts& charts) const;
 };

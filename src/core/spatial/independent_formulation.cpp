@@ -154,8 +154,19 @@ double IndependentFormulation3::kineticEnergy(const Kinematics3& kin) const {
 // Local coordinates of rfe i are (Δ, u_1, u_2), of which θ_i keeps the last k_ (Δ dropped when
 // inextensible): c0 = 3 - k_ is the first kept one. L_i = ∂[Δ'; e']/∂(Δ', u') = [1 0; 0 G],
 // C_i = ∂E_i'/∂(Δ', u') = [e, len G] (relative to A_i'), with the top at rest and θ'' = 0 giving the biases.
+void IndependentFormulation3::forces(double t, const VecX& y, const SphereCharts& charts, const PointMotion3& top,
+                                     IndependentData3& d) const {
+  assemble(t, y, charts, top, d, false);
+}
+
 void IndependentFormulation3::derivative(double t, const VecX& y, const SphereCharts& charts, const PointMotion3& top,
                                          VecX& dy, IndependentData3& d) const {
+  assemble(t, y, charts, top, d, true);
+  solve(y, dy, d);
+}
+
+void IndependentFormulation3::assemble(double t, const VecX& y, const SphereCharts& charts, const PointMotion3& top,
+                                       IndependentData3& d, bool mass) const {
   const int nb = model_.bodies(), p = positionSize(), c0 = 3 - k_;
   d.t = t;
   d.top = top;
@@ -219,23 +230,28 @@ void IndependentFormulation3::derivative(double t, const VecX& y, const SphereCh
     const Mat7& M7 = d.M7[kb];
     const Mat3& C = d.C[kb];
     d.D[kb] = m_after * C + M7.block<3, 4>(kA, kDelta3) * L;
-    const Mat3 diag = C.transpose() * m_after * C + L.transpose() * M7.block<4, 4>(kDelta3, kDelta3) * L;
     const Vec3 r = C.transpose() * fA_after + L.transpose() * d.f[kb].segment<4>(kDelta3);
-    for (int a = 0; a < k_; ++a) {
-      d.rhs[k_ * kb + a] = r[c0 + a];
-      for (int c = 0; c < k_; ++c) d.M(k_ * kb + a, k_ * kb + c) = diag(c0 + a, c0 + c);
+    for (int a = 0; a < k_; ++a) d.rhs[k_ * kb + a] = r[c0 + a];
+    if (mass) {
+      const Mat3 diag = C.transpose() * m_after * C + L.transpose() * M7.block<4, 4>(kDelta3, kDelta3) * L;
+      for (int a = 0; a < k_; ++a)
+        for (int c = 0; c < k_; ++c) d.M(k_ * kb + a, k_ * kb + c) = diag(c0 + a, c0 + c);
     }
     m_after += M7.block<3, 3>(kA, kA);
     fA_after += d.f[kb].segment<3>(kA);
     for (int a = 0; a < k_; ++a) d.Phi.col(k_ * kb + a) = C.col(c0 + a);  // E_n' = top' + Σ C_j θ'_j
   }
-  for (int kb = 1; kb < nb; ++kb)
+  for (int kb = 1; kb < nb && mass; ++kb)
     for (int j = 0; j < kb; ++j) {
       const Mat3 blk = d.C[j].transpose() * d.D[kb];
       for (int a = 0; a < k_; ++a)
         for (int c = 0; c < k_; ++c) d.M(k_ * kb + c, k_ * j + a) = d.M(k_ * j + a, k_ * kb + c) = blk(c0 + a, c0 + c);
     }
-  if (nt_ > 0) addSpinInertia(y, charts, d);
+  if (nt_ > 0) addSpinInertia(y, charts, d);  // without `mass` its M entries are left as garbage, unused
+}
+
+void IndependentFormulation3::solve(const VecX& y, VecX& dy, IndependentData3& d) const {
+  const int nb = model_.bodies(), p = positionSize(), c0 = 3 - k_;
   d.llt.compute(d.M);
   d.theta_dd = d.llt.solve(d.rhs);
   // Pinned: M θ'' = r + Φᵀ μ, Φ θ'' = γ (Baumgarte on c = E_n - p_b) -> (Φ M⁻¹ Φᵀ) μ = γ - Φ M⁻¹ r.

@@ -38,13 +38,14 @@ class RestLine {
   int spinStart() const { return p_ - f_.spinDofs(); }
   bool isSpin(int c) const { return c >= spinStart(); }
   VecX& theta() { return theta_; }
-  const VecX& forces(const VecX& theta) {
+  const VecX& forces(const VecX& theta) {  // O(n): no mass matrix
     y_.head(p_) = theta;
-    f_.derivative(0.0, y_, charts_, top_, dy_, *data_);
+    f_.forces(0.0, y_, charts_, top_, *data_);
     return data_->rhs;
   }
   MatX mass(const VecX& theta) {
-    forces(theta);
+    y_.head(p_) = theta;
+    f_.derivative(0.0, y_, charts_, top_, dy_, *data_);
     return data_->M;
   }
   // Pinned end: Φ = ∂E_n/∂θ (3 x p) and the gap E_n - p_b [m].
