@@ -17,33 +17,35 @@ using detail::RestLine;
 
 namespace {
 
-// Z: an orthonormal basis of the motions the constraint rows C allow (C Z = 0; C empty: the identity).
-MatX tangent(const MatX& C, int p) {
-  if (C.rows() == 0) return MatX::Identity(p, p);
-  Eigen::HouseholderQR<MatX> qr(C.transpose());
-  return MatX(qr.householderQ()).rightCols(p - C.rows());
-}
-
 bool positiveDefinite(const MatX& A) { return Eigen::LLT<MatX>(0.5 * (A + A.transpose())).info() == Eigen::Success; }
+
+// K + ρ CᵀC, symmetrised: positive definite iff K is on null(C), for ρ large enough (Finsler's lemma; ρ is 1e3 x
+// K's stiffest diagonal over CᵀC's). Tests on the motions C allows without forming a basis of them.
+MatX penalised(const MatX& K, const MatX& C) {
+  MatX Kp = 0.5 * (K + K.transpose());
+  if (C.rows() > 0) {
+    const MatX CC = C.transpose() * C;
+    Kp += (1e3 * K.diagonal().cwiseAbs().maxCoeff() / CC.diagonal().maxCoeff()) * CC;
+  }
+  return Kp;
+}
 
 // The least σ in {0, s, 4s, 16s, ...} (s = 1e-6 of K's stiffest diagonal over M's heaviest) that makes K + σ M
 // positive definite on the motions C allows: a Newton step with it goes downhill in the energy, so the
 // iteration is pushed off a saddle (an unstable equilibrium) and settles in a stable one; σ = 0 near one.
 double stabilizingShift(const MatX& K, const MatX& M, const MatX& C) {
-  const MatX Z = tangent(C, int(K.rows()));
-  const MatX Kr = Z.transpose() * K * Z, Mr = Z.transpose() * M * Z;
-  if (positiveDefinite(Kr)) return 0.0;
+  const MatX Kp = penalised(K, C);
+  if (positiveDefinite(Kp)) return 0.0;
   double sigma = 1e-6 * K.diagonal().cwiseAbs().maxCoeff() / M.diagonal().cwiseAbs().maxCoeff();
-  for (int k = 0; k < 60 && !positiveDefinite(Kr + sigma * Mr); ++k) sigma *= 4.0;
+  for (int k = 0; k < 60 && !positiveDefinite(Kp + sigma * M); ++k) sigma *= 4.0;
   return sigma;
 }
 
 // Throws unless K is positive definite on the motions C allows (a rigid spin of a free top, neutral, passes at
 // 1e-9 of the stiffest diagonal).
 void requireStable(const MatX& K, const MatX& M, const MatX& C) {
-  const MatX Z = tangent(C, int(K.rows()));
   const double neutral = 1e-9 * K.diagonal().cwiseAbs().maxCoeff() / M.diagonal().cwiseAbs().maxCoeff();
-  if (!positiveDefinite(Z.transpose() * (K + neutral * M) * Z))
+  if (!positiveDefinite(penalised(K, C) + neutral * M))
     throw std::runtime_error("the equilibrium found is unstable (its stiffness is negative in some motion the ends "
                              "allow)");
 }
