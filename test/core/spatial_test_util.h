@@ -5,6 +5,7 @@
 #include <cmath>
 #include <functional>
 #include <memory>
+#include <random>
 #include <vector>
 
 #include "riser_sim/absolute_formulation.h"
@@ -86,6 +87,14 @@ inline spatial::TorsionProperties shaftTorsion(double GJ, double damping) {
   t.damping = damping;
   t.end_polar_inertia = kShaftJend;
   return t;
+}
+
+// A bent chain hanging from the origin at rest: director i leans 0.4 i along x and a random (rng, ±0.3) along y.
+inline spatial::Kinematics3 randomBentChain(const Model& line, std::mt19937& rng) {
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::vector<Vec3> dirs;
+  for (int i = 0; i < line.bodies(); ++i) dirs.push_back(Vec3(0.4 * i, 0.3 * u(rng), -1.0));
+  return spatial::rigidChain(line, Vec3::Zero(), dirs, Vec3::Zero(), Vec3::Zero());
 }
 
 // Σ over every part of every rfe of (x_p - A_0) × m_p g [N m]: the weight's moment about the hang-off.

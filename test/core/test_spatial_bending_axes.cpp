@@ -58,9 +58,7 @@ BentState bentState(unsigned seed) {
   const int nb = t.model->bodies();
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
-  std::vector<Vec3> dirs;
-  for (int i = 0; i < nb; ++i) dirs.push_back(Vec3(0.4 * i, 0.3 * u(rng), -1.0));
-  t.kin = rigidChain(t.model->line(), Vec3::Zero(), dirs, Vec3::Zero(), Vec3::Zero());
+  t.kin = spatial_test::randomBentChain(t.model->line(), rng);
   t.data.resize(nb);
   initTwistFrames(t.kin, t.data.frames, t.model->bendingAxis());
   for (int i = 0; i < nb; ++i) {
@@ -231,14 +229,22 @@ TEST(SpatialBendingAxes, CantileverLoadedBetweenTheAxesBendsTowardsTheSoftOne) {
 
 // The flexible line (dampers on), twisted and spinning under a swaying, yawing top, axes oblique, EI_1 = 4 EI_2:
 // both formulations (rk4, 1e-4 s) agree and keep E - E0 - W, as the torsion cross-check's bounds.
-TEST(SpatialBendingAxes, SwingingLineBalancesEnergyInBothFormulations) {
+// The swinging tests' line: flexibleLine at n = 8 with dampers, axes oblique, EI_1 = 4 EI_2, bent; turning at w.
+std::shared_ptr<SpatialModel> swingLine(Kinematics3& kin0, const Vec3& w) {
   LineSpec s = spatial_test::flexibleLine();
   s.segments = 8;
   const auto m = axesModel(s, Vec3(0, 0, -s.g), Vec3(1.0, 2.0, 0.3), kEI1, kEI2, 2.0);
-  const int nb = m->bodies();
   std::vector<Vec3> dirs;
-  for (int i = 0; i < nb; ++i) dirs.push_back(Vec3(0.3 + 0.1 * i, 0.2 - 0.05 * i, -1.0).normalized());
-  const Kinematics3 kin0 = rigidChain(m->line(), Vec3::Zero(), dirs, Vec3::Zero(), Vec3(0.2, -0.3, 0.5));
+  for (int i = 0; i < m->bodies(); ++i) dirs.push_back(Vec3(0.3 + 0.1 * i, 0.2 - 0.05 * i, -1.0).normalized());
+  kin0 = rigidChain(m->line(), Vec3::Zero(), dirs, Vec3::Zero(), w);
+  return m;
+}
+
+TEST(SpatialBendingAxes, SwingingLineBalancesEnergyInBothFormulations) {
+  const LineSpec s = spatial_test::flexibleLine();
+  Kinematics3 kin0;
+  const auto m = swingLine(kin0, Vec3(0.2, -0.3, 0.5));
+  const int nb = m->bodies();
   const auto top = [] {
     return std::make_unique<PlanarMotion3>(spatial_test::topSway(Vec2(0.5, 0.3), 1.0), spatial_test::yawTilt(0.3, 0.5));
   };
@@ -278,13 +284,9 @@ TEST(SpatialBendingAxes, SwingingLineBalancesEnergyInBothFormulations) {
 // The implicit midpoint with the O(n) structured solve (its linearisation leaves the axes' part out: Newton
 // converges on the full residual) against rk4 at 1e-4 s: second order, the same motion.
 TEST(SpatialBendingAxes, ImplicitSchemeConvergesWithoutTheAxesInItsJacobian) {
-  LineSpec s = spatial_test::flexibleLine();
-  s.segments = 8;
-  const auto m = axesModel(s, Vec3(0, 0, -s.g), Vec3(1.0, 2.0, 0.3), kEI1, kEI2, 2.0);
+  Kinematics3 kin0;
+  const auto m = swingLine(kin0, Vec3::Zero());
   const int nb = m->bodies();
-  std::vector<Vec3> dirs;
-  for (int i = 0; i < nb; ++i) dirs.push_back(Vec3(0.3 + 0.1 * i, 0.2 - 0.05 * i, -1.0).normalized());
-  const Kinematics3 kin0 = rigidChain(m->line(), Vec3::Zero(), dirs, Vec3::Zero(), Vec3::Zero());
   const auto run = [&](IntegratorKind kind, double h) {
     IntegratorOptions io;
     io.jacobian = JacobianKind::kStructured;
@@ -311,12 +313,8 @@ TEST(SpatialBendingAxes, ImplicitSchemeConvergesWithoutTheAxesInItsJacobian) {
 
 // Zero allocations per step with the axes on: every integrator (the implicit ones structured), the energy too.
 TEST(SpatialBendingAxes, NoAllocationPerStep) {
-  LineSpec s = spatial_test::flexibleLine();
-  s.segments = 8;
-  const auto m = axesModel(s, Vec3(0, 0, -s.g), Vec3(1.0, 2.0, 0.3), kEI1, kEI2, 2.0);
-  std::vector<Vec3> dirs;
-  for (int i = 0; i < m->bodies(); ++i) dirs.push_back(Vec3(0.3 + 0.1 * i, 0.2 - 0.05 * i, -1.0).normalized());
-  const Kinematics3 kin0 = rigidChain(m->line(), Vec3::Zero(), dirs, Vec3::Zero(), Vec3::Zero());
+  Kinematics3 kin0;
+  const auto m = swingLine(kin0, Vec3::Zero());
   for (IntegratorKind kind : {IntegratorKind::kRk4, IntegratorKind::kDopri5, IntegratorKind::kMidpoint,
                               IntegratorKind::kGeneralizedAlpha, IntegratorKind::kRosenbrock2}) {
     IntegratorOptions io;

@@ -126,9 +126,7 @@ TwistState twistState(double damping, unsigned seed) {
   const int nb = t.model->bodies();
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
-  std::vector<Vec3> dirs;
-  for (int i = 0; i < nb; ++i) dirs.push_back(Vec3(0.4 * i, 0.3 * u(rng), -1.0));
-  t.kin = rigidChain(t.model->line(), Vec3::Zero(), dirs, Vec3::Zero(), Vec3::Zero());
+  t.kin = spatial_test::randomBentChain(t.model->line(), rng);
   t.data.resize(nb);
   initTwistFrames(t.kin, t.data.frames);
   for (int i = 0; i < nb; ++i) {  // move every director ~0.3 rad off its chart centre
