@@ -42,8 +42,10 @@ int runSpatialModes(const Scene& scene, int count, const std::string& csv_path, 
     if (init.end_force.squaredNorm() > 0.0) model->addTerm(std::make_unique<spatial::EndLoad3>(init.end_force));
     // A line twisted by its bending axes: the equilibrium and the modes about it with its spins.
     AlignedVector<Vec3> axes = init.material_axes;
-    const spatial::Kinematics3 eq = spatial::spatialEquilibrium(*model, init.kin, 20, {}, &axes);
-    r = spatial::computeSpatialModes(*model, eq, {}, &axes);
+    spatial::SpatialModalOptions options;
+    options.hang_off = init.hang_off;
+    const spatial::Kinematics3 eq = spatial::spatialEquilibrium(*model, init.kin, 20, options, &axes);
+    r = spatial::computeSpatialModes(*model, eq, options, &axes);
   } catch (const std::invalid_argument& e) {
     return fail(kExitBadInput, e.what());
   } catch (const std::exception& e) {

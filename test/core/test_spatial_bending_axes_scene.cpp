@@ -99,6 +99,35 @@ TEST(SpatialBendingAxesScene, StartsAtRestWithTheAxesAnyWay) {
   for (const AtRest* r : {&normal, &inplane, &oblique, &displaced}) EXPECT_LT(r->moved, 1e-6);
 }
 
+// Starts the shifted Newton stalls on (far from the planar guess), so dynamic relaxation with the spins brings the
+// line near and Newton finishes. A swivel top (top.torsion: free): the line spins its soft axis into the bend and
+// is the isotropic EI_2 catenary, in its plane. A current across the plane (0.8 m/s): the drag bends the line
+// out of it, about both axes, and it twists. Both at rest.
+TEST(SpatialBendingAxesScene, FarStartsRelaxFirst) {
+  std::string swivel = axesScene("[0.5, 0.866, 0.3]");
+  swivel.replace(swivel.find("bottom:"), 0, "top: {torsion: free}\n");
+  const AtRest s = restRun(swivel), soft = restRun(axesScene("", "1.0e4"));
+  double off = 0.0, d_soft = 0.0;
+  for (size_t i = 0; i < s.kin.size(); ++i)
+    off = std::max(off, std::abs(s.kin[i].end().y())), d_soft = std::max(d_soft, (s.kin[i].end() - soft.kin[i].end()).norm());
+  std::string current = axesScene("[0.0, 1.0, 0.0]");
+  current.replace(current.find("mass_per_length: 20"), 19, "mass_per_length: 20, outer_diameter: 0.1");
+  current.replace(current.find("bottom:"), 0, "environment: {water: {density: 1025.0, surface: 5.0}, current: "
+                                              "{velocity: [0.0, 0.8, 0.0]}}\nhydrodynamics: {drag_normal: 1.2}\n");
+  const AtRest c = restRun(current);
+  double c_off = 0.0;
+  for (const auto& b : c.kin) c_off = std::max(c_off, std::abs(b.end().y()));
+  std::printf("[bending axes] swivel top: %.1e m out of the plane, %.1e m from the isotropic EI_2 line, spins up to "
+              "%.3g rad, moved %.1e m; current across: out of the plane %.3g m, spins up to %.3g rad, moved %.1e m\n",
+              off, d_soft, s.spin, s.moved, c_off, c.spin, c.moved);
+  EXPECT_LT(off, 1e-9);
+  EXPECT_LT(d_soft, 1e-8);  // [m] Newton's 1e-12 of the weight
+  EXPECT_GT(s.spin, 0.5);
+  EXPECT_TRUE(c.twisted);
+  EXPECT_GT(c_off, 1.0);
+  for (const AtRest* r : {&s, &c}) EXPECT_LT(r->moved, 1e-6);
+}
+
 TEST(SpatialBendingAxesScene, KeysAreChecked) {
   const auto key = [](const std::string& text) {
     try {

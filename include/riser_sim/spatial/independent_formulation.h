@@ -80,7 +80,8 @@ class IndependentFormulation3 {
 
   // Charts centred on kin's directors (normalised), and y = [θ; θ'] (first 2 positionSize() entries);
   // the joints of kin are assumed closed (positions follow from the top and the directors).
-  void packState(const Kinematics3& kin, SphereCharts& charts, VecX& y) const;
+  // Torsion on: hang_off_ref as in SpatialSimulator::reset.
+  void packState(const Kinematics3& kin, SphereCharts& charts, VecX& y, const HangOff& hang_off = HangOff()) const;
   // Rfe kinematics of y with A_0 moving as top.
   void kinematics(const VecX& y, const SphereCharts& charts, const PointMotion3& top, Kinematics3& kin) const;
   // dθ/dt, dθ'/dt on the first 2 positionSize() entries; data holds the evaluation (top reaction).

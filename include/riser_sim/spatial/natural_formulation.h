@@ -100,7 +100,9 @@ class NaturalFormulation {
   // Torsion on: charts at state y (before the first derivative()), the hang-off's frame fixed in the top's
   // holder at its attitude R0 then; moved to y between steps (the state and the frames are unchanged: exact),
   // the hang-off's frame turned to top's attitude. twistEnergy: Σ ½ (GJ/d) m_k² [J] with the hang-off at top.
-  void initTwist(const VecX& y, NaturalData& data, const Mat3& R0 = Mat3::Identity()) const;
+  // hang_off_ref: the hang-off's reference at y's top rfe (unit, across it; zero: from the bending axis).
+  void initTwist(const VecX& y, NaturalData& data, const Mat3& R0 = Mat3::Identity(),
+                 const HangOff& hang_off = HangOff()) const;
   void rechartTwist(const VecX& y, const PointMotion3& top, NaturalData& data) const;
   double twistEnergy(const VecX& y, const PointMotion3& top, NaturalData& data) const;
   // Kinetic energy [J] of state y (with the spins' ½ J_i ω_i²).

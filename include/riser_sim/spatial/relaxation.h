@@ -5,24 +5,31 @@
 // generalized_alpha with ρ∞ = 0 (the stiff modes die in a step) until the accelerations at rest
 // (restAcceleration, the builder's own check) are below the bound.
 #pragma once
+#include <cmath>
 #include <string>
 
 #include "riser_sim/scene.h"
 #include "riser_sim/spatial/kinematics.h"
+#include "riser_sim/spatial/torsion.h"
 
 namespace riser_sim {
 namespace spatial {
 
 struct Relaxed3 {
   Kinematics3 kin;            // at rest
+  AlignedVector<Vec3> material_axes;  // torsion on: each rfe's material axis 1 at rest (its spins)
+  HangOff hang_off;                   // torsion on: the hang-off's twist frame it held (made at the guess)
   double acceleration = 0.0;  // largest at rest [m/s^2] (restAcceleration)
   double time = 0.0;          // simulated [s]
   int steps = 0;
 };
 
-// The scene's equilibrium near `guess` with A_0 at top; a pinned bottom is held where `guess` ends. Throws
-// std::runtime_error("initial: ...") when it does not meet `bound` [m/s^2] within its time budget.
-Relaxed3 relaxToRest(const Scene& scene, const Kinematics3& guess, const Vec3& top, double bound);
+// The scene's equilibrium near `guess` with A_0 at top; a pinned bottom is held where `guess` ends, a free one
+// carries end_force [N] (a dead load). Torsion on: the spins start untwisted and relax too (the moments on them
+// within moment_bound [N m]). Throws std::runtime_error("initial: ...") when it does not meet `bound` [m/s^2]
+// within its time budget.
+Relaxed3 relaxToRest(const Scene& scene, const Kinematics3& guess, const Vec3& top, double bound,
+                     const Vec3& end_force = Vec3::Zero(), double moment_bound = INFINITY);
 
 }  // namespace spatial
 }  // namespace riser_sim

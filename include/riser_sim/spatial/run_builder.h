@@ -82,6 +82,7 @@ struct InitialState3 {
   double max_twist_moment = 0.0;
   double twist_moment_bound = 0.0;
   AlignedVector<Vec3> material_axes;
+  HangOff hang_off;  // then also the hang-off's twist frame the statics held (SpatialSimulator::reset)
 };
 
 // The initial state (initial_state.cpp). The scene without its waves: what the statics and the equilibrium check see (the current stays, steady at t = 0).
@@ -94,7 +95,8 @@ double restAcceleration(const Scene& scene, const Kinematics3& kin, const Vec3& 
 // hang-off's frame made at kin); `moment` gets the largest |moment about e_i| on a free spin [N m], `moment_where`
 // its rfe.
 double restAcceleration(const Scene& scene, const Kinematics3& kin, const Vec3& end_force, const Vec3& top,
-                        const AlignedVector<Vec3>& material_axes, int& where, double& moment, int& moment_where);
+                        const AlignedVector<Vec3>& material_axes, int& where, double& moment, int& moment_where,
+                        const HangOff& hang_off = HangOff());
 
 // The scene's initial state with A_0 at top. Throws std::runtime_error("initial: ...") when the statics
 // fail, the problem is not planar, or the rotated state is not an equilibrium of the 3D model.

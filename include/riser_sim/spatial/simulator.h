@@ -24,8 +24,9 @@ class SpatialSimulator : private OdeSystem {
  public:
   SpatialSimulator(std::shared_ptr<const SpatialModel> model, std::shared_ptr<const TopMotion3> top, IntegratorKind kind,
                    const IntegratorOptions& options = {}, double stabilization = 50.0);
-  // Starts from the given rfe kinematics at time t0 [s] (projected; W = 0).
-  void reset(const Kinematics3& kin, double t0);
+  // Starts from the given rfe kinematics at time t0 [s] (projected; W = 0). Torsion on: hang_off_ref is the
+  // hang-off's reference at kin's top rfe (zero: made from the model's bending axis, else any).
+  void reset(const Kinematics3& kin, double t0, const HangOff& hang_off = HangOff());
   // Torsion on: spin angles θ and rates ω [rad, rad/s] per rfe (torsion.h; entry 0 is held at 0). After
   // reset(), which starts them at 0.
   void setTwist(const VecX& theta, const VecX& omega);

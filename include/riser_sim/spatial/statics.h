@@ -3,6 +3,7 @@
 // end held), and a free end held horizontally by a force. Free or pinned bottom only.
 #pragma once
 #include "riser_sim/spatial/model.h"
+#include "riser_sim/spatial/torsion.h"
 
 namespace riser_sim {
 namespace spatial {
@@ -14,6 +15,9 @@ struct SpatialModalOptions {
   // is one); with this each step's K is shifted by σ M until it is positive definite on the motions the ends
   // allow (Cholesky), σ = 0 near a stable equilibrium, and the one found is checked stable (else it throws).
   bool stable = false;
+  // Torsion on: the hang-off's twist frame (torsion.h; not given: made at the guess's top rfe), as
+  // SpatialSimulator::reset takes it.
+  HangOff hang_off;
 };
 
 // Static equilibrium of the line at rest hanging from A_0 = guess[0].A: Newton on Q_θ = 0 with the

@@ -80,12 +80,22 @@ double twistStiffness(const SpatialModel& model);
 double twistDamping(const SpatialModel& model);
 double polarInertia(const SpatialModel& model, int i);
 
+// The hang-off's twist frame given rather than made at the top rfe: its axis h (unit) and reference r_h (unit,
+// ⟂ h). A zero axis: made at the top rfe (initTwistFrames). The axis is the homokinetic joint's: rfe 0's frame is
+// R(h -> e_0) r_h, and h enters its law beyond e_0 (minimal rotations do not compose), so it is part of the model.
+struct HangOff {
+  Vec3 axis = Vec3::Zero(), ref = Vec3::Zero();
+  bool given() const { return axis.squaredNorm() > 0.0; }
+};
+
 // Frames at the start: centres at e_i, the hang-off's axis e_0 with a reference ⟂ e_0 (axis1's part normal to
 // e_0 when given, the material axis 1 of bending_axes.h; else the world axis least aligned with e_0), the
 // references transported down the line across the joints (so m_ref = 0 at the start).
 // The hang-off's frame then is fixed in a holder at attitude I (holdHangOff for another).
 // Throws std::invalid_argument when axis1 is within 1e-6 rad of e_0.
-void initTwistFrames(const Kinematics3& kin, TwistFrames& f, const Vec3& axis1 = Vec3::Zero());
+// hang: the hang-off's frame when given (then axis1 is not used for it).
+void initTwistFrames(const Kinematics3& kin, TwistFrames& f, const Vec3& axis1 = Vec3::Zero(),
+                     const HangOff& hang = HangOff());
 // The hang-off's frame as it is now, fixed in a holder whose attitude is now R0 (holder frame -> world).
 void holdHangOff(TwistFrames& f, const Mat3& R0);
 // The hang-off's frame at the holder's attitude R turning at w [rad/s] (world); `held`: rfe 0's chart is the

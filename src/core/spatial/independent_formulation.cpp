@@ -90,7 +90,8 @@ double IndependentFormulation3::constraintError(const Kinematics3& kin) const {
   return model_.bottom() == BottomBoundary::kPinned ? (kin.back().end() - model_.bottomPoint()).norm() : 0.0;
 }
 
-void IndependentFormulation3::packState(const Kinematics3& kin, SphereCharts& charts, VecX& y) const {
+void IndependentFormulation3::packState(const Kinematics3& kin, SphereCharts& charts, VecX& y,
+                                        const HangOff& hang_off) const {
   const int nb = model_.bodies(), p = positionSize();
   charts.frame.resize(nb);
   for (int i = 0; i < nb; ++i) {
@@ -109,7 +110,7 @@ void IndependentFormulation3::packState(const Kinematics3& kin, SphereCharts& ch
   charts.twist.ref.assign(nb, Vec3::Zero());
   charts.twist.mref.assign(nb - 1, 0.0);
   charts.kin = kin;
-  initTwistFrames(kin, charts.twist, model_.bendingAxis());
+  initTwistFrames(kin, charts.twist, model_.bendingAxis(), hang_off);
   y.segment(k_ * nb, nt_).setZero();
   y.segment(p + k_ * nb, nt_).setZero();
 }

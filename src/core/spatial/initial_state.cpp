@@ -90,7 +90,8 @@ double restAcceleration(const Scene& scene, const Kinematics3& kin, const Vec3& 
 }
 
 double restAcceleration(const Scene& scene, const Kinematics3& kin, const Vec3& end_force, const Vec3& top,
-                        const AlignedVector<Vec3>& material_axes, int& where, double& moment, int& moment_where) {
+                        const AlignedVector<Vec3>& material_axes, int& where, double& moment, int& moment_where,
+                        const HangOff& hang_off) {
   std::shared_ptr<SpatialModel> model = buildSpatialModel(stillWater(scene));
   if (scene.bottom == BottomBoundary::kPinned) model->setBottom(BottomBoundary::kPinned, kin.back().end());
   if (end_force.squaredNorm() > 0.0 && scene.bottom != BottomBoundary::kPinned)
@@ -100,7 +101,7 @@ double restAcceleration(const Scene& scene, const Kinematics3& kin, const Vec3& 
   const int nq = f.positionSize();  // the velocities' offset (torsion adds θ to q)
   VecX y = VecX::Zero(2 * nq), dy = VecX::Zero(2 * nq);
   f.packState(kin, y);
-  f.initTwist(y, *data);  // untwisted unless the material axes say otherwise
+  f.initTwist(y, *data, Mat3::Identity(), hang_off);  // untwisted unless the material axes say otherwise
   const int first = model->hasTorsion() ? firstSpin(*model) : model->bodies();
   if (!material_axes.empty() && model->hasTorsion()) {
     VecX theta(model->bodies());
@@ -245,7 +246,7 @@ InitialState3 solveInitialState3(const Scene& scene, const Vec3& top) {
                  ", then Newton in 3D with the end held at (" + fmt(xy.x()) + ", " + fmt(xy.y()) +
                  ") by the horizontal force (" + fmt(init.end_force.x()) + ", " + fmt(init.end_force.y()) + ") N";
     init.max_acceleration = restAcceleration(scene, init.kin, init.end_force, top, where);
-  } else if (relax || relax_slope) {
+  } else if ((relax || relax_slope) && !scene.bending_axes.enabled) {  // with bending axes: the 3D Newton below
     const Relaxed3 r = relaxToRest(scene, init.kin, top, init.acceleration_bound);
     init.kin = r.kin;
     init.about = std::string(name(kind)) + " equilibrium " +
@@ -262,7 +263,7 @@ InitialState3 solveInitialState3(const Scene& scene, const Vec3& top) {
   int moment_where = 0;
   const auto atRest = [&] {
     init.max_acceleration = restAcceleration(scene, init.kin, init.end_force, top, init.material_axes, where,
-                                             init.max_twist_moment, moment_where);
+                                             init.max_twist_moment, moment_where, init.hang_off);
     return init.max_acceleration <= init.acceleration_bound && init.max_twist_moment <= init.twist_moment_bound;
   };
   // Bending axes: a line bent between them twists (and leaves the plane): Newton in 3D with the spins.

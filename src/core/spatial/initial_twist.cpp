@@ -6,6 +6,7 @@
 #include <string>
 
 #include "riser_sim/spatial/forces/end_load.h"
+#include "riser_sim/spatial/relaxation.h"
 #include "riser_sim/spatial/statics.h"
 
 namespace riser_sim {
@@ -27,43 +28,45 @@ void twistedEquilibrium(const Scene& scene, bool held_end, const Vec2& xy, Initi
   const std::shared_ptr<SpatialModel> model = buildSpatialModel(stillWater(scene));
   if (!held_end && scene.bottom != BottomBoundary::kPinned && init.end_force.squaredNorm() > 0.0)
     model->addTerm(std::make_unique<EndLoad3>(init.end_force));
-  Kinematics3 kin = init.kin;
-  AlignedVector<Vec3> axes;
-  Vec3 n0 = kin[0].e.normalized();  // the top rfe of Newton's last guess (its hang-off frame's)
-  const auto newton = [&](const SpatialModalOptions& options, int iterations) {
-    Vec3 force = init.end_force;
-    n0 = kin[0].e.normalized();
-    try {
-      kin = held_end ? spatialEquilibriumHeldEnd(*model, kin, xy, force, iterations, options, &axes)
-                     : spatialEquilibrium(*model, kin, iterations, options, &axes);
-    } catch (const std::runtime_error& e) {
-      throw std::runtime_error(std::string("initial: the equilibrium twisted by the bending axes (line.EI: [EI_1, "
-                                           "EI_2]), Newton in 3D with the spins: ") + e.what());
-    }
-    init.end_force = force;
-  };
   // A line bent between soft axes twists far from its untwisted guess, and Newton from there may land on an
-  // unstable equilibrium (the stiff axis bent): every solve asks for a stable one (statics.h).
+  // unstable equilibrium (the stiff axis bent): ask for a stable one (statics.h).
   SpatialModalOptions settle;
   settle.stable = true;
-  newton(settle, 100);
-  // Newton held the hang-off's frame made at its guess's top rfe, carried to the solution's; the run makes it at
-  // the solution: solve again from the solution until the two agree.
-  const Vec3& axis = scene.bending_axes.axis;
-  double moved = 0.0;
-  for (int pass = 0; pass < 6; ++pass) {
-    if (pass > 0) newton(settle, 30);
-    const Vec3 n1 = kin[0].e.normalized();
-    const Vec3 held = minimalRotation(n0, n1, unitPerp(axis, n0)), made = unitPerp(axis, n1);
-    moved = std::atan2(held.cross(made).norm(), held.dot(made));
-    if (moved < 1e-12) {
-      init.kin = kin;
-      init.material_axes = axes;
-      return;
+  // The hang-off's twist frame: line.bending_axis across the guess's top rfe, the joint's axis along it. Held as
+  // given by Newton and by the run (its axis is part of the joint's law: torsion.h, HangOff).
+  const Vec3 n0 = init.kin[0].e.normalized();
+  settle.hang_off.axis = n0;
+  settle.hang_off.ref = unitPerp(scene.bending_axes.axis, n0);
+  AlignedVector<Vec3> axes;
+  Vec3 force = init.end_force;
+  Kinematics3 kin = init.kin;
+  const auto newton = [&] {
+    kin = held_end ? spatialEquilibriumHeldEnd(*model, kin, xy, force, 100, settle, &axes)
+                   : spatialEquilibrium(*model, kin, 100, settle, &axes);
+  };
+  try {
+    newton();
+  } catch (const std::runtime_error& first) {
+    // Far from its guess (a current across the plane, a swivel top), the shifted Newton can stall: dynamic
+    // relaxation (relaxation.h: the spins and the hang-off's frame with it) brings the line near, Newton finishes.
+    try {
+      const Relaxed3 r = relaxToRest(scene, init.kin, init.kin[0].A, 1e5 * init.acceleration_bound, init.end_force,
+                                     1e5 * init.twist_moment_bound);
+      kin = r.kin;
+      axes = r.material_axes;
+      settle.hang_off = r.hang_off;
+      force = init.end_force;
+      newton();
+    } catch (const std::runtime_error& e) {
+      throw std::runtime_error(std::string("initial: the equilibrium twisted by the bending axes (line.EI: [EI_1, "
+                                           "EI_2]), Newton in 3D with the spins: ") + first.what() +
+                               "; from a dynamic relaxation: " + e.what());
     }
   }
-  throw std::runtime_error("initial: the equilibrium twisted by the bending axes: the hang-off's frame still moves by " +
-                           std::to_string(moved) + " rad after 6 passes of Newton");
+  init.kin = kin;
+  init.material_axes = axes;
+  init.end_force = force;
+  init.hang_off = settle.hang_off;
 }
 
 }  // namespace detail

@@ -11,13 +11,11 @@ namespace detail {
 // finishes). `principal` tells which of the first two.
 double planarBendingStiffness(const Scene& scene, const Vec3& normal, bool& principal);
 
-// The stable equilibrium with the spins near init.kin: dynamic relaxation (relaxation.h; spins from untwisted),
-// then Newton in 3D (statics.h) on the still-water model, the end held at xy by a horizontal force (held_end:
-// init.end_force in and out) or loaded by init.end_force (a free end) or pinned at bottom.position; the hang-off's
-// frame re-made at each solution's top rfe until it stays (its move is second order in the top rfe's turn
-// between passes). Sets init.kin, init.material_axes (and init.end_force). Throws std::runtime_error("initial:
-// ...") when either fails or the frame does not settle in 6 passes. Needs init.acceleration_bound and
-// init.twist_moment_bound.
+// The stable equilibrium with the spins near init.kin: Newton in 3D (statics.h, kept to a stable equilibrium) on
+// the still-water model, the end held at xy by a horizontal force (held_end: init.end_force in and out) or loaded
+// by init.end_force (a free end) or pinned at bottom.position. The hang-off's twist frame is made at init.kin's
+// top rfe (line.bending_axis across it, the joint's axis along it) and kept. Sets init.kin, init.material_axes,
+// init.hang_off (and init.end_force). Throws std::runtime_error("initial: ...") when Newton fails.
 void twistedEquilibrium(const Scene& scene, bool held_end, const Vec2& xy, InitialState3& init);
 
 }  // namespace detail

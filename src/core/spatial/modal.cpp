@@ -17,7 +17,7 @@ SpatialModalResult computeSpatialModes(const SpatialModel& model, const Kinemati
                                        const SpatialModalOptions& options, const AlignedVector<Vec3>* material_axes) {
   if (!(options.fd_step > 0.0)) throw std::invalid_argument("spatial modal fd_step: must be > 0");
   if (model.bottomMoves()) throw std::invalid_argument("spatial modal: a fixed or free bottom only (not a moving one)");
-  RestLine line(model, equilibrium, options.fd_step, material_axes);
+  RestLine line(model, equilibrium, options.fd_step, material_axes, options.hang_off);
   const VecX theta0 = line.theta();
   SpatialModalResult res;
   res.equilibrium = line.kinematics(theta0, model);

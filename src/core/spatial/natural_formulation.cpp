@@ -250,10 +250,10 @@ void NaturalFormulation::derivative(double t, const VecX& y, const PointMotion3&
   }
 }
 
-void NaturalFormulation::initTwist(const VecX& y, NaturalData& d, const Mat3& R0) const {
+void NaturalFormulation::initTwist(const VecX& y, NaturalData& d, const Mat3& R0, const HangOff& hang_off) const {
   if (!model_.hasTorsion()) return;
   kinematics(y, d.kin);
-  initTwistFrames(d.kin, d.twist.frames, model_.bendingAxis());
+  initTwistFrames(d.kin, d.twist.frames, model_.bendingAxis(), hang_off);
   holdHangOff(d.twist.frames, R0);
   d.t = std::numeric_limits<double>::quiet_NaN();  // the charts changed: no evaluation is current
 }

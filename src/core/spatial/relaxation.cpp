@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "riser_sim/spatial/force_term.h"
+#include "riser_sim/spatial/forces/end_load.h"
 #include "riser_sim/spatial/forces/morison_drag.h"
 #include "riser_sim/spatial/run_builder.h"
 #include "riser_sim/spatial/simulator.h"
@@ -72,7 +73,8 @@ std::string fmt(double v) {
 
 }  // namespace
 
-Relaxed3 relaxToRest(const Scene& scene, const Kinematics3& guess, const Vec3& top, double bound) {
+Relaxed3 relaxToRest(const Scene& scene, const Kinematics3& guess, const Vec3& top, double bound,
+                     const Vec3& end_force, double moment_bound) {
   const Scene still = stillWater(scene);
   // The drag as the static load on the line held still (its damping would overdamp the slow modes).
   Scene dragless = still;
@@ -85,6 +87,7 @@ Relaxed3 relaxToRest(const Scene& scene, const Kinematics3& guess, const Vec3& t
     model->addTerm(std::make_unique<MorisonDrag3>(Water3(still.water, model->gravity()), hs.drag_tangential,
                                                   hs.drag_normal, true));
   if (scene.bottom == BottomBoundary::kPinned) model->setBottom(BottomBoundary::kPinned, guess.back().end());
+  else if (end_force.squaredNorm() > 0.0) model->addTerm(std::make_unique<EndLoad3>(end_force));
   // The slowest mode of a hanging line is about its pendulum, ω1 ~ sqrt(g_wet / L) (g_wet: gravity less the
   // buoyancy of the whole line; the current and the pins stiffen it). α = 2 ω1 damps it critically and every
   // faster mode at α/2; a mode slower than the estimate would creep (at ω²/α), so ω1 errs low.
@@ -101,24 +104,40 @@ Relaxed3 relaxToRest(const Scene& scene, const Kinematics3& guess, const Vec3& t
                        scene.solver.stabilization);
   sim.reset(guess, 0.0);
   Relaxed3 out;
-  int where = 0;
+  if (model->hasTorsion()) {  // the hang-off's frame the run holds: the check uses the same (torsion.h, HangOff)
+    const TwistFrames& f = sim.lastEvaluation().twist.frames;
+    out.hang_off = HangOff{f.top_axis, f.top_ref};
+  }
+  int where = 0, moment_where = 0;
+  double moment = 0.0;
   out.kin = guess;
-  out.acceleration = restAcceleration(still, guess, Vec3::Zero(), top, where);
+  const auto atRest = [&] {
+    out.acceleration = restAcceleration(still, out.kin, end_force, top, out.material_axes, where, moment, moment_where,
+                                        out.hang_off);
+    return out.acceleration <= 0.01 * bound && moment <= 0.01 * moment_bound;
+  };
+  atRest();
   double h = 0.2 / w1;  // 5 steps per time constant 1/ω1 of the slowest mode (ρ∞ = 0 damps the rest)
   const double budget = 60.0 / w1;  // 60 time constants: e^-60 of any start the planar statics give
   const int kCheck = 10;
-  while (!(out.acceleration <= 0.01 * bound)) {
+  while (!atRest()) {
     if (out.time >= budget)
       throw std::runtime_error("initial: the 3D equilibrium (dynamic relaxation from the planar statics) did not "
                                "converge in " + fmt(out.time) + " s: acceleration at rest " + fmt(out.acceleration) +
                                " m/s^2 at rfe " + std::to_string(where) + " (bound " + fmt(bound) +
-                               " m/s^2 from initial.tolerance)");
+                               " m/s^2 from initial.tolerance), moment on a spin " + fmt(moment) + " N m at rfe " +
+                               std::to_string(moment_where));
     for (int k = 0; k < kCheck; ++k) {
       if (!sim.step(h)) {  // Newton failed at this step: restart from the last state with half the step
         if (h < 1e-4 / w1) throw std::runtime_error("initial: the 3D equilibrium (dynamic relaxation) failed: " +
                                                     sim.integrator().failure());
         h *= 0.5;
-        sim.reset(out.kin, sim.time());
+        sim.reset(out.kin, sim.time(), out.hang_off);
+        if (!out.material_axes.empty()) {
+          VecX theta(model->bodies());
+          spinsFromAxes(out.kin, sim.lastEvaluation().twist.frames, out.material_axes, theta.data());
+          sim.setTwist(theta, VecX::Zero(model->bodies()));
+        }
         break;
       }
       ++out.steps;
@@ -126,7 +145,12 @@ Relaxed3 relaxToRest(const Scene& scene, const Kinematics3& guess, const Vec3& t
     out.time = sim.time();
     sim.kinematics(out.kin);
     for (BodyKinematics3& b : out.kin) b.A_dot.setZero(), b.delta_dot = 0.0, b.e_dot.setZero();
-    out.acceleration = restAcceleration(still, out.kin, Vec3::Zero(), top, where);
+    if (model->hasTorsion()) {  // the spins as material axes (frame-free)
+      const TwistFrames& f = sim.lastEvaluation().twist.frames;
+      out.material_axes.resize(model->bodies());
+      for (int i = 0; i < model->bodies(); ++i)
+        out.material_axes[i] = materialDirector(f, i, out.kin[i].e.normalized(), sim.state()[model->dofs() + i]);
+    }
   }
   return out;
 }

@@ -17,14 +17,16 @@ namespace detail {
 class RestLine {
  public:
   // axes (torsion on, when given and not empty): the guess's material axes 1 per rfe, its spins (else untwisted).
-  RestLine(const SpatialModel& model, const Kinematics3& kin, double fd_step, const AlignedVector<Vec3>* axes = nullptr)
+  // hang_off_ref: as SpatialSimulator::reset's.
+  RestLine(const SpatialModel& model, const Kinematics3& kin, double fd_step, const AlignedVector<Vec3>* axes = nullptr,
+           const HangOff& hang_off = HangOff())
       : f_(model), data_(f_.makeData()), p_(f_.positionSize()), fd_step_(fd_step) {
     top_.p = kin[0].A;
     Kinematics3 rest = kin;
     for (auto& b : rest) b.A_dot.setZero(), b.e_dot.setZero(), b.delta_dot = 0.0;
     y_.setZero(2 * p_);
     dy_.setZero(2 * p_);
-    f_.packState(rest, charts_, y_);  // charts centred on kin's directors: u = 0
+    f_.packState(rest, charts_, y_, hang_off);  // charts centred on kin's directors: u = 0
     if (axes && !axes->empty() && model.hasTorsion()) {
       VecX spins(model.bodies());
       spinsFromAxes(rest, charts_.twist, *axes, spins.data());

@@ -216,7 +216,7 @@ SpatialRun::SpatialRun(const Scene& scene, RunInputs3 inputs)
   io.newton_tolerance = scene.solver.newton_tolerance;
   sim_ = std::make_unique<SpatialSimulator>(model_, motion, scene.solver.integrator, io,
                                             scene.solver.stabilization);
-  sim_->reset(initial_.kin, 0.0);
+  sim_->reset(initial_.kin, 0.0, initial_.hang_off);
   if (!initial_.material_axes.empty()) {  // the spins of an equilibrium twisted by the bending axes
     const int nb = model_->bodies();
     VecX theta(nb);

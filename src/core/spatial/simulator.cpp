@@ -34,12 +34,12 @@ SpatialSimulator::SpatialSimulator(std::shared_ptr<const SpatialModel> model, st
   integrator_->reset(StateLayout{n, formulation_.positionSize()});
 }
 
-void SpatialSimulator::reset(const Kinematics3& kin, double t0) {
+void SpatialSimulator::reset(const Kinematics3& kin, double t0, const HangOff& hang_off) {
   t_ = t0;
   y_.setZero();
   formulation_.packState(kin, y_);
   formulation_.project(y_);
-  formulation_.initTwist(y_, *data_, top_->at(t0).R);
+  formulation_.initTwist(y_, *data_, top_->at(t0).R, hang_off);
   integrator_->restart();
   force_lin_ = true;
 }

@@ -54,7 +54,7 @@ void requireStable(const MatX& K, const MatX& M, const MatX& C) {
 
 Kinematics3 spatialEquilibrium(const SpatialModel& model, const Kinematics3& guess, int iterations,
                                const SpatialModalOptions& options, AlignedVector<Vec3>* material_axes) {
-  RestLine line(model, guess, options.fd_step, material_axes);
+  RestLine line(model, guess, options.fd_step, material_axes, options.hang_off);
   VecX theta = line.theta();
   const bool pinned = model.bottom() == BottomBoundary::kPinned;
   const double gap_tol = 1e-12 * model.line().length();
@@ -120,7 +120,7 @@ Kinematics3 spatialEquilibriumHeldEnd(const SpatialModel& model, const Kinematic
                                       AlignedVector<Vec3>* material_axes) {
   if (model.bottom() == BottomBoundary::kPinned)
     throw std::invalid_argument("spatialEquilibriumHeldEnd: a free end only (a pinned one is held in full)");
-  RestLine line(model, guess, options.fd_step, material_axes);
+  RestLine line(model, guess, options.fd_step, material_axes, options.hang_off);
   VecX theta = line.theta();
   const int p = line.size();
   Eigen::Matrix<double, 3, 2> P = Eigen::Matrix<double, 3, 2>::Zero();  // λ = P ν: horizontal

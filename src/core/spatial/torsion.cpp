@@ -55,22 +55,23 @@ double polarInertia(const SpatialModel& model, int i) {
   return t.polar_inertia * model.rfe(i).length + (i == model.bodies() - 1 ? t.end_polar_inertia : 0.0);
 }
 
-void initTwistFrames(const Kinematics3& kin, TwistFrames& f, const Vec3& axis1) {
+void initTwistFrames(const Kinematics3& kin, TwistFrames& f, const Vec3& axis1, const HangOff& hang) {
   const int nb = int(kin.size());
   const Vec3 n0 = dir(kin[0]);
   int axis = 0;  // the world axis least aligned with e_0
   n0.cwiseAbs().minCoeff(&axis);
   f.centre[0] = n0;
-  if (axis1.squaredNorm() > 0.0 && !(axis1.cross(n0).norm() > 1e-6 * axis1.norm()))
+  if (!hang.given() && axis1.squaredNorm() > 0.0 && !(axis1.cross(n0).norm() > 1e-6 * axis1.norm()))
     throw std::invalid_argument("the bending axis 1 lies along the top rfe: no material frame");
   f.ref[0] = unitPerp(axis1.squaredNorm() > 0.0 ? axis1 : Vec3::Unit(axis), n0);
+  if (hang.given()) f.centre[0] = hang.axis.normalized(), f.ref[0] = unitPerp(hang.ref, f.centre[0]);
   for (int i = 1; i < nb; ++i) {
     const Vec3 np = dir(kin[i - 1]), n = dir(kin[i]);
     f.centre[i] = n;
     f.ref[i] = unitPerp(minimalRotation(np, n, reference(f, i - 1, np)), n);
   }
   for (double& m : f.mref) m = 0.0;
-  f.top_axis = n0;
+  f.top_axis = f.centre[0];
   f.top_ref = f.ref[0];
   f.top_mref = 0.0;
   holdHangOff(f, Mat3::Identity());
