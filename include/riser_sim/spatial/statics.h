@@ -8,12 +8,12 @@
 namespace riser_sim {
 namespace spatial {
 
-// The finite-difference step of the statics and of the modes (modal.h).
+// Options of the statics and of the modes (modal.h).
 struct SpatialModalOptions {
   double fd_step = 1e-6;  // central-difference step: chart units (~rad) for u, x segment length for Δ
-  // spatialEquilibrium, spatialEquilibriumHeldEnd: settle in a stable equilibrium. Plain Newton finds any (a line bent about its stiff axis
-  // is one); with this each step's K is shifted by σ M until it is positive definite on the motions the ends
-  // allow (Cholesky), σ = 0 near a stable equilibrium, and the one found is checked stable (else it throws).
+  // The statics: settle in a stable equilibrium. Plain Newton finds any (a line bent about its stiff axis is
+  // one); with this each step's K is shifted by σ M until it is positive definite on the motions the ends allow
+  // (Cholesky), σ = 0 near a stable equilibrium, and the one found is checked stable (else it throws).
   bool stable = false;
   // Torsion on: the hang-off's twist frame (torsion.h; not given: made at the guess's top rfe), as
   // SpatialSimulator::reset takes it.
@@ -25,7 +25,7 @@ struct SpatialModalOptions {
 // at bottomPoint() with its force as a multiplier. Throws std::runtime_error when it does not reach a residual
 // of 1e-12 of the weight (and an end gap of 1e-12 of the length) in `iterations`.
 // Torsion on, material_axes given: in, the guess's material axis 1 per rfe (its spins; empty: untwisted); out,
-// the equilibrium's (torsion.h: frame-free). The hang-off's frame is the one initTwistFrames makes at the guess.
+// the equilibrium's (torsion.h: frame-free). The hang-off's frame: options.hang_off, else made at the guess.
 Kinematics3 spatialEquilibrium(const SpatialModel& model, const Kinematics3& guess, int iterations = 20,
                                const SpatialModalOptions& options = SpatialModalOptions(),
                                AlignedVector<Vec3>* material_axes = nullptr);
