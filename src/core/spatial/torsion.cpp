@@ -2,11 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "riser_sim/spatial/bending_axes.h"
 #include "riser_sim/spatial/model.h"
-
-#include <stdexcept>
 
 namespace riser_sim {
 namespace spatial {
