@@ -30,6 +30,8 @@ class SpatialSimulator : private OdeSystem {
   // Torsion on: spin angles θ and rates ω [rad, rad/s] per rfe (torsion.h; entry 0 is held at 0). After
   // reset(), which starts them at 0.
   void setTwist(const VecX& theta, const VecX& omega);
+  // The same from each rfe's material axis 1 (torsion.h, frame-free; e.g. InitialState3::material_axes), at rest.
+  void setMaterialAxes(const AlignedVector<Vec3>& m1);
   // One integrator step of h [s], then the projection (and, torsion on, the twist charts moved). False when the integrator failed or the state
   // is not finite.
   bool step(double h);

@@ -70,9 +70,11 @@ void IndependentFormulation3::addTwistForces(const VecX& y, const SphereCharts& 
     power -= ct * rate * rate + t.top_tau * s;
     d.Q.segment<3>(kE) += t.top_tau * a;
   }
-  std::fill(t.bend.begin(), t.bend.end(), 0.0);
-  addBendingAxesForces(model_, d.kin, d.phi.data(), charts.twist, t.m1, d.Q, t.bend.data());
-  if (s0_ > 0) power -= t.bend[0] * s;  // the holder spins rfe 0's axes: ∂V/∂t
+  if (model_.hasBendingAxes()) {  // else t.bend stays 0 (resize)
+    std::fill(t.bend.begin(), t.bend.end(), 0.0);
+    addBendingAxesForces(model_, d.kin, d.phi.data(), charts.twist, t.m1, d.Q, t.bend.data());
+    if (s0_ > 0) power -= t.bend[0] * s;  // the holder spins rfe 0's axes: ∂V/∂t
+  }
   for (int i = 0; i < nb; ++i) {
     const double ti = i < nj ? t.tau[i] : 0.0, tp = i > 0 ? t.tau[i - 1] : 0.0;
     t.moment[i] = ti - tp - (i == 0 ? t.top_tau : 0.0) + t.bend[i];

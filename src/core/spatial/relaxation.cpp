@@ -133,11 +133,7 @@ Relaxed3 relaxToRest(const Scene& scene, const Kinematics3& guess, const Vec3& t
                                                     sim.integrator().failure());
         h *= 0.5;
         sim.reset(out.kin, sim.time(), out.hang_off);
-        if (!out.material_axes.empty()) {
-          VecX theta(model->bodies());
-          spinsFromAxes(out.kin, sim.lastEvaluation().twist.frames, out.material_axes, theta.data());
-          sim.setTwist(theta, VecX::Zero(model->bodies()));
-        }
+        if (!out.material_axes.empty()) sim.setMaterialAxes(out.material_axes);
         break;
       }
       ++out.steps;

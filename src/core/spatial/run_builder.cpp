@@ -217,12 +217,8 @@ SpatialRun::SpatialRun(const Scene& scene, RunInputs3 inputs)
   sim_ = std::make_unique<SpatialSimulator>(model_, motion, scene.solver.integrator, io,
                                             scene.solver.stabilization);
   sim_->reset(initial_.kin, 0.0, initial_.hang_off);
-  if (!initial_.material_axes.empty()) {  // the spins of an equilibrium twisted by the bending axes
-    const int nb = model_->bodies();
-    VecX theta(nb);
-    spinsFromAxes(initial_.kin, sim_->lastEvaluation().twist.frames, initial_.material_axes, theta.data());
-    sim_->setTwist(theta, VecX::Zero(nb));
-  }
+  // The spins of an equilibrium twisted by the bending axes.
+  if (!initial_.material_axes.empty()) sim_->setMaterialAxes(initial_.material_axes);
   sim_->estimateStability();
   const int nb = model_->bodies();
   out_.points.resize(nb + 1);

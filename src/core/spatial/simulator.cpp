@@ -55,6 +55,15 @@ void SpatialSimulator::setTwist(const VecX& theta, const VecX& omega) {
   force_lin_ = true;
 }
 
+void SpatialSimulator::setMaterialAxes(const AlignedVector<Vec3>& m1) {
+  const int nb = model_->bodies();
+  Kinematics3 kin(nb);
+  kinematics(kin);
+  VecX theta(nb);
+  spinsFromAxes(kin, data_->twist.frames, m1, theta.data());
+  setTwist(theta, VecX::Zero(nb));
+}
+
 void SpatialSimulator::rhs(double t, const VecX& y, VecX& dy) {
   const PointMotion3 top = top_->at(t);
   formulation_.derivative(t, y, top, dy, *data_);

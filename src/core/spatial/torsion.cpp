@@ -168,9 +168,11 @@ double addTwistForces(const SpatialModel& model, const Kinematics3& kin, const d
     power -= ct * rate * rate + d.top_tau * s;
     Q.segment<3>(kE) += d.top_tau * a;
   }
-  std::fill(d.bend.begin(), d.bend.end(), 0.0);
-  addBendingAxesForces(model, kin, theta, d.frames, d.m1, Q, d.bend.data());
-  if (held) power -= d.bend[0] * s;  // the holder spins rfe 0's axes: ∂V/∂t
+  if (model.hasBendingAxes()) {  // else d.bend stays 0 (resize)
+    std::fill(d.bend.begin(), d.bend.end(), 0.0);
+    addBendingAxesForces(model, kin, theta, d.frames, d.m1, Q, d.bend.data());
+    if (held) power -= d.bend[0] * s;  // the holder spins rfe 0's axes: ∂V/∂t
+  }
   for (int i = 0; i < nb; ++i) {
     d.moment[i] = (i < nj ? d.tau[i] : 0.0) - (i > 0 ? d.tau[i - 1] : 0.0) - (i == 0 ? d.top_tau : 0.0) + d.bend[i];
     Vec3 qe = Vec3::Zero();
