@@ -5,7 +5,8 @@
 //   seabed dragged by both ends at 0.5 m/s along itself and sideways: the holders feel μ N (the smoothing's
 //   v / sqrt(v² + v_s²) = 1 - 2e-4);
 // - a planar scene with a seabed (touchdown, a moving top) yawed into 3D gives the planar core's result rotated;
-// - the friction keys are refused in a planar scene, the anchored springs in a 3D one, naming the key.
+// - the friction keys are refused in a planar scene, the anchored springs in a 3D one, naming the key;
+// - a straight start inside the seabed is refused in both engines.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -225,6 +226,39 @@ TEST(SpatialSeabed, KeysRefusedWhereTheyDoNotApply) {
   } catch (const SceneError& e) {
     EXPECT_NE(std::string(e.what()).find("seabed.stiffness_tangential"), std::string::npos) << e.what();
   }
+}
+
+// A straight start is no equilibrium, but nothing of it may start inside the seabed, in either engine: the same
+// scene is refused naming the seabed planar and in 3D (level and sloped), and runs once it clears the plane.
+TEST(SpatialSeabed, StraightStartInsideTheSeabedRefusedInBothEngines) {
+  const std::string base =
+      "line: {length: 60.0, elements: 12, EA: 1.0e7, EI: 1.0e4, mass_per_length: 80.0, outer_diameter: 0.3}\n"
+      "environment: {water: {density: 1025.0, surface: 0.0}}\n"
+      "initial: {type: straight, angle: -90.0}\n";
+  const auto refusal = [](const Scene& scene) -> std::string {
+    try {
+      if (scene.space == SpaceKind::kSpatial) solveInitialState3(scene, scene.top.position3);
+      else solveInitialState(scene, *buildModel(scene), scene.top.position);
+    } catch (const std::runtime_error& e) {
+      return e.what();
+    }
+    return "";
+  };
+  for (const char* space : {"planar", "spatial"}) {
+    const std::string sp = std::string("space: ") + space + "\n";
+    const Scene deep = loadSceneText(base + sp + "seabed: {level: -40.0, stiffness_normal: 1.0e5}\n", space);
+    const std::string why = refusal(deep);
+    EXPECT_NE(why.find("below the seabed"), std::string::npos) << space << ": " << why;
+    EXPECT_NE(why.find("rfe"), std::string::npos) << space << ": " << why;
+    const Scene clear = loadSceneText(base + sp + "seabed: {level: -61.0, stiffness_normal: 1.0e5}\n", space);
+    EXPECT_EQ(refusal(clear), "") << space;
+  }
+  // 3D, sloped: the plane rises along +x through level -61 on the origin's vertical; at the line's x = 30 m a 5°
+  // slope lifts it to -61 + 30 tan 5° = -58.4 m, above the line's lower end at -60 m.
+  const Scene sloped = loadSceneText(base + "space: spatial\ntop: {position: [30.0, 0.0, 0.0]}\n"
+                                            "seabed: {level: -61.0, stiffness_normal: 1.0e5, slope: 5.0}\n",
+                                     "sloped");
+  EXPECT_NE(refusal(sloped).find("below the seabed"), std::string::npos) << refusal(sloped);
 }
 
 }  // namespace

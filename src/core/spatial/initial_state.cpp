@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "riser_sim/spatial/forces/end_load.h"
+#include "riser_sim/spatial/forces/seabed.h"
 #include "riser_sim/spatial/statics.h"
 #include "riser_sim/spatial/natural_formulation.h"
 #include "riser_sim/spatial/relaxation.h"
@@ -175,6 +176,18 @@ InitialState3 solveInitialState3(const Scene& scene, const Vec3& top) {
 
   if (kind == InitialKind::kStraight) {
     init.kin = fromPlanar(straightLine(*planar, ps.top.position, scene.initial.angle), R, origin);
+    // Not an equilibrium, but it must not start inside the seabed (the contact springs would throw it out).
+    if (scene.seabed.enabled) {
+      const Seabed3 bed(scene.seabed, buildSpatialModel(scene)->gravity());
+      for (size_t i = 0; i < init.kin.size(); ++i) {
+        const Vec3 end = init.kin[i].end();
+        if (bed.penetration(end) > 0.0)
+          throw std::runtime_error("initial: the straight line reaches (" + fmt(end.x()) + ", " + fmt(end.y()) + ", " +
+                                   fmt(end.z()) + ") m at the end of rfe " + std::to_string(i) + ", " +
+                                   fmt(bed.penetration(end)) + " m below the seabed (seabed.level " +
+                                   fmt(scene.seabed.level) + " m); use initial.type hanging or change initial.angle");
+      }
+    }
     init.equilibrium = false;
     checkBendingAxis(scene, init.kin);
     init.about = "straight line (not an equilibrium)";
