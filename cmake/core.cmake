@@ -34,6 +34,7 @@ add_library(riser_sim_core
   src/core/statics_guess.cpp
   src/core/statics_check.cpp
   src/core/modal.cpp
+  src/core/linear_stability.cpp
   src/core/scene.cpp
   src/core/run_builder.cpp
   src/core/scene_sections.cpp
@@ -59,6 +60,7 @@ add_library(riser_sim_core
   src/core/spatial/independent_formulation.cpp
   src/core/spatial/modal.cpp
   src/core/spatial/statics.cpp
+  src/core/spatial/rest_stability.cpp
   src/core/spatial/modal_characters.cpp
   src/core/spatial/forces/gravity.cpp
   src/core/spatial/forces/axial_spring.cpp

@@ -63,6 +63,9 @@ class ForceTerm {
   // The term as the statics see it at time t [s] when that differs from the term itself: a steady sea
   // (no waves, the current frozen at its velocity at t). Null: the term itself.
   virtual std::unique_ptr<ForceTerm> steadyTerm(double /*t*/) const { return nullptr; }
+  // The same with the current's velocity x current_factor (the statics' continuation in the current); terms that
+  // do not see the current ignore the factor.
+  virtual std::unique_ptr<ForceTerm> steadyTerm(double t, double /*current_factor*/) const { return steadyTerm(t); }
 
   // --- History (optional) ---
   // The term's run data, preallocated for the model (null: the term has no history).

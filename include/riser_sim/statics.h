@@ -20,6 +20,10 @@ struct StaticsProblem {
   Vec2 end_point = Vec2::Zero();  // for kBetweenPoints [m]
   double tolerance = 1e-9;        // on the largest residual force relative to the line's weight
   int max_iterations = 200;
+  // When Newton from the first guess fails or finds no stable state: continuation in the current (from still
+  // water, its drag ramped up) and, with a seabed, in the seabed's stiffness (docs/statics.md). false: the
+  // first guess's Newton only.
+  bool continuation = true;
 };
 
 struct StaticsResult {

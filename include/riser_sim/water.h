@@ -67,6 +67,8 @@ class WaterKinematics {
   static double jonswapShape(double omega, double omega_p, double gamma);
   // The steady part at time t: no waves, the current frozen at its velocity at t (what the statics see).
   WaterKinematics steady(double t) const;
+  // The same with the current's velocity (uniform and profile) x current_factor.
+  WaterKinematics steady(double t, double current_factor) const;
   // Wave amplitude factor at t (0 before, 1 after the ramp) and its rate [1/s] in *rate.
   double rampFactor(double t, double* rate = nullptr) const;
 

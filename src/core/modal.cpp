@@ -11,6 +11,7 @@
 #include "riser_sim/independent_formulation.h"
 #include "riser_sim/run_builder.h"
 #include "riser_sim/scene.h"
+#include "modal_linearisation.h"
 #include "statics_residual.h"
 
 namespace riser_sim {
@@ -36,13 +37,13 @@ class Chain {
       theta[k_ * i + k_ - 1] = kin[i].phi;
     }
   }
-  const Kinematics& kinematics(const VecX& theta) {
-    chainKinematics(model_, top_, Vec2::Zero(), theta.data(), nullptr, kin_);
+  const Kinematics& kinematics(const VecX& theta, const VecX* theta_dot = nullptr) {
+    chainKinematics(model_, top_, Vec2::Zero(), theta.data(), theta_dot ? theta_dot->data() : nullptr, kin_);
     return kin_;
   }
-  // Absolute forces of every term plus the dead end load at the end of rfe n.
-  const VecX& absoluteForces(const VecX& theta, const Vec2& end_force) {
-    kinematics(theta);
+  // Absolute forces of every term plus the dead end load at the end of rfe n (the line moving at θ').
+  const VecX& absoluteForces(const VecX& theta, const Vec2& end_force, const VecX* theta_dot = nullptr) {
+    kinematics(theta, theta_dot);
     Q_.setZero();
     for (size_t k = 0; k < terms_.terms().size(); ++k) terms_.terms()[k]->addForces(model_, data_.at(k), kin_, t_, Q_);
     const int n = model_.bodies() - 1;
@@ -55,6 +56,9 @@ class Chain {
     projectToChain(model_, kin_, Q.data(), Qt.data());
   }
   void generalised(const VecX& theta, const Vec2& end_force, VecX& Qt) { project(absoluteForces(theta, end_force), Qt); }
+  void generalised(const VecX& theta, const VecX& theta_dot, const Vec2& end_force, VecX& Qt) {
+    project(absoluteForces(theta, end_force, &theta_dot), Qt);
+  }
 
  private:
   const Model& model_;
@@ -104,15 +108,12 @@ void modeShape(const Model& model, const Kinematics& kin, int k, const VecX& th,
 
 }  // namespace
 
-ModalResult computeModes(const Model& model, const Kinematics& equilibrium, const Vec2& end_force,
-                         const ModalOptions& options) {
-  const int nb = model.bodies();
-  if (static_cast<int>(equilibrium.size()) != nb)
-    throw std::invalid_argument("modal: the equilibrium has " + std::to_string(equilibrium.size()) +
-                                " rfes, the model " + std::to_string(nb));
-  if (options.modes < 1) throw std::invalid_argument("modes: must be >= 1");
-  if (!(options.fd_step > 0.0)) throw std::invalid_argument("modal fd_step: must be > 0");
+namespace modal_detail {
 
+PlanarLinearisation linearise(const Model& model, const Kinematics& equilibrium, const Vec2& end_force,
+                              const LinearisationOptions& options) {
+  const int nb = model.bodies();
+  PlanarLinearisation lin;
   // Terms with history (seabed anchors) start from the static state: contacts stick where they are.
   TermDataSet data(model);
   data.startRun(model, equilibrium);
@@ -121,19 +122,11 @@ ModalResult computeModes(const Model& model, const Kinematics& equilibrium, cons
   const statics_detail::StaticTerms steady(model, options.time);  // no waves: modes about the still-water state
   Chain chain(model, steady, data, top, options.time);
   const int nt = chain.size(), k = chain.k();
-  VecX theta0;
+  lin.k = k;
+  VecX& theta0 = lin.theta;
   chain.pack(equilibrium, theta0);
-  const Kinematics kin0 = chain.kinematics(theta0);
-
-  ModalResult res;
-  res.coordinates = nt;
-  res.pinned = model.bottom() == BottomBoundary::kPinned;
-  for (int i = 0; i < nb; ++i) {
-    res.points.push_back(kin0[i].A);
-    res.arc_length.push_back(model.rfe(i).s_begin);
-  }
-  res.points.push_back(kin0[nb - 1].end());
-  res.arc_length.push_back(model.length());
+  lin.kin = chain.kinematics(theta0);
+  const Kinematics& kin0 = lin.kin;
 
   // Equilibrium check: residual generalised forces (forces / F, moments / (F L)) with F the largest
   // force any term applies.
@@ -143,18 +136,19 @@ ModalResult computeModes(const Model& model, const Kinematics& equilibrium, cons
     steady.terms()[k]->addForces(model, data.at(k), kin0, options.time, Qa);
     for (int i = 0; i < nb; ++i) F = std::max(F, Qa.segment<3>(4 * i).lpNorm<Eigen::Infinity>());
   }
-  Vec2 load = end_force;
+  Vec2& load = lin.load;
+  load = end_force;
   VecX Q0t;
   chain.generalised(theta0, load, Q0t);
-  if (res.pinned) {
+  lin.Ct.resize(nt, 2);
+  for (int i = 0; i < nb; ++i) {
+    if (k == 2) lin.Ct.row(2 * i) = kin0[i].e().transpose();
+    lin.Ct.row(k * i + k - 1) = kin0[i].len * kin0[i].nrm().transpose();
+  }
+  if (options.solve_anchor) {
     // The anchor's reaction (when not given as end_force) is what balances Q_θ along the end
     // constraints' normals: C^T λ = -Q_θ in least squares; it joins the dead end load.
-    MatX Ct(nt, 2);
-    for (int i = 0; i < nb; ++i) {
-      if (k == 2) Ct.row(2 * i) = kin0[i].e().transpose();
-      Ct.row(k * i + k - 1) = kin0[i].len * kin0[i].nrm().transpose();
-    }
-    const Vec2 lam = Ct.colPivHouseholderQr().solve(-Q0t);
+    const Vec2 lam = lin.Ct.colPivHouseholderQr().solve(-Q0t);
     load += lam;
     chain.generalised(theta0, load, Q0t);
   }
@@ -163,10 +157,11 @@ ModalResult computeModes(const Model& model, const Kinematics& equilibrium, cons
     const bool is_delta = k == 2 && c % 2 == 0;
     r0 = std::max(r0, std::abs(Q0t[c]) / (is_delta ? 1.0 : model.length()));
   }
-  res.equilibrium_residual = r0 > 0.0 ? r0 / F : 0.0;
+  lin.residual = r0 > 0.0 ? r0 / F : 0.0;
 
-  // Stiffness by central differences of Q_θ.
-  MatX K(nt, nt);
+  // Stiffness by central differences of Q_θ; damping (at rest) by central differences in θ'.
+  MatX& K = lin.K;
+  K.resize(nt, nt);
   VecX th(theta0), Qp, Qm;
   for (int c = 0; c < nt; ++c) {
     const bool is_delta = k == 2 && c % 2 == 0;
@@ -178,12 +173,22 @@ ModalResult computeModes(const Model& model, const Kinematics& equilibrium, cons
     th[c] = theta0[c];
     K.col(c) = -(Qp - Qm) / (2.0 * h);
   }
-  const double knorm = K.norm();
-  res.asymmetry = knorm > 0.0 ? (K - K.transpose()).norm() / knorm : 0.0;
-  K = 0.5 * (K + K.transpose()).eval();
+  if (options.damping) {
+    lin.C.resize(nt, nt);
+    VecX v = VecX::Zero(nt);
+    for (int c = 0; c < nt; ++c) {
+      const bool is_delta = k == 2 && c % 2 == 0;
+      const double h = options.fd_step * (is_delta ? model.segmentLength() : 1.0);  // [1/s] or [m/s]
+      v[c] = h;
+      chain.generalised(theta0, v, load, Qp);
+      v[c] = -h;
+      chain.generalised(theta0, v, load, Qm);
+      v[c] = 0.0;
+      lin.C.col(c) = -(Qp - Qm) / (2.0 * h);
+    }
+  }
 
   // Mass matrix: the dense M_II of the independent formulation at the static state (θ' = 0).
-  MatX M;
   {
     IndependentFormulation f(model, 0.0);
     const std::unique_ptr<FormulationData> fd = f.makeData();
@@ -192,18 +197,50 @@ ModalResult computeModes(const Model& model, const Kinematics& equilibrium, cons
     PointMotion pm;
     pm.p = top;
     f.derivative(options.time, y, pm, dy, *fd);
-    M = f.massMatrix(*fd).selfadjointView<Eigen::Lower>();
+    lin.M = f.massMatrix(*fd).selfadjointView<Eigen::Lower>();
   }
+  return lin;
+}
+
+}  // namespace modal_detail
+
+ModalResult computeModes(const Model& model, const Kinematics& equilibrium, const Vec2& end_force,
+                         const ModalOptions& options) {
+  const int nb = model.bodies();
+  if (static_cast<int>(equilibrium.size()) != nb)
+    throw std::invalid_argument("modal: the equilibrium has " + std::to_string(equilibrium.size()) +
+                                " rfes, the model " + std::to_string(nb));
+  if (options.modes < 1) throw std::invalid_argument("modes: must be >= 1");
+  if (!(options.fd_step > 0.0)) throw std::invalid_argument("modal fd_step: must be > 0");
+
+  ModalResult res;
+  res.pinned = model.bottom() == BottomBoundary::kPinned;
+  modal_detail::LinearisationOptions lo;
+  lo.time = options.time;
+  lo.fd_step = options.fd_step;
+  lo.solve_anchor = res.pinned;
+  modal_detail::PlanarLinearisation lin = modal_detail::linearise(model, equilibrium, end_force, lo);
+  const Kinematics& kin0 = lin.kin;
+  const int nt = static_cast<int>(lin.theta.size()), k = lin.k;
+  res.coordinates = nt;
+  for (int i = 0; i < nb; ++i) {
+    res.points.push_back(kin0[i].A);
+    res.arc_length.push_back(model.rfe(i).s_begin);
+  }
+  res.points.push_back(kin0[nb - 1].end());
+  res.arc_length.push_back(model.length());
+  res.equilibrium_residual = lin.residual;
+
+  MatX K = std::move(lin.K);
+  const double knorm = K.norm();
+  res.asymmetry = knorm > 0.0 ? (K - K.transpose()).norm() / knorm : 0.0;
+  K = 0.5 * (K + K.transpose()).eval();
+  MatX M = std::move(lin.M);
 
   // Pinned bottom: orthonormal null space of the end-point Jacobian C (E' = C θ').
   MatX N;
   if (res.pinned) {
-    MatX Ct(nt, 2);
-    for (int i = 0; i < nb; ++i) {
-      if (k == 2) Ct.row(2 * i) = kin0[i].e().transpose();
-      Ct.row(k * i + k - 1) = kin0[i].len * kin0[i].nrm().transpose();
-    }
-    Eigen::ColPivHouseholderQR<MatX> qr(Ct);
+    Eigen::ColPivHouseholderQR<MatX> qr(lin.Ct);
     qr.setThreshold(1e-10);
     if (qr.rank() < 2)
       throw std::runtime_error(

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "riser_sim/forces/morison_drag.h"
 #include "statics_residual.h"
 
 namespace riser_sim {
@@ -191,6 +192,34 @@ Attempt seabedRamp(const Model& model, const StaticsProblem& problem, StaticTerm
   return a;
 }
 
+// Why the equilibria followed from still water end before the full current (a fold of the path): the state
+// reached, in the physical terms of the scene.
+std::string currentLimit(const Model& model, const StaticsProblem& p, const Kinematics& kin, const Vec2& end_force) {
+  using Kind = StaticsProblem::Kind;
+  std::ostringstream o;
+  double highest = -INFINITY;
+  for (const BodyKinematics& b : kin) highest = std::max(highest, b.end().y());
+  const double lean = std::atan2(std::abs(kin.back().end().x() - p.top.x()), p.top.y() - kin.back().end().y());
+  o << "the line leans " << lean * 180.0 / M_PI << " deg from the vertical there";
+  double surface = INFINITY;
+  for (const auto& term : model.terms())
+    if (const auto* d = dynamic_cast<const MorisonDrag*>(term.get())) surface = d->water().spec().surface;
+  if (std::isfinite(surface) && highest > surface - model.segmentLength())
+    o << ", the line at the water surface (its highest joint " << highest - surface << " m from it): in more current "
+      << "the drag lifts it out of the water, where neither drag nor buoyancy holds it";
+  if (highest > p.top.y() - 1e-3 * model.length())
+    o << ", its highest point " << highest - p.top.y() << " m above the hang-off: in more current it would have to "
+      << "stand above its hang-off, which no resting state does";
+  else if (p.kind == Kind::kBetweenPoints)
+    o << ", the anchor pulling " << end_force.norm() << " N: the drag beyond this exceeds what the line's tension "
+      << "between the hang-off and the anchor can hold in a stable shape";
+  else if (p.kind == Kind::kEndDisplaced)
+    o << ", the end held by " << end_force.x() << " N: the drag beyond this turns the line over";
+  else
+    o << ": the drag beyond this turns the line over";
+  return o.str();
+}
+
 }  // namespace
 
 StaticsResult solveStatics(const Model& model, const StaticsProblem& problem, double t) {
@@ -214,8 +243,8 @@ StaticsResult solveStatics(const Model& model, const StaticsProblem& problem, do
   res.message = statics_detail::seabedGeometry(model, problem, terms);
   if (!res.message.empty()) return res;
   StaticResidual F(model, problem, terms, t);
-  // Attempts in turn until one converges and passes checkEquilibrium(). Without a seabed: Newton from
-  // the first guess. With one: the stiffness ramped up from a soft seabed (contact points sinking
+  // Attempts in turn until one converges (and, when `check`, passes checkEquilibrium()). Without a seabed:
+  // Newton from the first guess. With one: the stiffness ramped up from a soft seabed (contact points sinking
   // 1e-3 L under their share of the weight) starting from the first guess (fewer iterations than a
   // direct start on a stiff seabed: J-lay n = 400, 17 vs 48); Newton from the first guess; the
   // stiffness ramped up from the solution without the seabed.
@@ -223,31 +252,80 @@ StaticsResult solveStatics(const Model& model, const StaticsProblem& problem, do
                          "with the seabed stiffness ramped up from the solution without the seabed "};
   const double k = terms.seabedStiffness();
   const double soft = std::log10(F.weight() / (model.bodies() + 1) / (1e-3 * L) / std::max(k, 1e-300));
-  const int order[] = {1, 0, 2};
-  Attempt a;
-  std::string failures;
-  for (int attempt : order) {
-    if (attempt != 0 && !(k > 0.0)) continue;
-    if (attempt == 1 && !(soft < 0.0)) continue;  // the seabed is soft already
-    const int before = a.iterations;
-    a = attempt == 0 ? direct(model, problem, terms, t)
-                     : seabedRamp(model, problem, terms, t, attempt == 1 ? soft : -INFINITY);
-    a.iterations += before;
-    std::ostringstream o;
-    if (a.converged) {
-      Kinematics kin(model.bodies());
-      F.toKinematics(a.x, kin);
-      const EquilibriumCheck check = checkEquilibrium(model, problem, kin, F.endForce(a.x), t);
-      if (!check.ok)
-        o << "to a valid equilibrium: its solution (" << a.iterations << " iterations, residual " << a.residual
-          << ") fails the check " << check.message;
-    } else {
-      o << "in " << a.iterations << " iterations, residual " << a.residual << " (tolerance " << problem.tolerance
-        << ")";
+  const auto attempts = [&](const StaticsProblem& prob, bool check, std::string& failures) {
+    const int order[] = {1, 0, 2};
+    Attempt a;
+    for (int attempt : order) {
+      if (attempt != 0 && !(k > 0.0)) continue;
+      if (attempt != 0 && !prob.continuation) continue;
+      if (attempt == 1 && !(soft < 0.0)) continue;  // the seabed is soft already
+      const int before = a.iterations;
+      a = attempt == 0 ? direct(model, prob, terms, t)
+                       : seabedRamp(model, prob, terms, t, attempt == 1 ? soft : -INFINITY);
+      a.iterations += before;
+      std::ostringstream o;
+      if (a.converged && check) {
+        Kinematics kin(model.bodies());
+        F.toKinematics(a.x, kin);
+        const EquilibriumCheck c = checkEquilibrium(model, prob, kin, F.endForce(a.x), t);
+        if (!c.ok)
+          o << "to a valid equilibrium: its solution (" << a.iterations << " iterations, residual " << a.residual
+            << ") fails the check " << c.message;
+      } else if (!a.converged) {
+        o << "in " << a.iterations << " iterations, residual " << a.residual << " (tolerance " << prob.tolerance
+          << ")";
+      }
+      a.failure = o.str();
+      if (a.failure.empty()) break;
+      failures += (failures.empty() ? "" : "; ") + std::string(names[attempt]) + a.failure;
     }
-    a.failure = o.str();
-    if (a.failure.empty()) break;
-    failures += (failures.empty() ? "" : "; ") + std::string(names[attempt]) + a.failure;
+    return a;
+  };
+  std::string failures;
+  Attempt a = attempts(problem, true, failures);
+  if (!a.failure.empty() && problem.continuation && terms.hasCurrent()) {
+    // Continuation in the current: the equilibrium in still water, then the current's drag (∝ speed²) ramped
+    // up along the path of equilibria; the last state is checked as any solution.
+    StaticsProblem loose = problem;
+    loose.tolerance = std::max(problem.tolerance, 1e-6);
+    terms.scaleCurrent(0.0);
+    std::string still_failures;
+    Attempt c = attempts(loose, false, still_failures);
+    double s = 0.0, step = 0.25;  // the drag's fraction of the scene's
+    if (c.converged) {
+      for (; s < 1.0 && step > 1e-3;) {
+        const double next = std::min(s + step, 1.0);
+        terms.scaleCurrent(std::sqrt(next));
+        VecX x = c.x;
+        int it = 0;
+        double r = INFINITY;
+        const bool ok = newton(F, x, next < 1.0 ? loose : problem, it, r);
+        c.iterations += it;
+        if (ok) c.x = x, c.residual = r, s = next, step = std::min(2.0 * step, 0.5);
+        else step *= 0.5;
+      }
+    }
+    terms.scaleCurrent(1.0);
+    std::ostringstream o;
+    if (!c.converged) {
+      o << "in still water (" << still_failures << ")";
+    } else if (s < 1.0) {
+      Kinematics kin(model.bodies());
+      F.toKinematics(c.x, kin);
+      o << "beyond " << std::sqrt(s) << " x the current's speed (the equilibria from still water end there: "
+        << currentLimit(model, problem, kin, F.endForce(c.x)) << ")";
+    } else {
+      Kinematics kin(model.bodies());
+      F.toKinematics(c.x, kin);
+      const EquilibriumCheck ch = checkEquilibrium(model, problem, kin, F.endForce(c.x), t);
+      if (!ch.ok)
+        o << "to a valid equilibrium: its solution (" << c.iterations << " iterations, residual " << c.residual
+          << ") fails the check " << ch.message;
+    }
+    c.iterations += a.iterations;
+    c.failure = o.str();
+    if (c.failure.empty()) a = c;
+    else failures += "; with the current ramped up from still water " + c.failure;
   }
   res.converged = a.failure.empty();
   res.iterations = a.iterations;

@@ -6,42 +6,32 @@
 #include <cmath>
 #include <sstream>
 
+#include "modal_linearisation.h"
+#include "riser_sim/linear_stability.h"
 #include "statics_residual.h"
 
 namespace riser_sim {
 namespace statics_detail {
 
-// The equilibrium is stable when K = -∂Q_θ/∂θ, reduced to the directions that keep the end conditions
-// (the null space of their Jacobian C), is positive definite. K from central differences of the
-// residual at x, Jacobi-scaled (unit diagonal). Its asymmetric part measures the finite-difference
-// noise (K is symmetric for conservative loads; measured ~1e-9) plus the asymmetry of follower loads
-// (drag in a current); eigenvalues of the symmetric part down to -(1e-9 + 2 x that) pass (noise,
-// neutral directions such as a slack line lying on a frictionless seabed, benefit of the doubt for
-// drag). Between that band and zero, a negative determinant (an odd number of real negative
-// eigenvalues: a static divergence for any mass matrix) still marks the state unstable.
-std::string stabilityCheck(const Model& model, StaticResidual& F, const VecX& x) {
-  // Memory: J, then K and one work matrix (n = 2000: 128 MB each); no other full-size temporaries.
-  const int n = F.size(), nt = F.coordinates(), m = F.extra();
-  MatX K, C;
-  {
-    MatX J;
-    F.centralJacobian(x, J);
-    const double W = F.weight(), L = model.length();
-    K.resize(nt, nt);
-    for (int i = 0; i < nt; ++i) {
-      const bool is_delta = F.per() == 2 && i % 2 == 0;
-      K.row(i) = -(is_delta ? W : W * L) * J.block(i, 0, 1, nt);
-    }
-    C = J.block(nt, 0, m, nt);
-  }
-  VecX r(n);
-  F(x, r);  // leave F at x
-  VecX s(nt);
-  for (int i = 0; i < nt; ++i) s[i] = std::abs(K(i, i)) > 1e-300 ? 1.0 / std::sqrt(std::abs(K(i, i))) : 1.0;
-  K.array().colwise() *= s.array();
-  K.array().rowwise() *= s.transpose().array();
+// The equilibrium is stable when its linearisation (the modal analysis's: K = -∂Q_θ/∂θ with the seabed's
+// contacts sticking, C = -∂Q_θ/∂θ' from drag and damping, M of the independent formulation), on the motions that
+// keep the end conditions (the null space of their Jacobian), has no growing mode (linear_stability.h).
+std::string stabilityCheck(const Model& model, const StaticsProblem& problem, const Kinematics& kin,
+                           const Vec2& end_force, double t) {
+  using Kind = StaticsProblem::Kind;
+  modal_detail::LinearisationOptions lo;
+  lo.time = t;
+  lo.damping = true;
+  const modal_detail::PlanarLinearisation lin = modal_detail::linearise(model, kin, end_force, lo);
+  const int nt = static_cast<int>(lin.K.rows());
+  const int m = problem.kind == Kind::kHanging ? 0 : problem.kind == Kind::kEndDisplaced ? 1 : 2;
+  MatX N;
   if (m > 0) {
-    const MatX Ct = s.asDiagonal() * C.transpose();  // nt x m
+    // Jacobi-scaled rows (as K's), so the rank test sees the end conditions' geometry, not the units.
+    VecX s(nt);
+    for (int i = 0; i < nt; ++i)
+      s[i] = std::abs(lin.K(i, i)) > 1e-300 ? 1.0 / std::sqrt(std::abs(lin.K(i, i))) : 1.0;
+    const MatX Ct = s.asDiagonal() * lin.Ct.leftCols(m);
     Eigen::HouseholderQR<MatX> qr(Ct);
     const MatX R = qr.matrixQR().topRows(m).triangularView<Eigen::Upper>();
     const double big = Ct.norm();
@@ -50,41 +40,12 @@ std::string stabilityCheck(const Model& model, StaticResidual& F, const VecX& x)
         return "the end conditions are degenerate (their Jacobian has rank < " + std::to_string(m) +
                ", the end force is not determined): e.g. an inextensible line held at exactly its length, or "
                "folded at a joint straight below both its ends; move bottom.position or use axial flexibility";
-    K.applyOnTheLeft(qr.householderQ().adjoint());
-    K.applyOnTheRight(qr.householderQ());
-    K = K.bottomRightCorner(nt - m, nt - m).eval();
+    // The allowed motions: the null space of the unscaled Jacobian (orthonormal).
+    Eigen::HouseholderQR<MatX> q0(lin.Ct.leftCols(m));
+    N = MatX(q0.householderQ()).rightCols(nt - m);
   }
-  const int p = static_cast<int>(K.rows());
-  if (p == 0) return "";
-  double a2 = 0.0;
-  for (int j = 0; j < p; ++j)
-    for (int i = 0; i < j; ++i) a2 += std::pow(K(i, j) - K(j, i), 2);
-  const double asym = 0.5 * std::sqrt(2.0 * a2);  // ||K - K^T||_F / 2
-  MatX A(p, p);
-  auto symmetric = [&](double shift) {  // A = (K + K^T)/2 + shift I
-    A = 0.5 * (K + K.transpose());
-    A.diagonal().array() += shift;
-  };
-  auto definite = [&](double shift) {
-    symmetric(shift);
-    return Eigen::LLT<Eigen::Ref<MatX>>(A).info() == Eigen::Success;
-  };
-  constexpr double kFloor = 1e-9;
-  if (definite(kFloor)) return "";
-  std::ostringstream o;
-  if (!definite(kFloor + 2.0 * asym)) {
-    symmetric(0.0);
-    Eigen::SelfAdjointEigenSolver<MatX> es(A, Eigen::EigenvaluesOnly);
-    o << "the equilibrium is unstable (the stiffness about it, scaled to a unit diagonal, has the eigenvalue "
-      << es.eigenvalues()[0] << ", beyond its asymmetry " << asym << "): a balanced state, not a resting one "
-      << "(e.g. a compressed or folded line)";
-    return o.str();
-  }
-  A = K;
-  if (Eigen::PartialPivLU<Eigen::Ref<MatX>>(A).determinant() < 0.0)
-    return "the equilibrium is unstable (the stiffness about it has a negative determinant: a static divergence "
-           "under the steady loads)";
-  return "";
+  // Noise of K's central differences (steps 1e-6): ~1e-9 of its entries (measured).
+  return linearStability(lin.K, lin.C, lin.M, N, 1e-9).describe();
 }
 
 // Seabed geometries without a resting state (empty if none applies). An anchor deeper in the seabed
@@ -174,7 +135,7 @@ EquilibriumCheck checkEquilibrium(const Model& model, const StaticsProblem& prob
     o << "tension: a joint carries " << c.max_joint_force << " N, more than " << kTensionLoadFactor
       << " x the line's load (" << c.load << " N)";
   } else {
-    const std::string unstable = statics_detail::stabilityCheck(model, F, x);
+    const std::string unstable = statics_detail::stabilityCheck(model, problem, at, end_force, t);
     if (!unstable.empty()) o << "stability: " << unstable;
   }
   c.message = o.str();

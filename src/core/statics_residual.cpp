@@ -3,18 +3,39 @@
 #include <cmath>
 
 #include "riser_sim/chain_kinematics.h"
+#include "riser_sim/forces/morison_drag.h"
 #include "riser_sim/forces/seabed.h"
 
 namespace riser_sim {
 namespace statics_detail {
 
-StaticTerms::StaticTerms(const Model& model, double t) : model_(model) {
+StaticTerms::StaticTerms(const Model& model, double t) : model_(model), t_(t) {
   for (const auto& term : model.terms()) {
     std::unique_ptr<ForceTerm> steady = term->steadyTerm(t);
     original_.push_back(steady ? steady.get() : term.get());
     if (steady) owned_.push_back(std::move(steady));
   }
   terms_ = original_;
+  const WaterSpec* w = nullptr;
+  for (const auto& term : model.terms())
+    if (const auto* d = dynamic_cast<const MorisonDrag*>(term.get())) w = &d->water().spec();
+  if (w && w->enabled) {
+    has_current_ = w->current.velocity.norm() > 0.0 || w->current.acceleration.norm() > 0.0;
+    for (const CurrentSpec::Point& p : w->current.profile) has_current_ |= p.vx != 0.0 || p.vy != 0.0;
+  }
+}
+
+void StaticTerms::scaleCurrent(double factor) {
+  for (size_t k = 0; k < original_.size(); ++k) {
+    std::unique_ptr<ForceTerm> scaled = model_.terms()[k]->steadyTerm(t_, factor);
+    if (!scaled) continue;
+    if (factor == 1.0) {
+      terms_[k] = original_[k];
+      continue;
+    }
+    owned_.push_back(std::move(scaled));
+    terms_[k] = owned_.back().get();
+  }
 }
 
 double StaticTerms::seabedLevel() const {

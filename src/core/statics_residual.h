@@ -20,9 +20,14 @@ class StaticTerms {
   double seabedLevel() const;       // highest seabed level (-inf without one) [m]
   double seabedStiffness() const;   // its normal stiffness per contact point (0 without) [N/m]
   void scaleSeabed(double factor);  // normal stiffness x factor (1: as the scene says)
+  // The current's velocity x factor (1: as the scene says), for the continuation in the current.
+  void scaleCurrent(double factor);
+  bool hasCurrent() const { return has_current_; }  // some term sees a non-zero steady current
 
  private:
   const Model& model_;
+  double t_;
+  bool has_current_ = false;
   std::vector<std::unique_ptr<ForceTerm>> owned_;
   std::vector<const ForceTerm*> terms_;
   std::vector<const ForceTerm*> original_;
@@ -80,8 +85,10 @@ double netWeightPerLength(const Model& model, const StaticTerms& terms, const Ve
 
 // Seabed geometries without a resting state (statics_check.cpp): empty if none, else the reason.
 std::string seabedGeometry(const Model& model, const StaticsProblem& p, const StaticTerms& terms);
-// Stability of the equilibrium at x (statics_check.cpp): empty if stable, else the reason.
-std::string stabilityCheck(const Model& model, StaticResidual& F, const VecX& x);
+// Stability of the equilibrium (statics_check.cpp): its linearisation with drag and damping (the modal
+// analysis's) on the motions the end conditions allow has no growing mode. Empty if stable, else the reason.
+std::string stabilityCheck(const Model& model, const StaticsProblem& problem, const Kinematics& kin,
+                           const Vec2& end_force, double t);
 
 }  // namespace statics_detail
 }  // namespace riser_sim

@@ -58,7 +58,9 @@ WaterKinematics::WaterKinematics(const WaterSpec& spec, double gravity) : spec_(
     add(std::sqrt(2.0 * scale * S[i] * dw), lo + (i + 0.5) * dw, 2.0 * M_PI * (rng() / 4294967296.0));
 }
 
-WaterKinematics WaterKinematics::steady(double t) const {
+WaterKinematics WaterKinematics::steady(double t) const { return steady(t, 1.0); }
+
+WaterKinematics WaterKinematics::steady(double t, double current_factor) const {
   WaterSpec s = spec_;
   s.waves.height = 0.0;
   s.waves.significant_height = 0.0;
@@ -66,6 +68,10 @@ WaterKinematics WaterKinematics::steady(double t) const {
   c.velocity += c.acceleration * t;
   for (CurrentSpec::Point& p : c.profile) p.vx += c.acceleration.x() * t;
   c.acceleration.setZero();
+  if (current_factor != 1.0) {
+    c.velocity *= current_factor;
+    for (CurrentSpec::Point& p : c.profile) p.vx *= current_factor, p.vy *= current_factor;
+  }
   WaterKinematics w(s, 0.0);  // no waves: gravity unused
   return w;
 }

@@ -17,6 +17,9 @@ class HydroInertia : public ForceTerm {
   std::unique_ptr<ForceTerm> steadyTerm(double t) const override {
     return std::make_unique<HydroInertia>(water_.steady(t), cm_, ca_t_);
   }
+  std::unique_ptr<ForceTerm> steadyTerm(double t, double current_factor) const override {
+    return std::make_unique<HydroInertia>(water_.steady(t, current_factor), cm_, ca_t_);
+  }
   void addForces(const Model& model, const TermData*, const Kinematics& kin, double t, VecX& Q) const override;
   bool hasInertia() const override { return cm_ != 1.0 || ca_t_ != 0.0; }
   void addInertia(const Model& model, const Kinematics& kin, double t, AlignedVector<Mat4>& M,

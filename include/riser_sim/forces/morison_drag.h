@@ -11,8 +11,12 @@ class MorisonDrag : public ForceTerm {
   MorisonDrag(const WaterKinematics& water, double drag_tangential, double drag_normal)
       : water_(water), cd_t_(drag_tangential), cd_n_(drag_normal) {}
   std::string name() const override { return "morison_drag"; }
+  const WaterKinematics& water() const { return water_; }
   std::unique_ptr<ForceTerm> steadyTerm(double t) const override {
     return std::make_unique<MorisonDrag>(water_.steady(t), cd_t_, cd_n_);
+  }
+  std::unique_ptr<ForceTerm> steadyTerm(double t, double current_factor) const override {
+    return std::make_unique<MorisonDrag>(water_.steady(t, current_factor), cd_t_, cd_n_);
   }
   void addForces(const Model& model, const TermData*, const Kinematics& kin, double t, VecX& Q) const override;
   double power(const Model& model, const TermData*, const Kinematics& kin, double t) const override;

@@ -87,6 +87,10 @@ struct InitialState3 {
 
 // The initial state (initial_state.cpp). The scene without its waves: what the statics and the equilibrium check see (the current stays, steady at t = 0).
 Scene stillWater(const Scene& scene);
+// Throws std::runtime_error("initial: ... fails the check stability: ...") unless the equilibrium init.kin (its end
+// force, spins and hang-off frame) has no growing mode in the scene's still water (spatialStability, statics.h);
+// held_end: a displaced free end held horizontally where it is.
+void checkStable(const Scene& scene, const InitialState3& init, bool held_end);
 // Largest |acceleration| [m/s^2] of A_0..A_n and of the end of the 3D model of the scene in the state kin
 // at rest (velocities ignored), with end_force on the end (free bottom) or the end pinned where kin puts it;
 // `where` gets the rfe. ~0 for an equilibrium: solveInitialState3's check.

@@ -2,6 +2,7 @@
 // (Newton with the finite-difference stiffness of the terms' generalised forces): hanging from A_0 (a pinned
 // end held), and a free end held horizontally by a force. Free or pinned bottom only.
 #pragma once
+#include "riser_sim/linear_stability.h"
 #include "riser_sim/spatial/model.h"
 #include "riser_sim/spatial/torsion.h"
 
@@ -37,6 +38,15 @@ Kinematics3 spatialEquilibrium(const SpatialModel& model, const Kinematics3& gue
 Kinematics3 spatialEquilibriumHeldEnd(const SpatialModel& model, const Kinematics3& guess, const Vec2& xy, Vec3& force,
                                       int iterations = 30, const SpatialModalOptions& options = SpatialModalOptions(),
                                       AlignedVector<Vec3>* material_axes = nullptr);
+
+// The stability of an equilibrium at rest (the statics' criterion, linear_stability.h) from the modes'
+// linearisation (RestLine: K, M_θ, and C = -∂Q_θ/∂θ' of drag and damping): a pinned end held (its anchor force a
+// dead load, the motions in the null space of Φ); a free end held horizontally where it is when `held_end` (the
+// horizontal end force a dead load, end_force [N]); else free with end_force a dead load. The model: the scene's
+// in still water (its steady current).
+LinearStability spatialStability(const SpatialModel& model, const Kinematics3& equilibrium, bool held_end,
+                                 const SpatialModalOptions& options = SpatialModalOptions(),
+                                 const AlignedVector<Vec3>* material_axes = nullptr);
 
 }  // namespace spatial
 }  // namespace riser_sim

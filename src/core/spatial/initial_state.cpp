@@ -77,6 +77,19 @@ void checkBendingAxis(const Scene& scene, const Kinematics3& kin) {
 
 }  // namespace
 
+void checkStable(const Scene& scene, const InitialState3& init, bool held_end) {
+  const std::shared_ptr<SpatialModel> model = buildSpatialModel(stillWater(scene));
+  if (scene.bottom == BottomBoundary::kPinned) model->setBottom(BottomBoundary::kPinned, init.kin.back().end());
+  else if (init.end_force.squaredNorm() > 0.0) model->addTerm(std::make_unique<EndLoad3>(init.end_force));
+  SpatialModalOptions o;
+  o.hang_off = init.hang_off;
+  const LinearStability s =
+      spatialStability(*model, init.kin, held_end, o, init.material_axes.empty() ? nullptr : &init.material_axes);
+  if (!s.stable)
+    throw std::runtime_error("initial: the " + std::string(name(scene.initial.type)) + " equilibrium (" + init.about +
+                             ") fails the check stability: " + s.describe());
+}
+
 Scene stillWater(const Scene& scene) {
   Scene s = scene;
   s.water.waves.height = 0.0;
@@ -296,6 +309,7 @@ InitialState3 solveInitialState3(const Scene& scene, const Vec3& top) {
     throw std::runtime_error("initial: the " + std::string(name(kind)) + " equilibrium is not at rest in twist: " +
                              fmt(init.max_twist_moment) + " N m about rfe " + std::to_string(moment_where) +
                              "'s axis (bound " + fmt(init.twist_moment_bound) + " N m from initial.tolerance)");
+  checkStable(scene, init, kind == InitialKind::kDisplaced && !free_hang);
   return init;
 }
 

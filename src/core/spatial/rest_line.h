@@ -83,6 +83,22 @@ class RestLine {
     }
     return K;
   }
+  // C = -∂Q_θ/∂θ' at θ' = 0 (drag, damping; the velocity-product terms vanish there): central differences.
+  MatX damping(const VecX& theta0, const SpatialModel& model) {
+    MatX C(p_, p_);
+    y_.head(p_) = theta0;
+    for (int c = 0; c < p_; ++c) {
+      const double h = fd_step_ * (isDelta(c) ? model.line().segmentLength() : 1.0);  // [1/s] or [m/s]
+      y_[p_ + c] = h;
+      f_.forces(0.0, y_, charts_, top_, *data_);
+      C.col(c) = -data_->rhs;
+      y_[p_ + c] = -h;
+      f_.forces(0.0, y_, charts_, top_, *data_);
+      C.col(c) = (C.col(c) + data_->rhs) / (2.0 * h);
+      y_[p_ + c] = 0.0;
+    }
+    return C;
+  }
   // Max |Q_θ + Φᵀ λ| (λ the anchor's force, pinned) relative to the weight (Δ rows, N) and to weight x length
   // (chart rows, N m).
   double residual(const VecX& theta, const SpatialModel& model) {
