@@ -28,8 +28,8 @@ struct LinearStability {
 
 // Above this p the first-order eigen-solve is done in the subspace of the kReducedModes lowest undamped modes
 // of (K_sym, M) (the divergence of K_sym is still tested on every coordinate by Cholesky).
-constexpr int kDenseStabilityLimit = 1200;
-constexpr int kReducedModes = 300;
+constexpr int kDenseStabilityLimit = 500;
+constexpr int kReducedModes = 200;
 
 // K, C, M: p x p in the coordinates θ (C may be empty: undamped); N: an orthonormal basis (columns) of the motions
 // the end conditions allow, or empty (all). noise: the relative finite-difference noise of K's entries.

@@ -119,7 +119,8 @@ PlanarLinearisation linearise(const Model& model, const Kinematics& equilibrium,
   data.startRun(model, equilibrium);
 
   const Vec2 top = equilibrium[0].A;
-  const statics_detail::StaticTerms steady(model, options.time);  // no waves: modes about the still-water state
+  statics_detail::StaticTerms steady(model, options.time);  // no waves: modes about the still-water state
+  if (options.current_factor != 1.0) steady.scaleCurrent(options.current_factor);
   Chain chain(model, steady, data, top, options.time);
   const int nt = chain.size(), k = chain.k();
   lin.k = k;

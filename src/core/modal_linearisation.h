@@ -12,6 +12,7 @@ struct LinearisationOptions {
   double fd_step = 1e-6;  // central differences: rad for φ, x segment length for Δ (θ' alike, per s)
   bool solve_anchor = false;  // add the anchor's reaction (least squares on the end point's Jacobian) to the load
   bool damping = false;       // also C = -∂Q_θ/∂θ' at rest
+  double current_factor = 1.0;  // the current's velocity x this (the statics' continuation in the current)
 };
 
 // In the independent coordinates θ (k per rfe), A_0 held, the end load a dead load:

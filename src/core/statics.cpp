@@ -192,31 +192,35 @@ Attempt seabedRamp(const Model& model, const StaticsProblem& problem, StaticTerm
   return a;
 }
 
-// Why the equilibria followed from still water end before the full current (a fold of the path): the state
-// reached, in the physical terms of the scene.
-std::string currentLimit(const Model& model, const StaticsProblem& p, const Kinematics& kin, const Vec2& end_force) {
+// Where the stable equilibria followed from still water end before the full current (a fold of the path, or a
+// loss of stability): the state reached, in the physical terms of the scene.
+std::string currentLimit(const Model& model, const StaticsProblem& p, const StaticTerms& terms, const Kinematics& kin,
+                         const Vec2& end_force) {
   using Kind = StaticsProblem::Kind;
   std::ostringstream o;
   double highest = -INFINITY;
   for (const BodyKinematics& b : kin) highest = std::max(highest, b.end().y());
   const double lean = std::atan2(std::abs(kin.back().end().x() - p.top.x()), p.top.y() - kin.back().end().y());
-  o << "the line leans " << lean * 180.0 / M_PI << " deg from the vertical there";
+  o << "the end " << lean * 180.0 / M_PI << " deg from the vertical below the hang-off";
   double surface = INFINITY;
   for (const auto& term : model.terms())
     if (const auto* d = dynamic_cast<const MorisonDrag*>(term.get())) surface = d->water().spec().surface;
-  if (std::isfinite(surface) && highest > surface - model.segmentLength())
-    o << ", the line at the water surface (its highest joint " << highest - surface << " m from it): in more current "
-      << "the drag lifts it out of the water, where neither drag nor buoyancy holds it";
   if (highest > p.top.y() - 1e-3 * model.length())
     o << ", its highest point " << highest - p.top.y() << " m above the hang-off: in more current it would have to "
       << "stand above its hang-off, which no resting state does";
-  else if (p.kind == Kind::kBetweenPoints)
-    o << ", the anchor pulling " << end_force.norm() << " N: the drag beyond this exceeds what the line's tension "
-      << "between the hang-off and the anchor can hold in a stable shape";
+  else if (std::isfinite(surface) && surface < p.top.y() && highest > surface - 0.5 * model.segmentLength())
+    o << ", a joint at the water surface (" << highest - surface << " m): in more current the drag lifts the line "
+      << "out of the water, where neither drag nor buoyancy holds it";
+  if (p.kind == Kind::kBetweenPoints)
+    o << ", the anchor pulling " << end_force.norm() << " N (a pinned line: its tension between the hang-off and "
+      << "the anchor holds no stable shape against more drag)";
   else if (p.kind == Kind::kEndDisplaced)
-    o << ", the end held by " << end_force.x() << " N: the drag beyond this turns the line over";
-  else
-    o << ": the drag beyond this turns the line over";
+    o << ", the end held by " << end_force.x() << " N";
+  if (std::isfinite(terms.seabedLevel())) {
+    int laid = 0;
+    for (const BodyKinematics& b : kin) laid += b.end().y() <= terms.seabedLevel() ? 1 : 0;
+    o << ", " << laid << " joints on the seabed (their contacts switch as the drag drags them)";
+  }
   return o.str();
 }
 
@@ -291,7 +295,11 @@ StaticsResult solveStatics(const Model& model, const StaticsProblem& problem, do
     terms.scaleCurrent(0.0);
     std::string still_failures;
     Attempt c = attempts(loose, false, still_failures);
+    // Each state on the path must stay stable (the line would leave an unstable one): a step that lands on an
+    // unstable state is halved like one Newton fails on, so the path ends where it folds or loses stability.
     double s = 0.0, step = 0.25;  // the drag's fraction of the scene's
+    std::string lost;             // why the last refused step's state was unstable
+    Kinematics kin(model.bodies());
     if (c.converged) {
       for (; s < 1.0 && step > 1e-3;) {
         const double next = std::min(s + step, 1.0);
@@ -299,8 +307,13 @@ StaticsResult solveStatics(const Model& model, const StaticsProblem& problem, do
         VecX x = c.x;
         int it = 0;
         double r = INFINITY;
-        const bool ok = newton(F, x, next < 1.0 ? loose : problem, it, r);
+        bool ok = newton(F, x, next < 1.0 ? loose : problem, it, r);
         c.iterations += it;
+        if (ok) {
+          F.toKinematics(x, kin);
+          const std::string u = statics_detail::stabilityCheck(model, problem, kin, F.endForce(x), t, std::sqrt(next));
+          if (!u.empty()) ok = false, lost = u;
+        }
         if (ok) c.x = x, c.residual = r, s = next, step = std::min(2.0 * step, 0.5);
         else step *= 0.5;
       }
@@ -310,10 +323,10 @@ StaticsResult solveStatics(const Model& model, const StaticsProblem& problem, do
     if (!c.converged) {
       o << "in still water (" << still_failures << ")";
     } else if (s < 1.0) {
-      Kinematics kin(model.bodies());
       F.toKinematics(c.x, kin);
-      o << "beyond " << std::sqrt(s) << " x the current's speed (the equilibria from still water end there: "
-        << currentLimit(model, problem, kin, F.endForce(c.x)) << ")";
+      o << "beyond " << std::sqrt(s) << " x the current's speed (the stable equilibria from still water end there";
+      if (!lost.empty()) o << ", the next one is unstable";
+      o << ": " << currentLimit(model, problem, terms, kin, F.endForce(c.x)) << ")";
     } else {
       Kinematics kin(model.bodies());
       F.toKinematics(c.x, kin);

@@ -17,10 +17,11 @@ namespace statics_detail {
 // contacts sticking, C = -∂Q_θ/∂θ' from drag and damping, M of the independent formulation), on the motions that
 // keep the end conditions (the null space of their Jacobian), has no growing mode (linear_stability.h).
 std::string stabilityCheck(const Model& model, const StaticsProblem& problem, const Kinematics& kin,
-                           const Vec2& end_force, double t) {
+                           const Vec2& end_force, double t, double current_factor) {
   using Kind = StaticsProblem::Kind;
   modal_detail::LinearisationOptions lo;
   lo.time = t;
+  lo.current_factor = current_factor;
   lo.damping = true;
   const modal_detail::PlanarLinearisation lin = modal_detail::linearise(model, kin, end_force, lo);
   const int nt = static_cast<int>(lin.K.rows());

@@ -88,7 +88,7 @@ std::string seabedGeometry(const Model& model, const StaticsProblem& p, const St
 // Stability of the equilibrium (statics_check.cpp): its linearisation with drag and damping (the modal
 // analysis's) on the motions the end conditions allow has no growing mode. Empty if stable, else the reason.
 std::string stabilityCheck(const Model& model, const StaticsProblem& problem, const Kinematics& kin,
-                           const Vec2& end_force, double t);
+                           const Vec2& end_force, double t, double current_factor = 1.0);
 
 }  // namespace statics_detail
 }  // namespace riser_sim
