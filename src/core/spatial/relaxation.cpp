@@ -79,6 +79,14 @@ Relaxed3 relaxToRest(const Scene& scene, const Kinematics3& guess, const Vec3& t
   // The drag as the static load on the line held still (its damping would overdamp the slow modes).
   Scene dragless = still;
   dragless.hydro.drag_normal = dragless.hydro.drag_tangential = 0.0;
+  // The rest does not depend on inertia, so the relaxation chooses the spins': none at the end body, and the line's
+  // at most a solid rod's m D²/8, so no slow, lightly damped torsional mode (an end body's polar inertia on a soft
+  // twist) outlasts the budget (its steps kill the fast ones); the translations keep their masses under the damping
+  // α M, which decays every mode at α/2 whatever the masses.
+  dragless.torsion.end_polar_inertia = 0.0;
+  const double D = dragless.line.outer_diameter;
+  if (D > 0.0)
+    dragless.torsion.polar_inertia = std::min(dragless.torsion.polar_inertia, dragless.line.mass_per_length * D * D / 8.0);
   // The seabed's friction and tangential damper vanish at rest; they would only slow the creep to it.
   dragless.seabed.friction_axial = dragless.seabed.friction_lateral = dragless.seabed.damping_tangential = 0.0;
   std::shared_ptr<SpatialModel> model = buildSpatialModel(dragless);
