@@ -85,6 +85,12 @@ target_compile_options(riser_sim_core PRIVATE ${RISER_SIM_OPT} -fno-semantic-int
 set(RISER_SIM_PCH_HEADERS <Eigen/Dense> <algorithm> <cmath> <functional> <memory> <sstream> <stdexcept>
   <string> <vector>)
 target_precompile_headers(riser_sim_core PRIVATE ${RISER_SIM_PCH_HEADERS})
+# Installed for downstream packages: find_package(catkin REQUIRED COMPONENTS riser_sim) gives the headers and
+# ${catkin_LIBRARIES} the core (catkin_package in CMakeLists.txt exports it).
+install(TARGETS riser_sim_core
+  LIBRARY DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION}
+  ARCHIVE DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION})
+install(DIRECTORY include/riser_sim/ DESTINATION ${CATKIN_PACKAGE_INCLUDE_DESTINATION})
 
 if(CATKIN_ENABLE_TESTING)
   # One precompiled header (Eigen, gtest, std) for every core gtest: ~2.5 s less CPU per test file.

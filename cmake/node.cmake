@@ -37,10 +37,10 @@ install(TARGETS riser_sim_node riser_sim_ros riser_sim_nodelets
   RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION}
   LIBRARY DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION}
   ARCHIVE DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION})
-install(FILES launch/riser_sim.launch launch/two_risers.launch launch/riser_nodelet.launch launch/many_risers.launch
-  launch/riser_chain.launch DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION}/launch)
+install(DIRECTORY include/riser_sim_ros/ DESTINATION ${CATKIN_GLOBAL_INCLUDE_DESTINATION}/riser_sim_ros)
+# Every launch, scene, parameter and rviz file: a new one is installed without a line here.
+install(DIRECTORY launch config rviz DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION})
 install(FILES nodelet_plugins.xml DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION})
-install(FILES config/node_defaults.yaml DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION}/config)
 
 if(CATKIN_ENABLE_TESTING)
   find_package(rostest REQUIRED)

@@ -30,6 +30,12 @@ catkin_make -DPYTHON_EXECUTABLE=/usr/bin/python3 run_tests -j1 >"$ws/run_tests.l
 rc_run=$?
 phase "gtests and rostests"
 grep -E "^\[ +(RUN|OK|FAILED|PASSED) +\]|FAILURE|Error|error:" "$ws/run_tests.log" | grep -v "^\[ RUN" | tail -n 200
+# The install space on its own (test/install/install_space.sh): the CLI on every scene, the launch file, a
+# downstream package linking the core. After run_tests: it builds the install target in the same workspace.
+RISER_SIM_SKIP_TESTS="$skip" RISER_SIM_WS="$ws" "$root/test/install/install_space.sh" "$ws/build/test_results" \
+  >"$ws/install_space_run.log" 2>&1
+grep -E "^install space: " "$ws/install_space_run.log"
+phase "install space"
 [ -n "$prebuild_pid" ] && wait "$prebuild_pid"  # a failed build is reported by its step below
 phase "sanitizer and fuzzer builds"
 # The core's and the CLI's gtests again under ASan + UBSan (docs/hardening.md); their JUnit files go
