@@ -45,6 +45,20 @@ void parseCurrent(const Section& env, Scene& s) {
   if (cur.has("profile")) parseProfile(cur, planar, c);
 }
 
+// Airy waves past breaking are refused: a height above 1/7 of the deep-water wavelength g T²/(2π) (Michell's
+// limit; the wavelength at finite depth is shorter, so this refuses only waves that break at any depth) or
+// above 0.78 of the depth (the shallow-water limit).
+void checkBreaking(const std::string& key, double H, double T, double depth, double g) {
+  const double L0 = g * T * T / (2.0 * M_PI);
+  if (L0 > 0.0 && H > L0 / 7.0)
+    throw SceneError(key, formatNumber(H) + " m is " + formatNumber(H / L0) + " of the deep-water wavelength " +
+                              formatNumber(L0) + " m at the period " + formatNumber(T) +
+                              " s: past breaking (H/L <= 1/7); lower the height or raise the period");
+  if (H > 0.78 * depth)
+    throw SceneError(key, formatNumber(H) + " m is " + formatNumber(H / depth) + " of the water depth " +
+                              formatNumber(depth) + " m (environment.waves.depth): past breaking (H/h <= 0.78)");
+}
+
 void parseWaves(const Section& env, Scene& s) {
   const Section w = env.section("waves", {"type", "height", "period", "phase", "direction", "heading", "depth", "ramp",
                                           "significant_height", "peak_period", "gamma", "components", "seed"});
@@ -72,8 +86,9 @@ void parseWaves(const Section& env, Scene& s) {
   wave.components = w.has("components") ? w.integer("components") : 100;
   if (wave.components < 1 || wave.components > 2000)
     throw SceneError(w.key("components"), "must be in [1, 2000], got " + std::to_string(wave.components));
-  const int seed = w.has("seed") ? w.integer("seed") : 1;
-  if (seed < 0) throw SceneError(w.key("seed"), "must be >= 0, got " + std::to_string(seed));
+  const long long seed = w.has("seed") ? toInteger64(w.at("seed"), w.key("seed")) : 1;
+  if (seed < 0 || seed > 4294967295LL)
+    throw SceneError(w.key("seed"), "must be in [0, 4294967295] (32 bits), got " + std::to_string(seed));
   wave.seed = static_cast<unsigned>(seed);
   wave.direction = w.number("direction", 1.0);
   if (wave.direction != 1.0 && wave.direction != -1.0) throw SceneError(w.key("direction"), "must be 1 or -1");
@@ -86,6 +101,8 @@ void parseWaves(const Section& env, Scene& s) {
   requirePositive(w.key("depth"), wave.depth);
   wave.ramp = w.number("ramp", 0.0);
   requireNonNegative(w.key("ramp"), wave.ramp);
+  if (regular) checkBreaking(w.key("height"), wave.height, wave.period, wave.depth, s.gravity);
+  else checkBreaking(w.key("significant_height"), wave.significant_height, wave.peak_period, wave.depth, s.gravity);
 }
 
 }  // namespace
@@ -142,8 +159,8 @@ void parseSeabed(const Section& root, Scene& s) {
   s.seabed.friction_velocity = b.number("friction_velocity", 0.01);
   requirePositive(b.key("friction_velocity"), s.seabed.friction_velocity);
   const bool planar = s.space == SpaceKind::kPlanar;
-  for (const char* k : {"friction_axial", "friction_lateral"})
-    if (planar && b.number(k, 0.0) > 0.0)
+  for (const char* k : {"friction_axial", "friction_lateral", "friction_velocity"})
+    if (planar && b.has(k) && (b.number(k) > 0.0 || std::string(k) == "friction_velocity"))
       throw SceneError(b.key(k), "Coulomb friction is in the 3D core (set space: spatial); the planar seabed holds "
                                  "the line with tangential springs anchored at touchdown (stiffness_tangential)");
   // A sloped plane [deg in the file]: slope in [0, 45), heading any.

@@ -74,7 +74,18 @@ inline double toNumber(const YAML::Node& node, const std::string& key) {
 
 inline int toInteger(const YAML::Node& node, const std::string& key) {
   int v = 0;
+  long long wide = 0;
+  if (node.IsScalar() && !YAML::convert<int>::decode(node, v) && YAML::convert<long long>::decode(node, wide))
+    throw SceneError(key, "must be an integer within +-2147483647, got " + describe(node));
   if (!node.IsScalar() || !YAML::convert<int>::decode(node, v))
+    throw SceneError(key, "expected an integer, got " + describe(node));
+  return v;
+}
+
+// An integer of any size a scene holds (seeds: 32 bits unsigned).
+inline long long toInteger64(const YAML::Node& node, const std::string& key) {
+  long long v = 0;
+  if (!node.IsScalar() || !YAML::convert<long long>::decode(node, v))
     throw SceneError(key, "expected an integer, got " + describe(node));
   return v;
 }

@@ -195,6 +195,27 @@ const BadScene kBadScenes[] = {
     // ignored keys of other variants are still type-checked
     {"{line: {length: 1, elements: 1, EA: 1, EI: 0, mass_per_length: 1}, top: {motion: {type: fixed, period: x}}}",
      "top.motion.period", "expected a number"},
+    // an integer beyond int says so, not "expected an integer"
+    {"{line: {length: 1, elements: 3000000000, EA: 1, EI: 0, mass_per_length: 1}}", "line.elements",
+     "must be an integer within +-2147483647"},
+    // JONSWAP seeds are 32-bit unsigned: 2^31 is one, 2^32 is not
+    {"{line: {length: 1, elements: 1, EA: 1, EI: 0, mass_per_length: 1, outer_diameter: 0.1}, environment: {water: "
+     "{density: 1025}, waves: {type: jonswap, significant_height: 2, peak_period: 9, seed: 4294967296}}}",
+     "environment.waves.seed", "must be in [0, 4294967295]"},
+    // waves past breaking: H/L = 1.4 in deep water (L0 = g T^2 / 2 pi = 1.56 m at T = 1 s), H/h > 0.78 in shallow
+    {"{line: {length: 1, elements: 1, EA: 1, EI: 0, mass_per_length: 1, outer_diameter: 0.1}, environment: {water: "
+     "{density: 1025}, waves: {height: 2.2, period: 1}}}",
+     "environment.waves.height", "past breaking (H/L <= 1/7)"},
+    {"{line: {length: 1, elements: 1, EA: 1, EI: 0, mass_per_length: 1, outer_diameter: 0.1}, environment: {water: "
+     "{density: 1025}, waves: {type: jonswap, significant_height: 30, peak_period: 8}}}",
+     "environment.waves.significant_height", "past breaking (H/L <= 1/7)"},
+    {"{line: {length: 1, elements: 1, EA: 1, EI: 0, mass_per_length: 1, outer_diameter: 0.1}, environment: {water: "
+     "{density: 1025}, waves: {height: 4, period: 12, depth: 5}}}",
+     "environment.waves.height", "past breaking (H/h <= 0.78)"},
+    // Coulomb friction keys, friction_velocity included, belong to the 3D seabed
+    {"{line: {length: 1, elements: 1, EA: 1, EI: 0, mass_per_length: 1}, seabed: {level: -10, stiffness_normal: 1e5, "
+     "friction_velocity: 0.05}}",
+     "seabed.friction_velocity", "Coulomb friction is in the 3D core"},
 };
 
 }  // namespace
@@ -214,6 +235,18 @@ TEST(SceneYaml, BadScenesNameTheKey) {
       }
     }
   }
+}
+
+// The largest seed, and waves just below breaking (H/L0 = 0.14 < 1/7), load.
+TEST(SceneYaml, EdgeOfTheSeaLoads) {
+  const std::string line = "line: {length: 1, elements: 1, EA: 1, EI: 0, mass_per_length: 1, outer_diameter: 0.1}\n";
+  const Scene a = parse(line + "environment: {water: {density: 1025}, waves: {type: jonswap, significant_height: 2, "
+                               "peak_period: 9, seed: 4294967295}}\n");
+  EXPECT_EQ(a.water.waves.seed, 4294967295u);
+  const double L0 = 9.81 * 100.0 / (2.0 * M_PI);  // T = 10 s
+  const Scene b = parse(line + "environment: {water: {density: 1025}, waves: {height: " + std::to_string(0.14 * L0) +
+                        ", period: 10}}\n");
+  EXPECT_NEAR(b.water.waves.height, 0.14 * L0, 1e-6);
 }
 
 TEST(SceneYaml, DuplicateKeyIsAnError) {
