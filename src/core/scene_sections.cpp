@@ -58,6 +58,10 @@ void parseBendingAxes(const Section& line, Scene& s) {
   if (!b.enabled) return;
   if (!s.torsion.enabled)
     throw SceneError(line.key("EI"), "[EI_1, EI_2] needs line.torsion (the material axes turn with the line's spin)");
+  // 3D only, so [x, y, z] only (as flex_joint.axis): a 2-vector's planar [x, z] would be a guess here.
+  const YAML::Node axis = line.at("bending_axis");
+  if (!axis.IsSequence() || axis.size() != 3)
+    throw SceneError(line.key("bending_axis"), "expected [x, y, z], got " + describe(axis));
   b.axis = line.vec3("bending_axis", false);
   if (!(b.axis.allFinite() && b.axis.norm() > 0.0))
     throw SceneError(line.key("bending_axis"), "must be a non-zero direction [x, y, z] (material axis 1 at the hang-off)");

@@ -151,6 +151,7 @@ TEST(SpatialBendingAxesScene, KeysAreChecked) {
   EXPECT_EQ(key(axesScene("[0.0, 1.0, 0.0]", "[9.0e4, -1.0]")), "line.EI[1]");
   EXPECT_EQ(key(axesScene("[0.0, 1.0, 0.0]", "1.0e4")), "line.bending_axis");      // an axis, no pair
   EXPECT_EQ(key(axesScene("[0.0, 0.0, 0.0]")), "line.bending_axis");
+  EXPECT_EQ(key(axesScene("[0.0, 1.0]")), "line.bending_axis");  // [x, y, z] only, as flex_joint.axis
   // Along the top rfe of a straight line hanging down: no direction across it.
   std::string along = axesScene("[0.0, 0.0, 1.0]");
   along.replace(along.find("bottom:"), along.find("solver:") - along.find("bottom:"), "initial: {type: straight}\n");
