@@ -37,6 +37,7 @@ add_library(riser_sim_core
   src/core/linear_stability.cpp
   src/core/scene.cpp
   src/core/run_builder.cpp
+  src/core/line_run.cpp
   src/core/scene_sections.cpp
   src/core/scene_sea_sections.cpp
   src/core/scene_end_sections.cpp

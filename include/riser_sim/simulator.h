@@ -93,6 +93,7 @@ class Simulator : private OdeSystem {
   // inextensible line (tension-governed frequencies rise with the tension during the run). Implicit and
   // adaptive schemes have no such limit; stableStepEstimate() still gives rk4's for reference.
   double highestFrequency() const { return omega_max_; }
+  double energyScale() const { return energy_scale_; }  // m g L [J], the floor of energyDrift()'s scale
   double stableStepEstimate() const;
   // Empty, or why solver.dt is above the explicit scheme's estimated limit, with a safe step (the node
   // refuses to start on it: such a run diverges within milliseconds).

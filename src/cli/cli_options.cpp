@@ -8,11 +8,11 @@ namespace cli {
 
 namespace {
 
-double positiveSeconds(const std::string& option, const std::string& text) {
+double seconds(const std::string& option, const std::string& text, bool zero_ok) {
   char* end = nullptr;
   const double v = std::strtod(text.c_str(), &end);
-  if (text.empty() || *end != '\0' || !std::isfinite(v) || !(v > 0.0))
-    throw UsageError(option + ": expected a number of seconds > 0, got '" + text + "'");
+  if (text.empty() || *end != '\0' || !std::isfinite(v) || !(zero_ok ? v >= 0.0 : v > 0.0))
+    throw UsageError(option + ": expected a number of seconds " + (zero_ok ? ">= 0" : "> 0") + ", got '" + text + "'");
   return v;
 }
 
@@ -25,13 +25,14 @@ std::string usage() {
          "  --scene FILE        scene file (YAML, keys in docs/scene_keys.md)      [required]\n"
          "  --set KEY=VALUE     override a scene key, VALUE parsed as YAML, e.g.\n"
          "                      --set line.elements=40 --set top.position=[1,2]   [repeatable]\n"
-         "  --duration S        simulated time [s] (default: run.duration)\n"
-         "  --csv FILE          time series every --output-dt seconds: t,x_top,y_top,x_end,y_end,\n"
+         "                      --set KEY=null removes the key (it must be in the scene)\n"
+         "  --duration S        simulated time [s] (default: run.duration); 0: the statics alone\n"
+         "  --csv FILE          time series every --output-dt seconds, 3D (z up) for every scene (a\n"
+         "                      planar scene in x-z): t,x_top,y_top,z_top,x_end,y_end,z_end,top_fx,\n"
+         "                      top_fy,top_fz,bottom_fx,bottom_fy,bottom_fz,top_mx,...,bottom_mz,\n"
          "                      tension_top,tension_max,energy,work,energy_drift,constraint_error\n"
-         "                      space: spatial scenes (3D, z up): t,x_top,y_top,z_top,x_end,y_end,\n"
-         "                      z_end,top_fx,top_fy,top_fz,bottom_fx,bottom_fy,bottom_fz,tension_top,...\n"
          "  --output-dt S       CSV row interval [s] (default 0.1)\n"
-         "  --probe-rfe K       adds CSV columns x_rfeK,y_rfeK (middle of rfe K, at the arc length\n"
+         "  --probe-rfe K       adds CSV columns x/y/z_rfeK (middle of rfe K, at the arc length\n"
          "                      of its axial spring) and tension_rfeK (axial force in rfe K) [N];\n"
          "                      K = 0..line.elements                               [repeatable]\n"
          "  --summary           print one JSON line with the results at the end (stdout)\n"
@@ -73,12 +74,12 @@ CliOptions parseOptions(int argc, char** argv) {
     } else if (arg == "--set") {
       o.overrides.push_back(takeValue());
     } else if (arg == "--duration") {
-      o.duration = positiveSeconds(arg, takeValue());
+      o.duration = seconds(arg, takeValue(), true);
     } else if (arg == "--csv") {
       o.csv = takeValue();
       if (o.csv.empty()) throw UsageError("--csv: empty file name");
     } else if (arg == "--output-dt") {
-      o.output_dt = positiveSeconds(arg, takeValue());
+      o.output_dt = seconds(arg, takeValue(), false);
     } else if (arg == "--summary") {
       noValue();
       o.summary = true;

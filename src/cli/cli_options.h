@@ -10,7 +10,7 @@ namespace cli {
 struct CliOptions {
   std::string scene;                   // --scene FILE (required)
   std::vector<std::string> overrides;  // --set key.path=value, in order
-  double duration = -1.0;              // --duration S [s]; < 0: run.duration from the scene
+  double duration = -1.0;              // --duration S [s]; < 0: run.duration; 0: the statics alone
   std::string csv;                     // --csv FILE; empty: no time series
   double output_dt = 0.1;              // --output-dt S [s]: CSV row interval
   bool summary = false;                // --summary: one JSON line on stdout at the end

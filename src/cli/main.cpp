@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <memory>
 #include <time.h>
 #include <sstream>
@@ -12,16 +13,11 @@
 #include "cli_options.h"
 #include "modal_output.h"
 #include "output_file.h"
-#include "riser_sim/run_builder.h"
+#include "riser_sim/line_run.h"
 #include "riser_sim/scene.h"
 #include "riser_sim/scene_yaml.h"
 #include "run_output.h"
 #include "step_loop.h"
-#include "spatial_run.h"
-
-namespace {
-
-}  // namespace
 
 int main(int argc, char** argv) {
   using namespace riser_sim;
@@ -52,7 +48,7 @@ int main(int argc, char** argv) {
   } catch (const SceneError& e) {
     return fail(kExitBadInput, e.what());
   }
-  if (opt.duration > 0.0) scene.duration = opt.duration;
+  if (opt.duration >= 0.0) scene.duration = opt.duration;  // 0: the statics alone
   for (const int k : opt.probe_rfes)
     if (k > scene.elements)
       return fail(kExitBadInput, "--probe-rfe: rfe " + std::to_string(k) + " does not exist (rfes 0.." +
@@ -67,95 +63,130 @@ int main(int argc, char** argv) {
        name(scene.solver.integrator), scene.space == SpaceKind::kSpatial ? "natural" : name(scene.solver.formulation),
        scene.duration, scene.space == SpaceKind::kSpatial ? ", space: spatial (3D)" : "");
   if (scene.top.type == MotionKind::kExternal) info("top.motion.type external: the top is held at top.position offline");
-  if (scene.space == SpaceKind::kSpatial) return runSpatial(scene, opt);  // the 3D path: spatial_run.cpp
   if (opt.modes > 0) {  // statics + modes; a time run only when --duration is given too
     const int rc = runModes(scene, opt.modes, opt.modes_csv, opt.quiet);
-    if (rc != kExitOk || opt.duration <= 0.0) return rc;
+    if (rc != kExitOk || opt.duration < 0.0) return rc;
   }
 
-  std::unique_ptr<Simulator> sim;
-  StaticsResult statics;
+  std::unique_ptr<LineRun> run;
   try {
-    sim = buildSimulator(scene, &statics);
-  } catch (const std::invalid_argument& e) {  // input the scene parser let through
+    run = buildLineRun(scene);
+  } catch (const std::invalid_argument& e) {  // input the scene parser let through, or what the engine cannot run
     return fail(kExitBadInput, e.what());
-  } catch (const std::runtime_error& e) {  // statics did not converge
+  } catch (const std::runtime_error& e) {  // statics did not converge / not an equilibrium
     return fail(kExitDiverged, e.what());
   } catch (const std::exception& e) {
     return fail(kExitInternal, e.what());
   }
-  info("initial state (%s): %s; end force (%g, %g) N", name(scene.initial.type), statics.message.c_str(),
-       statics.end_force.x(), statics.end_force.y());
-  info("%s", stabilityMessage(sim->integrator().explicitFixedStep(), name(scene.solver.integrator),
-                              sim->highestFrequency(), sim->stableStepEstimate(), sim->dt())
+  const StartReport& init = run->start();
+  {
+    char rest[224] = "";
+    if (init.has_rest_acceleration)
+      std::snprintf(rest, sizeof(rest), "; largest acceleration at rest %g m/s^2 (bound %g)", init.initial_acceleration,
+                    init.initial_acceleration_bound);
+    if (init.has_twist_moment)
+      std::snprintf(rest + std::strlen(rest), sizeof(rest) - std::strlen(rest),
+                    "; largest moment on a spin at rest %g N m (bound %g)", init.initial_twist_moment,
+                    init.initial_twist_moment_bound);
+    info("initial state (%s): %s%s%s; end force (%g, %g, %g) N%s", name(scene.initial.type), init.about.c_str(),
+         init.about.empty() ? "" : "; ", init.statics_message.c_str(), init.end_force.x(), init.end_force.y(),
+         init.end_force.z(), rest);
+  }
+  info("%s", stabilityMessage(run->explicitFixedStep(), name(scene.solver.integrator), run->highestFrequency(),
+                              run->stableStepEstimate(), run->dt())
                  .c_str());
 
   OutputFile csv;  // every row batch is checked: a full disk stops the run with exit code 4
   if (!opt.csv.empty()) {
     if (!csv.open("--csv", opt.csv)) return fail(kExitBadInput, csv.error());
-    std::fprintf(csv.get(), "%s\n", csvHeader(opt.probe_rfes).c_str());
+    std::fprintf(csv.get(), "%s\n", csvHeader(opt.probe_rfes, run->bottomMoves(), run->hasTorsion()).c_str());
   }
 
-  // Whole steps: the run ends at the first step at or past the duration; a row every `every` steps.
-  const double dt = sim->dt();
-  const long total_steps = std::max(1L, static_cast<long>(std::ceil(scene.duration / dt - 1e-9)));
-  const long every = outputStride(opt.output_dt, dt, total_steps);
+  // Whole steps: the run ends at the first step at or past the duration (none for duration 0: the statics
+  // alone); a row every `every` steps.
+  const double dt = run->dt();
+  const long total_steps =
+      scene.duration > 0.0 ? std::max(1L, static_cast<long>(std::ceil(scene.duration / dt - 1e-9))) : 0L;
+  const long every = outputStride(opt.output_dt, dt, std::max(1L, total_steps));
 
-  Sample last;
+  RunOutputs last;
   SteppingTime time;
-  const std::string diverged = stepRun(
-      *sim, total_steps, every, csv, [&] { return takeSample(*sim, opt.probe_rfes); },
-      [](const Sample& s) { return allFinite(s); }, [](std::FILE* f, const Sample& s) { writeCsvRow(f, s); }, last,
-      time);
+  const std::string diverged = stepRun(*run, total_steps, every, csv, opt.probe_rfes, last, time);
 
   const double wall_s = time.wall_s, cpu_s = time.cpu_s;
-  const double sim_s = sim->time();
-  const double rtf = wall_s > 0.0 ? sim_s / wall_s : NAN;
+  const double sim_s = run->time();
+  const double rtf = wall_s > 0.0 ? sim_s / wall_s : NAN;  // null without steps
   // The energy balance E - E0 - W closes to round-off on a resolved run (1e-7 on the J-lay at midpoint
   // h = 0.02 s); a scheme that damps what it does not resolve (rosenbrock2 at 0.02 s: 12 %) has moved
   // energy that the line never had, and its forces with it. Never "ok": status "warning" with the reason
   // in the summary and on stderr, exit 0 (the user chose the step; the run finished).
   // Forces with step-to-step noise above kForceNoiseWarning (force_noise.h) are not resolved either.
-  const RunEnd end = runEnd(*sim, total_steps, diverged, last.energy_drift, csv, !opt.csv.empty());
+  const RunEnd end = runEnd(*run, total_steps, diverged, last.energy_drift, csv, !opt.csv.empty());
   const std::string& warning = end.warning;
   int rc = kExitOk;
-  const Integrator::Stats stats = sim->integrator().stats();  // what the steps cost
   if (opt.summary) {
+    const Integrator::Stats stats = run->integratorStats();  // what the steps cost
+    const auto xyz = [](JsonLine& j, const std::string& key, const Vec3& v) {
+      j.add(key + "_x", v.x()).add(key + "_y", v.y()).add(key + "_z", v.z());
+    };
     JsonLine j;
     j.add("status", runStatus(end))
         .add("wall_s", wall_s)
         .add("cpu_s", cpu_s)
         .add("sim_s", sim_s)
-        .add("steps", sim->steps())
+        .add("steps", run->steps())
         .add("rtf", rtf)
         .add("rhs_evaluations", stats.rhs)
         .add("newton_iterations", stats.newton)
         .add("t_last", last.t)
-        .add("x_end", last.x_end)
-        .add("y_end", last.y_end)
-        .add("tension_top", last.tension_top)
-        .add("tension_max", last.tension_max)
-        .add("max_constraint_error", sim->maxConstraintError())
+        .add("x_top", last.top_point.x())
+        .add("y_top", last.top_point.y())
+        .add("z_top", last.top_point.z())
+        .add("x_end", last.end_point.x())
+        .add("y_end", last.end_point.y())
+        .add("z_end", last.end_point.z());
+    xyz(j, "top_force", last.top_force);
+    xyz(j, "bottom_force", last.bottom_force);
+    xyz(j, "top_moment", last.top_moment);
+    xyz(j, "bottom_moment", last.bottom_moment);
+    if (run->hasTopFlexJoint()) j.add("top_moment_max", run->maxTopMoment());
+    if (run->hasBottomFlexJoint()) j.add("bottom_moment_max", run->maxBottomMoment());
+    if (run->bottomMoves())
+      j.add("x_bottom", last.bottom_point.x()).add("y_bottom", last.bottom_point.y()).add("z_bottom", last.bottom_point.z());
+    if (run->hasTorsion()) j.add("top_twist", last.top_twist);
+    j.add("tension_top", last.top_tension)
+        .add("tension_max", last.max_tension)
+        .add("max_constraint_error", run->maxConstraintError())
         .add("energy_drift", last.energy_drift)
-        .add("force_noise_top", sim->forceNoise().total().top)
-        .add("force_noise_max_axial", sim->forceNoise().total().max_axial)
+        .add("force_noise_top", run->forceNoise().total().top)
+        .add("force_noise_max_axial", run->forceNoise().total().max_axial)
+        .add("energy", last.energy)
+        .add("work", last.work)
+        .add("energy_scale", run->energyScale())
         .add("scene", scene.name)
+        .add("space", run->spatial() ? "spatial" : "planar")
         .add("n", scene.elements)
         .add("dt", dt)
-        .add("stable_dt_estimate", sim->stableStepEstimate())
-        .add("omega_max", sim->highestFrequency())
+        .add("stable_dt_estimate", run->stableStepEstimate())
+        .add("omega_max", run->highestFrequency())
         .add("integrator", name(scene.solver.integrator))
-        .add("formulation", name(scene.solver.formulation))
-        .add("statics_iterations", statics.iterations)
-        .add("statics_residual", statics.residual)
-        .add("end_force_x", statics.end_force.x())
-        .add("end_force_y", statics.end_force.y());
+        .add("formulation", run->spatial() ? "natural" : name(scene.solver.formulation))
+        .add("statics_iterations", init.statics_iterations)
+        .add("statics_residual", init.statics_residual);
+    xyz(j, "end_force", init.end_force);
+    if (init.has_rest_acceleration)
+      j.add("initial_acceleration", init.initial_acceleration)
+          .add("initial_acceleration_bound", init.initial_acceleration_bound);
+    if (init.has_twist_moment)
+      j.add("initial_twist_moment", init.initial_twist_moment)
+          .add("initial_twist_moment_bound", init.initial_twist_moment_bound);
     rc = finishRun(end, &j);
   } else {
     rc = finishRun(end, nullptr);
   }
   if (rc != kExitOk) return rc;
-  info("done%s: %g s simulated in %.3f s of stepping (RTF %.3g), %ld steps; end at (%.6g, %.6g) m", warning.empty() ? "" : " (with the warning above)",
-       sim_s, wall_s, rtf, sim->steps(), last.x_end, last.y_end);
+  info("done%s: %g s simulated in %.3f s of stepping (RTF %.3g), %ld steps; end at (%.6g, %.6g, %.6g) m",
+       warning.empty() ? "" : " (with the warning above)", sim_s, wall_s, rtf, run->steps(), last.end_point.x(),
+       last.end_point.y(), last.end_point.z());
   return kExitOk;
 }

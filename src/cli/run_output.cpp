@@ -22,51 +22,44 @@ int fail(int code, const std::string& message) {
   return code;
 }
 
-Sample takeSample(Simulator& sim, const std::vector<int>& probe_rfes) {
-  const LineOutputs& out = sim.outputs();
-  Sample s;
-  s.t = out.t;
-  s.x_top = out.points.front().x();
-  s.y_top = out.points.front().y();
-  s.x_end = out.points.back().x();
-  s.y_end = out.points.back().y();
-  s.tension_top = out.top_tension;
-  s.tension_max = out.max_tension;
-  s.energy = out.kinetic_energy + out.potential_energy;
-  s.work = out.work_in;
-  s.energy_drift = sim.energyDrift();
-  s.constraint_error = out.constraint_error;
-  for (const int k : probe_rfes) {
-    const double l1 = sim.model().rfe(k).length1, phi = out.angles[k];
-    s.probes.push_back(out.points[k].x() + l1 * std::cos(phi));
-    s.probes.push_back(out.points[k].y() + l1 * std::sin(phi));
-    s.probes.push_back(out.axial_force[k]);
-  }
-  return s;
-}
-
-bool allFinite(const Sample& s) {
-  for (double v : {s.t, s.x_top, s.y_top, s.x_end, s.y_end, s.tension_top, s.tension_max, s.energy, s.work,
-                   s.energy_drift, s.constraint_error})
-    if (!std::isfinite(v)) return false;
-  for (double v : s.probes)
-    if (!std::isfinite(v)) return false;
-  return true;
-}
-
-std::string csvHeader(const std::vector<int>& probe_rfes) {
-  std::string h = "t,x_top,y_top,x_end,y_end,tension_top,tension_max,energy,work,energy_drift,constraint_error";
+std::string csvHeader(const std::vector<int>& probe_rfes, bool bottom_moves, bool torsion) {
+  std::string h =
+      "t,x_top,y_top,z_top,x_end,y_end,z_end,top_fx,top_fy,top_fz,bottom_fx,bottom_fy,bottom_fz,top_mx,top_my,top_mz,"
+      "bottom_mx,bottom_my,bottom_mz,tension_top,tension_max,energy,work,energy_drift,constraint_error";
+  if (bottom_moves) h += ",x_bottom,y_bottom,z_bottom";
+  if (torsion) h += ",top_twist";
   for (const int k : probe_rfes) {
     const std::string K = std::to_string(k);
-    h += ",x_rfe" + K + ",y_rfe" + K + ",tension_rfe" + K;
+    h += ",x_rfe" + K + ",y_rfe" + K + ",z_rfe" + K + ",tension_rfe" + K;
   }
   return h;
 }
 
-void writeCsvRow(std::FILE* f, const Sample& s) {
-  std::fprintf(f, "%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g", s.t, s.x_top, s.y_top, s.x_end,
-               s.y_end, s.tension_top, s.tension_max, s.energy, s.work, s.energy_drift, s.constraint_error);
-  for (double v : s.probes) std::fprintf(f, ",%.9g", v);
+bool allFinite(const RunOutputs& o, const std::vector<int>& probe_rfes) {
+  for (const Vec3* v : {&o.top_point, &o.end_point, &o.top_force, &o.bottom_force, &o.top_moment, &o.bottom_moment,
+                        &o.bottom_point})
+    if (!v->allFinite()) return false;
+  for (double v : {o.t, o.top_twist, o.top_tension, o.max_tension, o.energy, o.work, o.energy_drift,
+                   o.constraint_error})
+    if (!std::isfinite(v)) return false;
+  for (const int k : probe_rfes)
+    if (!o.springs[k].allFinite() || !std::isfinite(o.axial_force[k])) return false;
+  return true;
+}
+
+void writeCsvRow(std::FILE* f, const RunOutputs& o, const std::vector<int>& probe_rfes, bool bottom_moves,
+                 bool torsion) {
+  std::fprintf(f, "%.9g", o.t);
+  for (const Vec3* v : {&o.top_point, &o.end_point, &o.top_force, &o.bottom_force, &o.top_moment, &o.bottom_moment})
+    std::fprintf(f, ",%.9g,%.9g,%.9g", v->x(), v->y(), v->z());
+  std::fprintf(f, ",%.9g,%.9g,%.9g,%.9g,%.9g,%.9g", o.top_tension, o.max_tension, o.energy, o.work, o.energy_drift,
+               o.constraint_error);
+  if (bottom_moves) std::fprintf(f, ",%.9g,%.9g,%.9g", o.bottom_point.x(), o.bottom_point.y(), o.bottom_point.z());
+  if (torsion) std::fprintf(f, ",%.9g", o.top_twist);
+  for (const int k : probe_rfes) {
+    const Vec3& p = o.springs[k];
+    std::fprintf(f, ",%.9g,%.9g,%.9g,%.9g", p.x(), p.y(), p.z(), o.axial_force[k]);
+  }
   std::fputc('\n', f);
 }
 

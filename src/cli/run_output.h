@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "output_file.h"
-#include "riser_sim/simulator.h"
+#include "riser_sim/line_run.h"
 
 namespace riser_sim {
 namespace cli {
@@ -15,30 +15,16 @@ double threadCpuSeconds();
 // Prints "riser_sim_cli: error: MESSAGE" on stderr and returns code.
 int fail(int code, const std::string& message);
 
-// One CSV row; the columns are csvHeader().
-struct Sample {
-  double t = 0.0;                   // [s]
-  double x_top = 0.0, y_top = 0.0;  // A_0 [m]
-  double x_end = 0.0, y_end = 0.0;  // end of rfe n (the end mass) [m]
-  double tension_top = 0.0;         // |force on the hang-off| [N]
-  double tension_max = 0.0;         // largest axial force along the line [N]
-  double energy = 0.0;              // T + V [J]
-  double work = 0.0;                // work fed in since t = 0 [J]
-  double energy_drift = 0.0;        // (E - E0 - W) / max(|E0|, m g L) [-]
-  double constraint_error = 0.0;    // largest joint gap [m]
-  // Per probed rfe K (--probe-rfe): x, y of the point at its axial spring (middle of the rfe, arc
-  // length s_begin + l1 from the top) [m] and the axial force in the rfe [N].
-  std::vector<double> probes;
-};
-
-// probe_rfes: rfe indices 0..n (checked by the caller).
-Sample takeSample(Simulator& sim, const std::vector<int>& probe_rfes = {});
-bool allFinite(const Sample& s);
-
-// The base columns, then x_rfeK,y_rfeK,tension_rfeK per probed rfe.
-std::string csvHeader(const std::vector<int>& probe_rfes = {});
-// Writes one row (%.9g). The caller checks allFinite() first: no NaN ever reaches the file.
-void writeCsvRow(std::FILE* f, const Sample& s);
+// The CSV columns of every scene (planar or 3D, one schema): t, x/y/z of the top and the end, the forces and
+// moments on the hang-off and on the anchor, tension_top, tension_max, energy, work, energy_drift,
+// constraint_error; x/y/z_bottom when the bottom moves, top_twist with line.torsion; then per probed rfe K
+// x/y/z_rfeK (its axial spring's point) and tension_rfeK.
+std::string csvHeader(const std::vector<int>& probe_rfes = {}, bool bottom_moves = false, bool torsion = false);
+// Every value of a row is finite (what may be written).
+bool allFinite(const RunOutputs& o, const std::vector<int>& probe_rfes);
+// Writes one row (%.9g) in csvHeader()'s order. The caller checks allFinite() first: no NaN reaches the file.
+void writeCsvRow(std::FILE* f, const RunOutputs& o, const std::vector<int>& probe_rfes, bool bottom_moves,
+                 bool torsion);
 
 // Steps between CSV rows: output_dt / dt rounded, at least 1, at most total_steps (an output_dt beyond
 // the run gives its first and last rows only; the ratio can exceed a long).
@@ -64,8 +50,7 @@ struct RunEnd {
   double sim_s = 0.0;
   long steps = 0, total_steps = 0;
 };
-// The end of a run after its stepping, planar (Simulator) or spatial (SpatialRun): Run has time(), steps(),
-// forceNoise() and forceWarning(). Closes (flushes) the CSV and reads whether it was written completely;
+// The end of a run after its stepping (LineRun: time(), steps(), forceNoise(), forceWarning()). Closes (flushes) the CSV and reads whether it was written completely;
 // a run that did not diverge warns when its energy balance is off by energy_drift (energyWarning) or its
 // forces are noisy (Run::forceWarning), both joined by "; ".
 template <class Run>

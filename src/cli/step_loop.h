@@ -1,11 +1,13 @@
-// The stepping of a CLI run, planar or spatial: whole steps to total_steps, a sample (and a CSV row) every
-// `every` steps; only the stepping is timed (sampling and writing are excluded from wall_s / cpu_s).
+// The stepping of a CLI run: whole steps to total_steps, a CSV row every `every` steps; only the stepping
+// is timed (the outputs and the writing are excluded from wall_s / cpu_s).
 #pragma once
 #include <algorithm>
 #include <chrono>
 #include <string>
+#include <vector>
 
 #include "output_file.h"
+#include "riser_sim/line_run.h"
 #include "run_output.h"
 
 namespace riser_sim {
@@ -16,15 +18,15 @@ struct SteppingTime {
   double cpu_s = 0.0;   // [s] of this thread's CPU time in step()
 };
 
-// Run: step() -> bool, steps(), divergenceReason(). sample() -> Sample, finite(Sample) -> bool,
-// write(FILE*, Sample). last: the initial sample, then the last one taken. Returns why the run stopped
-// early ("" when it reached total_steps or the CSV stopped accepting rows: csv.ok() says which).
-template <class Run, class Sample, class SampleFn, class FiniteFn, class WriteFn>
-std::string stepRun(Run& run, long total_steps, long every, OutputFile& csv, SampleFn sample, FiniteFn finite,
-                    WriteFn write, Sample& last, SteppingTime& time) {
-  last = sample();
-  if (!finite(last)) return "initial state has non-finite outputs";
-  if (csv.isOpen()) write(csv.get(), last);
+// last: the initial outputs, then the last ones taken (copied into its storage: no allocation per row).
+// Returns why the run stopped early ("" when it reached total_steps or the CSV stopped accepting rows:
+// csv.ok() says which). total_steps 0: the initial row alone.
+inline std::string stepRun(LineRun& run, long total_steps, long every, OutputFile& csv,
+                           const std::vector<int>& probe_rfes, RunOutputs& last, SteppingTime& time) {
+  const bool bottom = run.bottomMoves(), torsion = run.hasTorsion();
+  last = run.outputs();
+  if (!allFinite(last, probe_rfes)) return "initial state has non-finite outputs";
+  if (csv.isOpen()) writeCsvRow(csv.get(), last, probe_rfes, bottom, torsion);
   std::chrono::steady_clock::duration wall{0};
   std::string stopped;
   while (csv.ok() && run.steps() < total_steps) {
@@ -39,13 +41,13 @@ std::string stepRun(Run& run, long total_steps, long every, OutputFile& csv, Sam
       stopped = run.divergenceReason();
       break;
     }
-    Sample s = sample();
-    if (!finite(s)) {
+    const RunOutputs& o = run.outputs();
+    if (!allFinite(o, probe_rfes)) {
       stopped = "outputs are not finite";
       break;
     }
-    last = std::move(s);
-    if (csv.isOpen()) write(csv.get(), last);
+    last = o;
+    if (csv.isOpen()) writeCsvRow(csv.get(), last, probe_rfes, bottom, torsion);
   }
   time.wall_s = std::chrono::duration<double>(wall).count();
   return stopped;

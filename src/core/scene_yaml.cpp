@@ -44,6 +44,24 @@ std::string trim(const std::string& s) {
   return s.substr(b, s.find_last_not_of(" \t") - b + 1);
 }
 
+// Removes the key parts from root; a key (or section) that is not there is an error naming it.
+void removeKey(YAML::Node& root, const std::vector<std::string>& parts, const std::string& path) {
+  const auto absent = [&](const std::string& key) {
+    return SceneError(key, "is not in the scene: nothing to remove (" + path + "=null)");
+  };
+  if (!root.IsMap()) throw absent(parts.front());
+  YAML::Node cur = root;
+  std::string prefix;
+  for (size_t i = 0; i + 1 < parts.size(); ++i) {
+    prefix += (i ? "." : "") + parts[i];
+    YAML::Node next = cur[parts[i]];
+    if (!next.IsDefined() || !next.IsMap()) throw absent(prefix);
+    cur.reset(next);
+  }
+  if (!cur[parts.back()].IsDefined()) throw absent(path);
+  cur.remove(parts.back());
+}
+
 }  // namespace
 
 void applyOverride(YAML::Node& root, const std::string& assignment) {
@@ -63,6 +81,10 @@ void applyOverride(YAML::Node& root, const std::string& assignment) {
       throw SceneError(path, "malformed override '" + assignment + "': expected key.path=value with keys made of "
                                                                    "letters, digits and _");
   if (text.empty()) throw SceneError(path, "override '" + assignment + "' has no value");
+  if (text == "null" || text == "~") {  // key=null: the key is absent (removed from the tree)
+    removeKey(root, parts, path);
+    return;
+  }
   YAML::Node value;
   try {
     int budget = kMaxOverrideNodes;

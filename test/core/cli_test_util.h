@@ -149,6 +149,10 @@ inline double num(std::map<std::string, std::string>& j, const std::string& key)
   return j.count(key) ? std::stod(j[key]) : NAN;
 }
 
-const char* kHeader = "t,x_top,y_top,x_end,y_end,tension_top,tension_max,energy,work,energy_drift,constraint_error";
+// The CSV columns of every scene (a planar scene in x-z, z up); column indices below.
+const char* kHeader =
+    "t,x_top,y_top,z_top,x_end,y_end,z_end,top_fx,top_fy,top_fz,bottom_fx,bottom_fy,bottom_fz,top_mx,top_my,top_mz,"
+    "bottom_mx,bottom_my,bottom_mz,tension_top,tension_max,energy,work,energy_drift,constraint_error";
+constexpr size_t kColumns = 25, kXEnd = 4, kYEnd = 5, kZEnd = 6, kTensionTop = 19, kDrift = 23;
 
 }  // namespace cli_test

@@ -19,11 +19,42 @@ TEST(Cli, BadOverrideExits2NamingTheKey) {
   EXPECT_TRUE(r.out.empty()) << r.out;
 }
 
+// --set KEY=null removes the key: the scene reads as if it were not written (its default, or "missing
+// required key"); removing a key the scene does not have is an error naming it.
+TEST(Cli, SetNullRemovesTheKey) {
+  const std::string table1 = kScenes + "paper_table1.yaml";
+  const CliRun required = runCli("--scene " + table1 + " --duration 0 --quiet --set initial.end_dx=null");
+  EXPECT_EQ(required.code, 2);
+  EXPECT_NE(required.err.find("initial.end_dx: missing required key"), std::string::npos) << required.err;
+
+  std::string text = readFile(kChain);
+  const size_t angle = text.find("  angle:");
+  ASSERT_NE(angle, std::string::npos);
+  text.erase(angle, text.find('\n', angle) + 1 - angle);
+  const std::string without = writeScene("chain_without_angle", text);
+  const CliRun removed = runCli("--scene " + kChain + " --duration 0 --summary --quiet --set initial.angle=null");
+  const CliRun written = runCli("--scene " + without + " --duration 0 --summary --quiet");
+  ASSERT_EQ(removed.code, 0) << removed.err;
+  ASSERT_EQ(written.code, 0) << written.err;
+  auto a = summary(removed), b = summary(written);
+  for (const char* key : {"x_end", "z_end", "tension_top", "energy"}) EXPECT_EQ(a[key], b[key]) << key;
+  EXPECT_NE(a["x_end"], summary(runCli("--scene " + kChain + " --duration 0 --summary --quiet"))["x_end"]);
+  std::filesystem::remove(without);
+
+  for (const auto& c : std::vector<std::pair<std::string, std::string>>{
+           {"initial.nothing=null", "initial.nothing: is not in the scene: nothing to remove"},
+           {"nosection.key=null", "nosection: is not in the scene: nothing to remove"}}) {
+    const CliRun r = runCli("--scene " + kChain + " --duration 0 --quiet --set " + c.first);
+    EXPECT_EQ(r.code, 2) << c.first;
+    EXPECT_NE(r.err.find(c.second), std::string::npos) << r.err;
+  }
+}
+
 TEST(Cli, BadInputExits2) {
   const std::vector<std::pair<std::string, std::string>> cases = {
       {"", "--scene FILE is required"},
       {"--scene " + kChain + " --frobnicate", "unknown option '--frobnicate'"},
-      {"--scene " + kChain + " --duration 0", "--duration"},
+      {"--scene " + kChain + " --duration -1", "--duration: expected a number of seconds >= 0"},
       // 1e20 s at dt = 1e-4: 1e24 steps, beyond the loader's limit (and a long)
       {"--scene " + kChain + " --duration 1e20", "--duration: 1e+24 steps of solver.dt, more than 1e+09"},
       {"--scene " + kChain + " --set line.lenght=3", "line.lenght: unknown key"},
@@ -51,9 +82,9 @@ TEST(Cli, ShortRunWritesSummaryAndCsv) {
 
   std::map<std::string, std::string> j;
   ASSERT_TRUE(parseFlatJson(r.out, j)) << r.out;
-  for (const char* key : {"wall_s", "cpu_s", "sim_s", "steps", "rtf", "x_end", "y_end", "tension_top", "max_constraint_error",
+  for (const char* key : {"wall_s", "cpu_s", "sim_s", "steps", "rtf", "x_end", "y_end", "z_end", "tension_top", "max_constraint_error",
                           "energy_drift", "scene", "n", "dt", "integrator", "formulation", "statics_iterations",
-                          "end_force_x"})
+                          "end_force_x", "end_force_z"})
     EXPECT_EQ(j.count(key), 1u) << "summary lacks " << key << ": " << r.out;
   EXPECT_EQ(j["status"], "ok");
   EXPECT_EQ(j["scene"], "hanging_chain");
@@ -70,15 +101,17 @@ TEST(Cli, ShortRunWritesSummaryAndCsv) {
   EXPECT_EQ(header, kHeader);
   ASSERT_EQ(rows.size(), 6u);  // t = 0, 0.1, ..., 0.5
   for (size_t k = 0; k < rows.size(); ++k) {
-    ASSERT_EQ(rows[k].size(), 11u);
+    ASSERT_EQ(rows[k].size(), kColumns);
     EXPECT_NEAR(rows[k][0], 0.1 * k, 1e-9);  // the step count is exact; %.9g rounding only
   }
   // The summary's end point is the CSV's last row (both %.9g of the same double).
-  EXPECT_EQ(std::stod(j["x_end"]), rows.back()[3]);
-  EXPECT_EQ(std::stod(j["y_end"]), rows.back()[4]);
+  EXPECT_EQ(std::stod(j["x_end"]), rows.back()[kXEnd]);
+  EXPECT_EQ(std::stod(j["z_end"]), rows.back()[kZEnd]);
+  EXPECT_EQ(std::stod(j["y_end"]), 0.0);  // a planar scene is the x-z plane
   // Released from a straight line at -45 deg: the start row is that line (L = 10 m).
-  EXPECT_NEAR(rows[0][3], 10.0 / std::sqrt(2.0), 1e-6);
-  EXPECT_NEAR(rows[0][4], -10.0 / std::sqrt(2.0), 1e-6);
+  EXPECT_NEAR(rows[0][kXEnd], 10.0 / std::sqrt(2.0), 1e-6);
+  EXPECT_EQ(rows[0][kYEnd], 0.0);
+  EXPECT_NEAR(rows[0][kZEnd], -10.0 / std::sqrt(2.0), 1e-6);
   std::filesystem::remove(csv);
 }
 
@@ -98,15 +131,15 @@ TEST(Cli, ProbeRfeColumns) {
     ASSERT_EQ(r.code, 0) << r.err;
     std::string header;
     const auto rows = csvRows(readFile(csv), header);
-    EXPECT_EQ(header, std::string(kHeader) + ",x_rfe0,y_rfe0,tension_rfe0,x_rfe4,y_rfe4,tension_rfe4,"
-                                             "x_rfe8,y_rfe8,tension_rfe8");
+    EXPECT_EQ(header, std::string(kHeader) + ",x_rfe0,y_rfe0,z_rfe0,tension_rfe0,x_rfe4,y_rfe4,z_rfe4,"
+                                             "tension_rfe4,x_rfe8,y_rfe8,z_rfe8,tension_rfe8");
     ASSERT_GE(rows.size(), 1u);
-    ASSERT_EQ(rows[0].size(), 20u);
+    ASSERT_EQ(rows[0].size(), kColumns + 12);
     for (size_t p = 0; p < probes.size(); ++p) {  // straight at -45 deg, unstretched, at rest
       const double s = sK(probes[p]);
-      EXPECT_NEAR(rows[0][11 + 3 * p], s / std::sqrt(2.0), 1e-7) << "rfe " << probes[p];
-      EXPECT_NEAR(rows[0][12 + 3 * p], -s / std::sqrt(2.0), 1e-7) << "rfe " << probes[p];
-      EXPECT_NEAR(rows[0][13 + 3 * p], 0.0, 1e-7) << "rfe " << probes[p];
+      EXPECT_NEAR(rows[0][kColumns + 4 * p], s / std::sqrt(2.0), 1e-7) << "rfe " << probes[p];
+      EXPECT_NEAR(rows[0][kColumns + 2 + 4 * p], -s / std::sqrt(2.0), 1e-7) << "rfe " << probes[p];
+      EXPECT_NEAR(rows[0][kColumns + 3 + 4 * p], 0.0, 1e-7) << "rfe " << probes[p];
     }
   }
   {
@@ -116,14 +149,14 @@ TEST(Cli, ProbeRfeColumns) {
     std::string header;
     const auto rows = csvRows(readFile(csv), header);
     ASSERT_GE(rows.size(), 1u);
-    ASSERT_EQ(rows[0].size(), 20u);
+    ASSERT_EQ(rows[0].size(), kColumns + 12);
     const double weight = g * (mu * L + m_end), strain_max = weight / 1.0e6;  // EA = 1e6 N
     for (size_t p = 0; p < probes.size(); ++p) {
       const double s = sK(probes[p]);
-      EXPECT_NEAR(rows[0][11 + 3 * p], 0.0, 1e-9) << "rfe " << probes[p];
-      EXPECT_LE(rows[0][12 + 3 * p], -s) << "rfe " << probes[p];  // stretched, but by less than the top strain
-      EXPECT_GE(rows[0][12 + 3 * p], -s * (1.0 + strain_max)) << "rfe " << probes[p];
-      EXPECT_NEAR(rows[0][13 + 3 * p], g * (mu * (L - s) + m_end), 1e-8 * weight) << "rfe " << probes[p];
+      EXPECT_NEAR(rows[0][kColumns + 4 * p], 0.0, 1e-9) << "rfe " << probes[p];
+      EXPECT_LE(rows[0][kColumns + 2 + 4 * p], -s) << "rfe " << probes[p];  // stretched, but by less than the top strain
+      EXPECT_GE(rows[0][kColumns + 2 + 4 * p], -s * (1.0 + strain_max)) << "rfe " << probes[p];
+      EXPECT_NEAR(rows[0][kColumns + 3 + 4 * p], g * (mu * (L - s) + m_end), 1e-8 * weight) << "rfe " << probes[p];
     }
   }
   std::filesystem::remove(csv);

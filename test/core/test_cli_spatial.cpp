@@ -82,13 +82,13 @@ TEST(CliSpatial, PlanarScenesThroughTheSpatialPath) {
     EXPECT_EQ(j3["space"], "spatial");
     EXPECT_EQ(j3["steps"], j2["steps"]);
     EXPECT_NEAR(num(j3, "x_end"), num(j2, "x_end"), 1e-8);
-    EXPECT_NEAR(num(j3, "z_end"), num(j2, "y_end"), 1e-8);
+    EXPECT_NEAR(num(j3, "z_end"), num(j2, "z_end"), 1e-8);
     EXPECT_NEAR(num(j3, "y_end"), 0.0, 1e-12);
     EXPECT_NEAR(num(j3, "tension_top"), num(j2, "tension_top"), 1e-8 * num(j2, "tension_top"));
     EXPECT_NEAR(num(j3, "tension_max"), num(j2, "tension_max"), 1e-8 * num(j2, "tension_max"));
     EXPECT_NEAR(num(j3, "top_force_y"), 0.0, 1e-9 * num(j2, "tension_top"));
     std::printf("[ measured ] %s: |dx| %.3g m, |dz| %.3g m, |dT|/T %.3g\n", entry.path().filename().c_str(),
-                std::abs(num(j3, "x_end") - num(j2, "x_end")), std::abs(num(j3, "z_end") - num(j2, "y_end")),
+                std::abs(num(j3, "x_end") - num(j2, "x_end")), std::abs(num(j3, "z_end") - num(j2, "z_end")),
                 std::abs(num(j3, "tension_top") / num(j2, "tension_top") - 1.0));
     ++compared;
   }
