@@ -27,6 +27,7 @@ add_library(riser_sim_core
   src/core/implicit_integrators.cpp
   src/core/simulator.cpp
   src/core/solver_setup.cpp
+  src/core/scene_check.cpp
   src/core/stability_estimate.cpp
   src/core/force_noise.cpp
   src/core/statics.cpp

@@ -1,6 +1,7 @@
-// Every check of a solver setup in one place. The scene loader (as a SceneError), the Simulator
-// (std::invalid_argument) and the node (a parameter error) all call checkSolverSetup, so their limits
-// cannot disagree.
+// The checks of a solver setup: its values (any engine) and what the planar engine supports. A scene is
+// checked by checkScene (scene_check.h: these, or the 3D engine's spatial::unsupported), which the loader
+// (as a SceneError) and the node (a parameter error) call; the planar Simulator (std::invalid_argument)
+// calls checkSolverSetup, so their limits cannot disagree.
 #pragma once
 #include <optional>
 #include <string>
@@ -30,8 +31,10 @@ JacobianKind resolvedJacobian(const SolverSettings& s);
 // newton_tolerance), whatever the space; the 3D core checks its combinations itself
 // (spatial/run_builder.h, unsupported()).
 std::optional<SetupError> checkSolverValues(const SolverSettings& s);
-// checkSolverValues, then the planar core's combination of integrator, formulation and jacobian and its
-// size limits for a line of `elements` segments.
+// What the planar core does not run: its combination of integrator, formulation and jacobian and its size
+// limits for a line of `elements` segments (the values assumed checked).
+std::optional<SetupError> planarUnsupported(const SolverSettings& s, int elements, bool axial_flexibility);
+// checkSolverValues, then planarUnsupported.
 std::optional<SetupError> checkSolverSetup(const SolverSettings& s, int elements, bool axial_flexibility);
 
 }  // namespace riser_sim

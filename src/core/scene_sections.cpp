@@ -14,7 +14,7 @@
 #include <sstream>
 
 #include "riser_sim/integrator.h"
-#include "riser_sim/solver_setup.h"
+#include "riser_sim/scene_check.h"
 #include "riser_sim/spatial/run_builder.h"
 #include "scene_section.h"
 
@@ -238,12 +238,7 @@ void parseSolver(const Section& root, Scene& s) {
   s.solver.jacobian = solver.choice("jacobian", defaults.jacobian);
   s.solver.rho_inf = solver.number("rho_inf", defaults.rho_inf);
   s.solver.newton_tolerance = solver.number("newton_tolerance", defaults.newton_tolerance);
-  // The integrator's name, the combination and the size limits: the core's one check (the 3D core checks
-  // its combinations in spatial/run_builder.h's unsupported(), below).
-  const auto error = s.space == SpaceKind::kSpatial ? checkSolverValues(s.solver)
-                                                    : checkSolverSetup(s.solver, s.elements, s.options.axial_flexibility);
-  if (error)
-    throw SceneError(error->key, error->message);
+  // The values, the combination and the size limits: checkScene, once every section is read (checkCombination).
 }
 
 void parseRun(const Section& root, Scene& s) {
@@ -288,9 +283,8 @@ void checkCombination(const Scene& s) {
   if (s.initial.type == InitialKind::kDisplaced && !(std::abs(s.initial.end_dx) < s.length))
     throw SceneError("initial.end_dx", "must be smaller than line.length (" + formatNumber(s.length) +
                                            " m) in magnitude, got " + formatNumber(s.initial.end_dx));
-  if (s.space == SpaceKind::kSpatial) {  // what the 3D core cannot run yet, naming the section
-    if (const auto error = spatial::unsupported(s)) throw SceneError(error->key, error->message);
-  }
+  // The solver values and what the scene's engine supports: the core's one check (the node calls it too).
+  if (const auto error = checkScene(s)) throw SceneError(error->key, error->message);
   if (pinned && !s.options.axial_flexibility) {
     const double span = s.space == SpaceKind::kSpatial
                             ? (spatial::buildTopMotion3(s.bottom_motion)->at(0.0).p -

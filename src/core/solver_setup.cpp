@@ -36,6 +36,10 @@ std::optional<SetupError> checkSolverValues(const SolverSettings& s) {
 
 std::optional<SetupError> checkSolverSetup(const SolverSettings& s, int elements, bool axial_flexibility) {
   if (const auto error = checkSolverValues(s)) return error;
+  return planarUnsupported(s, elements, axial_flexibility);
+}
+
+std::optional<SetupError> planarUnsupported(const SolverSettings& s, int elements, bool axial_flexibility) {
   if (s.jacobian == JacobianKind::kStructured && s.formulation == FormulationKind::kAbsolute)
     return SetupError{"solver.jacobian",
                       "'structured' needs solver.formulation independent or recursive (absolute has none); use "

@@ -3,8 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "riser_sim/solver_setup.h"
-#include "riser_sim/spatial/run_builder.h"
+#include "riser_sim/scene_check.h"
 #include "riser_sim_ros/xmlrpc_yaml.h"
 
 namespace riser_sim_ros {
@@ -16,13 +15,10 @@ RiserSimNode::RiserSimNode(ros::NodeHandle nh, ros::NodeHandle pnh)
   if (scene_.top.type != riser_sim::MotionKind::kExternal && scene_.top.type != riser_sim::MotionKind::kFixed)
     ROS_WARN("%s: ~scene/top/motion/type '%s' ignored: the node drives the top from the vessel", name_.c_str(),
              riser_sim::name(scene_.top.type));
-  // The loader checked the scene; the solver setup once more with the core's one check, as a parameter error.
-  if (const auto error = riser_sim::checkSolverSetup(scene_.solver, scene_.elements, scene_.options.axial_flexibility))
-    throw ParamError(paramPath("scene", error->key), error->message);
-  if (spatial()) {  // what the 3D core cannot run yet, before any pose arrives
-    if (const auto issue = riser_sim::spatial::unsupported(scene_))
-      throw ParamError(paramPath("scene", issue->key), issue->message);
-  } else if (params_.wrench_frame == "body") {
+  // The loader checked the scene; once more with the core's one check (solver values, then what the scene's
+  // engine supports), as a parameter error before any pose arrives.
+  if (const auto error = riser_sim::checkScene(scene_)) throw ParamError(paramPath("scene", error->key), error->message);
+  if (!spatial() && params_.wrench_frame == "body") {
     throw ParamError("wrench_frame", "body needs a 3D scene (space: spatial); the planar wrench is in fixed_frame");
   }
 
