@@ -31,10 +31,10 @@ def main(out):
         f, ax = plt.subplots(1, 2, figsize=(11, 4.2))
         for name, label in runs:
             d = load(out, name)
-            ax[0].plot(d["x_end"], d["y_end"], label=label)
+            ax[0].plot(d["x_end"], d["z_end"], label=label)
             ax[1].plot(d["t"], d["x_end"], label=label)
         ax[1].plot(d["t"], d["x_top"], "k--", lw=0.8, label="vessel x_0")
-        ax[0].set_xlabel("x_A [m]"); ax[0].set_ylabel("y_A [m]"); ax[0].set_title("lower end A, " + title)
+        ax[0].set_xlabel("x_A [m]"); ax[0].set_ylabel("z_A [m] (the paper's y_A)"); ax[0].set_title("lower end A, " + title)
         ax[1].set_xlabel("t [s]"); ax[1].set_ylabel("x [m]"); ax[1].set_title("x of A and of the vessel")
         for a in ax:
             a.grid(True, alpha=0.3); a.legend(fontsize=8)
@@ -50,7 +50,7 @@ def main(out):
     lines.append("  C_M 1 vs 2 (D_eta = 0.7):   %.2f" % maxdiff("riser_D0.7_CM1", "riser_D0.7_CM2", "x_end"))
     lines.append("  C_M 1.5 vs 2 (D_eta = 0.7): %.2f" % maxdiff("riser_D0.7_CM1.5", "riser_D0.7_CM2", "x_end"))
     lines.append("  max |y_A difference| D_eta 0.7 vs 1.3: %.2f, C_M 1 vs 2: %.2f" % (
-        maxdiff("riser_D0.7_CM2", "riser_D1.3_CM2", "y_end"), maxdiff("riser_D0.7_CM1", "riser_D0.7_CM2", "y_end")))
+        maxdiff("riser_D0.7_CM2", "riser_D1.3_CM2", "z_end"), maxdiff("riser_D0.7_CM1", "riser_D0.7_CM2", "z_end")))
 
     # J-lay (Figs. 13, 14): rfe 0 and rfe 20 axial forces, the middle point's trajectory.
     def style(a):
@@ -79,13 +79,13 @@ def main(out):
         d = load(out, name)
         ax[0].plot(d["t"], d["tension_rfe0"] / 1e3, lw=0.5, label=label)
         ax[1].plot(d["t"], d["tension_rfe20"] / 1e3, lw=0.5, label=label)
-        ax[2].plot(d["x_rfe20"], d["y_rfe20"], label=label)
+        ax[2].plot(d["x_rfe20"], d["z_rfe20"], label=label)
     ax[0].set_title("Fig. 13a: axial force in rfe 0 (top)")
     ax[1].set_title("axial force in rfe 20 (middle)")
     ax[2].set_title("Fig. 13b: trajectory of the middle point (rfe 20)")
     for a in ax[:2]:
         a.set_xlabel("t [s]"); a.set_ylabel("axial force [kN]")
-    ax[2].set_xlabel("x [m]"); ax[2].set_ylabel("y [m]")
+    ax[2].set_xlabel("x [m]"); ax[2].set_ylabel("z [m]")
     for a in ax:
         style(a)
     f.tight_layout(); f.savefig(os.path.join(out, "fig13_fluid_mass.png"), dpi=110); plt.close(f)

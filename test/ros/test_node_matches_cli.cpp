@@ -67,7 +67,8 @@ Riser* find(std::vector<std::unique_ptr<Riser>>& risers, const std::string& stat
   return nullptr;
 }
 
-// riser_sim_cli's CSV rows (t, x_top, y_top, x_end, y_end, tension_top, ...) keyed by tick number.
+// riser_sim_cli's CSV rows keyed by tick number: t, x/y/z_top, x/y/z_end, ..., tension_top (column 19); a
+// planar scene is the CLI's x-z plane (the node's x-y).
 std::map<int, Sample> runCli(const Riser& r) {
   const std::string csv = "/tmp/node_matches_cli_" + r.ns + "_" + std::to_string(getpid()) + ".csv";
   char top[96];
@@ -86,14 +87,14 @@ std::map<int, Sample> runCli(const Riser& r) {
   std::getline(in, line);  // header
   while (std::getline(in, line)) {
     std::stringstream ss(line);
-    double v[6];
+    double v[20];
     char comma;
     ss >> v[0];
-    for (int i = 1; i < 6; ++i) ss >> comma >> v[i];
+    for (int i = 1; i < 20; ++i) ss >> comma >> v[i];
     Sample s;
-    s.top = {v[1], v[2]};
-    s.end = {v[3], v[4]};
-    s.tension = v[5];
+    s.top = {v[1], v[3]};
+    s.end = {v[4], v[6]};
+    s.tension = v[19];
     rows[static_cast<int>(std::lround(v[0] / kTick))] = s;
   }
   std::remove(csv.c_str());
