@@ -5,7 +5,6 @@ add_executable(riser_sim_cli
   src/cli/cli_options.cpp
   src/cli/run_output.cpp
   src/cli/modal_output.cpp
-  src/cli/spatial_modes.cpp
   src/cli/output_file.cpp
 )
 target_link_libraries(riser_sim_cli riser_sim_core)

@@ -35,6 +35,7 @@ add_library(riser_sim_core
   src/core/statics_guess.cpp
   src/core/statics_check.cpp
   src/core/modal.cpp
+  src/core/modes_report.cpp
   src/core/linear_stability.cpp
   src/core/scene.cpp
   src/core/run_builder.cpp

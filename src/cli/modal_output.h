@@ -1,5 +1,6 @@
-// riser_sim_cli --modes K [--modes-csv FILE]: statics of the scene's initial state, then the lowest K
-// natural modes about it (table on stdout, mode shapes as CSV).
+// riser_sim_cli --modes K [--modes-csv FILE], either engine: the scene's statics, then the lowest K natural
+// modes about them (riser_sim/modes_report.h): the table on stdout, the mode shapes as CSV (planar: x, y with
+// y up; space: spatial: x, y, z).
 #pragma once
 #include <string>
 
@@ -8,8 +9,8 @@
 namespace riser_sim {
 namespace cli {
 
-// Returns the exit code (cli_options.h): 0 ok, 2 bad input (CSV cannot be opened, bad scene value), 3 statics
-// failed, 4 the table or the CSV could not be written.
+// Returns the exit code (cli_options.h): 0 ok, 2 bad input (CSV cannot be opened, bad scene value, a 3D
+// bottom that moves), 3 statics or the eigen-solve failed, 4 the table or the CSV could not be written.
 int runModes(const Scene& scene, int count, const std::string& csv_path, bool quiet);
 
 }  // namespace cli

@@ -257,7 +257,7 @@ TEST(CliSpatialEnds, BadKeysAreRefusedNamingTheKey) {
       {"--set space=spatial --set bottom.type=pinned --set bottom.position=[0,0,-9] --set initial.type=straight",
        "m from the end of the straight initial line"},
       {pinned + " --set bottom.motion.type=sinusoid --set bottom.motion.amplitude=[1,0,0] --set bottom.motion.period=5 "
-                "--modes 3", "bottom.motion: --modes with space: spatial needs a fixed or free bottom"},
+                "--modes 3", "bottom.motion: the modes with space: spatial need a fixed or free bottom"},
   };
   for (const auto& c : cases) {
     SCOPED_TRACE(c.first);
