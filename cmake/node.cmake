@@ -13,7 +13,6 @@ add_library(riser_sim_ros
   src/node/spatial_line_run.cpp
   src/node/timing_stats.cpp
   src/node/modes_service.cpp
-  src/node/modes_service3.cpp
   src/node/master_watch.cpp
   src/node/ros_clock.cpp
   src/node/line_topics.cpp

@@ -5,30 +5,19 @@
 #include <cstdio>
 #include <exception>
 
-#include "riser_sim/modal.h"
-#include "riser_sim/model.h"
-#include "riser_sim/run_builder.h"
+#include "riser_sim/modes_report.h"
 
 namespace riser_sim_ros {
 
-void computeModesResponse(const riser_sim::Scene& scene, const riser_sim::Kinematics& kin,
-                          const riser_sim::Vec2& end_force, int count, riser_sim::Modes::Response& res) {
+void computeModesResponse(const riser_sim::Scene& scene, int count, riser_sim::Modes::Response& res) {
   res.success = false;
-  if (count < 1) {
+  if (count < 1) {  // before any statics
     res.message = "count: must be >= 1, got " + std::to_string(count);
     return;
   }
-  riser_sim::ModalOptions o;
-  o.modes = count;
-  riser_sim::ModalResult r;
-  std::string about = std::string(riser_sim::name(scene.initial.type)) + " static state";
+  riser_sim::ModesReport r;
   try {
-    if (scene.initial.type == riser_sim::InitialKind::kStraight) {
-      r = riser_sim::sceneModes(scene, o);  // solves the hanging statics (a straight line is none)
-      about = "hanging equilibrium (initial.type straight is not one)";
-    } else {
-      r = riser_sim::computeModes(*riser_sim::buildModel(scene), kin, end_force, o);
-    }
+    r = riser_sim::sceneModesReport(scene, count);
   } catch (const std::exception& e) {
     res.message = std::string("modal analysis failed: ") + e.what();
     return;
@@ -40,39 +29,32 @@ void computeModesResponse(const riser_sim::Scene& scene, const riser_sim::Kinema
                   std::to_string(count);
     return;
   }
-  const size_t np = r.points.size();
   res.arc_length = r.arc_length;
-  res.points.resize(np);
-  for (size_t p = 0; p < np; ++p) {
-    res.points[p].x = r.points[p].x();  // paper (x, y) -> world (x, 0, z)
-    res.points[p].z = r.points[p].y();
-  }
-  for (const riser_sim::Mode& m : r.modes) {
-    res.periods.push_back(m.period);
-    res.frequencies.push_back(m.frequency);
+  res.points.resize(r.points.size());
+  for (size_t p = 0; p < r.points.size(); ++p)
+    res.points[p].x = r.points[p].x(), res.points[p].y = r.points[p].y(), res.points[p].z = r.points[p].z();
+  for (const riser_sim::ModeEntry& m : r.modes) {
+    const bool oscillates = m.status == riser_sim::ModeStatus::kOscillating;
+    res.periods.push_back(oscillates ? m.period : 0.0);
+    res.frequencies.push_back(oscillates ? m.frequency : 0.0);
     res.characters.push_back(m.character);
-    res.axial_share.push_back(m.axial_fraction);
-    for (const riser_sim::Vec2& d : m.displacement) {
+    res.axial_share.push_back(m.axial_share);
+    for (const Eigen::Vector3d& d : m.displacement) {
       res.shape_x.push_back(d.x());
-      res.shape_z.push_back(d.y());
-      res.shape_y.push_back(0.0);
+      res.shape_y.push_back(d.y());
+      res.shape_z.push_back(d.z());
     }
   }
-  for (const auto* v : {&res.periods, &res.frequencies, &res.axial_share, &res.shape_x, &res.shape_z})
+  for (const auto* v : {&res.periods, &res.frequencies, &res.axial_share, &res.shape_x, &res.shape_y, &res.shape_z})
     for (double x : *v)
       if (!std::isfinite(x)) {
         res.message = "modal analysis gave non-finite values (ill-conditioned state?)";
         res.periods.clear(), res.frequencies.clear(), res.characters.clear(), res.axial_share.clear();
-        res.shape_x.clear(), res.shape_z.clear(), res.shape_y.clear();
+        res.shape_x.clear(), res.shape_y.clear(), res.shape_z.clear();
         return;
       }
-  char buf[320];
-  std::snprintf(buf, sizeof(buf),
-                "%d modes of %d about the %s; end load (%g, %g) N kept as a dead load; undamped (drag and damping "
-                "left out); equilibrium residual %.2e%s",
-                static_cast<int>(r.modes.size()), r.dofs, about.c_str(), end_force.x(), end_force.y(),
-                r.equilibrium_residual, r.equilibrium_residual > 1e-6 ? " (not an equilibrium: modes not meaningful)" : "");
-  res.message = buf;
+  res.message = std::to_string(r.modes.size()) + " modes of " + std::to_string(r.dofs) + ": " + r.header +
+                (r.equilibrium_residual > 1e-6 ? " (not an equilibrium: modes not meaningful)" : "");
   res.success = true;
 }
 
@@ -89,22 +71,9 @@ ModesServer::~ModesServer() {
   srv_.shutdown();
 }
 
-void ModesServer::setState(const riser_sim::Scene& scene, const riser_sim::Kinematics& kin,
-                           const riser_sim::Vec2& end_force, const ros::Time& stamp) {
+void ModesServer::setState(const riser_sim::Scene& scene, const ros::Time& stamp) {
   auto state = std::make_shared<StaticState>();
   state->scene = scene;
-  state->kin = kin;
-  state->end_force = end_force;
-  state->stamp = stamp;
-  std::lock_guard<std::mutex> lock(mutex_);
-  state_ = std::move(state);
-}
-
-void ModesServer::setState3(const riser_sim::Scene& scene, const riser_sim::spatial::InitialState3& initial,
-                            const ros::Time& stamp) {
-  auto state = std::make_shared<StaticState>();
-  state->scene = scene;
-  state->initial3 = std::make_shared<riser_sim::spatial::InitialState3>(initial);
   state->stamp = stamp;
   std::lock_guard<std::mutex> lock(mutex_);
   state_ = std::move(state);
@@ -128,8 +97,7 @@ bool ModesServer::onModes(riser_sim::Modes::Request& req, riser_sim::Modes::Resp
     }
   }
   const auto t0 = std::chrono::steady_clock::now();
-  if (state->initial3) computeModesResponse3(state->scene, *state->initial3, req.count, res);
-  else computeModesResponse(state->scene, state->kin, state->end_force, req.count, res);
+  computeModesResponse(state->scene, req.count, res);
   res.header.stamp = state->stamp;
   res.header.frame_id = frame_;
   ROS_INFO("%s: ~modes (count %d): %s (%.1f ms)", name_.c_str(), req.count, res.message.c_str(),

@@ -34,7 +34,7 @@ std::string PlanarLineRun::startMessage() {
 }
 
 void PlanarLineRun::shareStatics(ModesServer& modes, const ros::Time& stamp) {
-  modes.setState(scene_, run_.initial.kin, run_.initial.end_force, stamp);
+  modes.setState(scene_, stamp);  // the top fixed at the hang-off (fixedTop)
 }
 
 RunHealth PlanarLineRun::health() {

@@ -89,9 +89,9 @@ void SpatialLineRun::shareStatics(ModesServer& modes, const ros::Time& stamp) {
   s.top.position3 = top_;
   if (bottom_motion_) {
     s.bottom_motion.type = riser_sim::MotionKind::kFixed;
-    s.bottom_point3 = run_->initial().kin.back().end();
+    s.bottom_point3 = s.bottom_motion.position3 = run_->initial().kin.back().end();
   }
-  modes.setState3(s, run_->initial(), stamp);
+  modes.setState(s, stamp);
 }
 
 RunHealth SpatialLineRun::health() {

@@ -329,17 +329,16 @@ line: {length: 20.0, elements: 6, mass_per_length: 5.0, EI: 100.0, end_mass: 50.
 top: {position: [0.0, 0.0, 0.0]}
 solver: {dt: 0.001}
 )");
-  const riser_sim::spatial::SpatialRun run(s);
   riser_sim::Modes::Response r;
-  computeModesResponse3(s, run.initial(), 0, r);
+  computeModesResponse(s, 0, r);
   EXPECT_FALSE(r.success);
   EXPECT_EQ(r.message, "count: must be >= 1, got 0");
   r = riser_sim::Modes::Response();
-  computeModesResponse3(s, run.initial(), 1000, r);
+  computeModesResponse(s, 1000, r);
   EXPECT_FALSE(r.success);
   EXPECT_EQ(r.message.rfind("count: must be <= ", 0), 0u) << r.message;
   r = riser_sim::Modes::Response();
-  computeModesResponse3(s, run.initial(), 4, r);
+  computeModesResponse(s, 4, r);
   ASSERT_TRUE(r.success) << r.message;
   ASSERT_EQ(r.characters.size(), 4u);
   EXPECT_NEAR(r.periods[0], r.periods[1], 1e-6 * r.periods[0]);  // a pair across the vertical
@@ -362,11 +361,10 @@ solver: {dt: 0.001}
   std::snprintf(with, sizeof(with), yaml, ",\n       torsion: {stiffness: 200.0, polar_inertia: 0.5}");
   std::snprintf(without, sizeof(without), yaml, "");
   const riser_sim::Scene st = scene(with), s0 = scene(without);
-  const riser_sim::spatial::SpatialRun rt(st), r0(s0);
   riser_sim::Modes::Response mt, m0;
-  computeModesResponse3(s0, r0.initial(), 4, m0);
+  computeModesResponse(s0, 4, m0);
   ASSERT_TRUE(m0.success) << m0.message;
-  computeModesResponse3(st, rt.initial(), m0.dofs + 6, mt);  // every mode: the spins of rfes 1..6 on top
+  computeModesResponse(st, m0.dofs + 6, mt);  // every mode: the spins of rfes 1..6 on top
   ASSERT_TRUE(mt.success) << mt.message;
   EXPECT_GE(mt.dofs, m0.dofs + 6);  // the top rfe's spin is held (top.torsion: fixed)
   std::vector<double> bending;

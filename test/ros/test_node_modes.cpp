@@ -14,6 +14,7 @@
 #include "riser_sim/Modes.h"
 #include "riser_sim/modal.h"
 #include "riser_sim/scene_yaml.h"
+#include "riser_sim/spatial/run_builder.h"
 
 using namespace riser_sim_test;
 
@@ -128,12 +129,14 @@ struct CliRow {
   double s, x[3], d[3];
 };
 
-std::vector<CliRow> runCliModes(const std::string& scene_file, const Eigen::Vector3d& top, int count) {
+// riser_sim_cli --modes count --modes-csv on scene_file, with the top fixed at `top` when given.
+std::vector<CliRow> runCliModes(const std::string& scene_file, const Eigen::Vector3d* top, int count) {
   const std::string csv = "/tmp/node_modes_3d_" + std::to_string(getpid()) + ".csv";
-  char pos[128];
-  std::snprintf(pos, sizeof(pos), "[%.17g,%.17g,%.17g]", top.x(), top.y(), top.z());
-  const std::string cmd = std::string(RISER_SIM_CLI_BIN) + " --scene " + scene_file +
-                          " --set top.motion.type=fixed --set top.position=" + pos + " --modes " +
+  char pos[160] = "";
+  if (top)
+    std::snprintf(pos, sizeof(pos), " --set top.motion.type=fixed --set top.position=[%.17g,%.17g,%.17g]", top->x(),
+                  top->y(), top->z());
+  const std::string cmd = std::string(RISER_SIM_CLI_BIN) + " --scene " + scene_file + pos + " --modes " +
                           std::to_string(count) + " --modes-csv " + csv + " --quiet > /dev/null";
   std::vector<CliRow> rows;
   if (std::system(cmd.c_str()) != 0) {
@@ -182,7 +185,7 @@ TEST(NodeModes, SpatialMatchesTheCli) {
   const riser_sim::Modes got = call(modes, K);
   ASSERT_TRUE(got.response.success) << got.response.message;
   const auto& r = got.response;
-  const std::vector<CliRow> cli = runCliModes(scene_file, top, K);
+  const std::vector<CliRow> cli = runCliModes(scene_file, &top, K);
   const size_t np = r.points.size();
   ASSERT_EQ(np, 12u);  // n = 10: A_0..A_10 and the end
   ASSERT_EQ(cli.size(), K * np);
@@ -218,6 +221,44 @@ TEST(NodeModes, SpatialMatchesTheCli) {
   EXPECT_GT(out_of_plane, 0);  // the plane is yawed (6, 4): both kinds there, named in its frame
   std::printf("3D modes: first period node %.9g s, CLI %.9g s; %d in-plane, %d out-of-plane of %d\n", r.periods[0],
               cli[0].period, in_plane, out_of_plane, K);
+}
+
+// 3D, a line twisted by its bending axes between a hang-off and an anchor (spatial_flat_umbilical.yaml): the
+// node's ~modes at the vessel's pose where the scene has its top at t = 0 are riser_sim_cli --modes on the scene
+// file (the same statics, hang-off frame, material axes and eigen-solve).
+TEST(NodeModes, TwistedUmbilicalMatchesTheCliOnTheSceneFile) {
+  ros::NodeHandle nh, pnh("~");
+  std::string scene_file;
+  ASSERT_TRUE(pnh.getParam("scene_file_umbilical", scene_file));
+  const riser_sim::Scene scene = riser_sim::loadSceneFile(scene_file);
+  const Eigen::Vector3d top = riser_sim::spatial::buildTopMotion3(scene.top)->at(0.0).p;  // the sway's start
+  ros::ServiceClient modes = nh.serviceClient<riser_sim::Modes>("/umbilical/riser_sim/modes");
+  ASSERT_TRUE(modes.waitForExistence(ros::Duration(20.0)));
+  PosePublisher pose(nh, "/umbilical/vessel/pose", 20.0, [&](double, geometry_msgs::Pose& p) {
+    p.position.x = top.x(), p.position.y = top.y(), p.position.z = top.z();
+  });
+  Recorder<riser_sim::Tension> tension(nh, "/umbilical/riser_sim/tension");
+  ASSERT_TRUE(waitFor([&] { return pose.subscribers() > 0; }, 20.0));
+  pose.start();
+  ASSERT_TRUE(tension.waitCount(1, 30.0));
+
+  const int K = 4;
+  const riser_sim::Modes got = call(modes, K);
+  ASSERT_TRUE(got.response.success) << got.response.message;
+  const auto& r = got.response;
+  const std::vector<CliRow> cli = runCliModes(scene_file, nullptr, K);
+  const size_t np = r.points.size();
+  ASSERT_EQ(np, size_t(scene.elements) + 2);
+  ASSERT_EQ(cli.size(), K * np);
+  ASSERT_EQ(r.periods.size(), size_t(K));
+  for (int k = 0; k < K; ++k) {
+    const CliRow& c = cli[k * np];
+    EXPECT_NEAR(r.periods[k] / c.period, 1.0, 1e-6) << "mode " << k + 1;
+    EXPECT_EQ(r.characters[k], c.character) << "mode " << k + 1;
+  }
+  std::printf("umbilical modes: node %.6g, %.6g, %.6g, %.6g s; CLI %.6g, %.6g, %.6g, %.6g s\n", r.periods[0],
+              r.periods[1], r.periods[2], r.periods[3], cli[0].period, cli[np].period, cli[2 * np].period,
+              cli[3 * np].period);
 }
 
 }  // namespace
