@@ -1,12 +1,17 @@
 // Static equilibrium for initial states: Newton on the independent coordinates (Δ_i, φ_i) with
 // A_0 held, the end loads solved for alongside; every solution is checked (checkEquilibrium).
 #pragma once
+#include <functional>
 #include <string>
 
 #include "riser_sim/kinematics.h"
 #include "riser_sim/model.h"
 
 namespace riser_sim {
+
+// Progress of a statics solve, reported every Newton iteration: the stage (e.g. "from the first guess", "current
+// ramp at 0.5 of the speed"), the iterations so far, the residual reached and the seconds spent.
+using StaticsProgress = std::function<void(const std::string& stage, int iterations, double residual, double seconds)>;
 
 struct StaticsProblem {
   enum class Kind {
@@ -24,6 +29,9 @@ struct StaticsProblem {
   // water, its drag ramped up) and, with a seabed, in the seabed's stiffness (docs/statics.md). false: the
   // first guess's Newton only.
   bool continuation = true;
+  StaticsProgress progress;  // optional (the core never prints)
+  // Wall-clock bound [s]: past it the solve stops, its message naming the stage and what to try.
+  double time_limit = 60.0;
 };
 
 struct StaticsResult {

@@ -1,6 +1,7 @@
 #include "riser_sim/statics.h"
 
 #include <Eigen/Dense>
+#include <chrono>
 #include <cmath>
 #include <sstream>
 
@@ -14,8 +15,17 @@ using statics_detail::StaticTerms;
 
 namespace {
 
+// The solve's clock, stage and progress report (StaticsProblem::progress, time_limit).
+struct Budget {
+  std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
+  std::string stage = "from the first guess";
+  int iterations = 0;
+  bool out = false;  // the time limit was reached
+  double seconds() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); }
+};
+
 // Damped Newton with a forward-difference Jacobian; Levenberg-Marquardt step when Newton stalls.
-bool newton(StaticResidual& F, VecX& x, const StaticsProblem& p, int& iters, double& res) {
+bool newton(StaticResidual& F, VecX& x, const StaticsProblem& p, int& iters, double& res, Budget& b) {
   const int n = F.size();
   VecX r(n), r1(n), x1(n);
   MatX J;
@@ -27,6 +37,12 @@ bool newton(StaticResidual& F, VecX& x, const StaticsProblem& p, int& iters, dou
   double best = res;
   int best_at = 0;
   for (iters = 0; iters < p.max_iterations && res > p.tolerance; ++iters) {
+    ++b.iterations;
+    if (p.progress) p.progress(b.stage, b.iterations, res, b.seconds());
+    if (b.out || b.seconds() > p.time_limit) {
+      b.out = true;
+      return false;
+    }
     if (res < 0.99 * best) best = res, best_at = iters;
     if (iters - best_at > 50) return false;
     F.jacobian(x, r, J);
@@ -138,12 +154,12 @@ struct Attempt {
 
 // Newton from the first guess; a displaced end that fails is retried by continuation in end_dx
 // (without a seabed: the straight start would hang into it).
-Attempt direct(const Model& model, const StaticsProblem& problem, const StaticTerms& terms, double t) {
+Attempt direct(const Model& model, const StaticsProblem& problem, const StaticTerms& terms, double t, Budget& b) {
   Attempt a;
   StaticResidual F(model, problem, terms, t);
   a.x = VecX::Zero(F.size());
   firstGuess(model, problem, terms, F, a.x);
-  a.converged = newton(F, a.x, problem, a.iterations, a.residual);
+  a.converged = newton(F, a.x, problem, a.iterations, a.residual, b);
   if (!a.converged && problem.kind == StaticsProblem::Kind::kEndDisplaced && !(terms.seabedStiffness() > 0.0)) {
     StaticsProblem step = problem;
     StaticResidual Fs(model, step, terms, t);
@@ -153,7 +169,7 @@ Attempt direct(const Model& model, const StaticsProblem& problem, const StaticTe
     for (int k = 1; k <= 20 && ok; ++k) {
       int it = 0;
       step.end_dx = problem.end_dx * k / 20.0;
-      ok = newton(Fs, xs, step, it, a.residual);
+      ok = newton(Fs, xs, step, it, a.residual, b);
       a.iterations += it;
     }
     if (ok) a.x = xs, a.converged = true;
@@ -165,13 +181,14 @@ Attempt direct(const Model& model, const StaticsProblem& problem, const StaticTe
 // (x10^(1/2) per step, halved in the exponent when Newton fails), so the line settles onto the seabed
 // along a path of equilibria instead of jumping into a stiff one. Starts from the first guess on a
 // seabed 10^start_exp as stiff, or (start_exp = -inf) from the solution without the seabed at 1e-6.
-Attempt seabedRamp(const Model& model, const StaticsProblem& problem, StaticTerms& terms, double t, double start_exp) {
+Attempt seabedRamp(const Model& model, const StaticsProblem& problem, StaticTerms& terms, double t, double start_exp,
+                   Budget& b) {
   const bool from_free = !std::isfinite(start_exp);
   double e = from_free ? -6.0 : std::min(start_exp, 0.0), step = 0.5;  // log10 of the stiffness factor
   StaticsProblem loose = problem;  // the intermediate states need not be exact
   loose.tolerance = std::max(problem.tolerance, 1e-6);
   terms.scaleSeabed(from_free ? 0.0 : std::pow(10.0, e));
-  Attempt a = direct(model, loose, terms, t);
+  Attempt a = direct(model, loose, terms, t, b);
   StaticResidual F(model, problem, terms, t);
   while (a.converged && e < 0.0 && step > 1e-3) {
     const double next = std::min(e + step, 0.0);
@@ -179,7 +196,7 @@ Attempt seabedRamp(const Model& model, const StaticsProblem& problem, StaticTerm
     VecX x = a.x;
     int it = 0;
     double res = INFINITY;
-    const bool ok = newton(F, x, next < 0.0 ? loose : problem, it, res);
+    const bool ok = newton(F, x, next < 0.0 ? loose : problem, it, res, b);
     a.iterations += it;
     if (ok) {
       a.x = x, a.residual = res, e = next, step = std::min(2.0 * step, 1.0);
@@ -256,16 +273,19 @@ StaticsResult solveStatics(const Model& model, const StaticsProblem& problem, do
                          "with the seabed stiffness ramped up from the solution without the seabed "};
   const double k = terms.seabedStiffness();
   const double soft = std::log10(F.weight() / (model.bodies() + 1) / (1e-3 * L) / std::max(k, 1e-300));
+  Budget budget;
   const auto attempts = [&](const StaticsProblem& prob, bool check, std::string& failures) {
     const int order[] = {1, 0, 2};
     Attempt a;
     for (int attempt : order) {
+      if (budget.out) break;
       if (attempt != 0 && !(k > 0.0)) continue;
       if (attempt != 0 && !prob.continuation) continue;
       if (attempt == 1 && !(soft < 0.0)) continue;  // the seabed is soft already
       const int before = a.iterations;
-      a = attempt == 0 ? direct(model, prob, terms, t)
-                       : seabedRamp(model, prob, terms, t, attempt == 1 ? soft : -INFINITY);
+      budget.stage = std::string(names[attempt]) + (terms.currentFactor() != 1.0 ? "in still water " : "");
+      a = attempt == 0 ? direct(model, prob, terms, t, budget)
+                       : seabedRamp(model, prob, terms, t, attempt == 1 ? soft : -INFINITY, budget);
       a.iterations += before;
       std::ostringstream o;
       if (a.converged && check) {
@@ -287,7 +307,7 @@ StaticsResult solveStatics(const Model& model, const StaticsProblem& problem, do
   };
   std::string failures;
   Attempt a = attempts(problem, true, failures);
-  if (!a.failure.empty() && problem.continuation && terms.hasCurrent()) {
+  if (!a.failure.empty() && problem.continuation && terms.hasCurrent() && !budget.out) {
     // Continuation in the current: the equilibrium in still water, then the current's drag (∝ speed²) ramped
     // up along the path of equilibria; the last state is checked as any solution.
     StaticsProblem loose = problem;
@@ -301,13 +321,15 @@ StaticsResult solveStatics(const Model& model, const StaticsProblem& problem, do
     std::string lost;             // why the last refused step's state was unstable
     Kinematics kin(model.bodies());
     if (c.converged) {
-      for (; s < 1.0 && step > 1e-3;) {
+      for (; s < 1.0 && step > 1e-3 && !budget.out;) {
         const double next = std::min(s + step, 1.0);
         terms.scaleCurrent(std::sqrt(next));
         VecX x = c.x;
         int it = 0;
         double r = INFINITY;
-        bool ok = newton(F, x, next < 1.0 ? loose : problem, it, r);
+        budget.stage = "with the current ramped up from still water, at " + std::to_string(std::sqrt(next)) +
+                       " of its speed";
+        bool ok = newton(F, x, next < 1.0 ? loose : problem, it, r, budget);
         c.iterations += it;
         if (ok) {
           F.toKinematics(x, kin);
@@ -350,6 +372,10 @@ StaticsResult solveStatics(const Model& model, const StaticsProblem& problem, do
   if (res.converged)
     msg << "statics converged in " << res.iterations << " iterations, residual " << res.residual << " (tolerance "
         << problem.tolerance << ")";
+  else if (budget.out)
+    msg << "statics stopped at the time limit (" << problem.time_limit << " s, " << budget.iterations
+        << " Newton iterations) " << budget.stage << ": " << failures << "; try fewer line.elements, a looser "
+        << "initial.tolerance, less current, or initial.type straight [" << problemKeys(model, problem, terms) << "]";
   else
     msg << "statics did not converge " << failures << " [" << problemKeys(model, problem, terms) << "]";
   res.message = msg.str();

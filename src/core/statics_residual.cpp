@@ -26,6 +26,7 @@ StaticTerms::StaticTerms(const Model& model, double t) : model_(model), t_(t) {
 }
 
 void StaticTerms::scaleCurrent(double factor) {
+  current_factor_ = factor;
   for (size_t k = 0; k < original_.size(); ++k) {
     std::unique_ptr<ForceTerm> scaled = model_.terms()[k]->steadyTerm(t_, factor);
     if (!scaled) continue;

@@ -22,12 +22,14 @@ class StaticTerms {
   void scaleSeabed(double factor);  // normal stiffness x factor (1: as the scene says)
   // The current's velocity x factor (1: as the scene says), for the continuation in the current.
   void scaleCurrent(double factor);
-  bool hasCurrent() const { return has_current_; }  // some term sees a non-zero steady current
+  bool hasCurrent() const { return has_current_; }
+  double currentFactor() const { return current_factor_; }  // some term sees a non-zero steady current
 
  private:
   const Model& model_;
   double t_;
   bool has_current_ = false;
+  double current_factor_ = 1.0;
   std::vector<std::unique_ptr<ForceTerm>> owned_;
   std::vector<const ForceTerm*> terms_;
   std::vector<const ForceTerm*> original_;
