@@ -13,10 +13,10 @@
 // previous one, by stamp or by the time it is applied (the motion has then run out of its blend and coast). The
 // rejoin with the source is one quintic to the source's state predicted to its end, its duration the shortest
 // (from the usual blend time up) whose acceleration stays within rejoin_max_acceleration of the source's and
-// whose speed stays within rejoin_max_velocity of what the quintic's change of velocity needs (the faster of the
-// held and source speeds plus half their difference); for a rest-to-rest distance D: T ~ sqrt(5.77 D / a_max).
-// The samples that arrive before that end re-plan to the same end (or later, should the bound need it), as
-// start_blend does.
+// whose speed stays within rejoin_max_velocity of the faster of the held and source speeds; for a rest-to-rest
+// distance D: T ~ max(sqrt(5.77 D / a_max), 1.875 D / v_max). The samples that arrive before that end re-plan to
+// the same end (or later, should the bound need it), as start_blend does. The stop after the coast lasts
+// max(stop_time, 1.5 |v| / rejoin_max_acceleration): its deceleration within the same bound.
 //
 // SampledMotion<D> is that smoothing on a D-vector (the planar top: D = 2; in 3D the position and the attitude's
 // rotation vector: D = 3); ExternalMotion is the planar TopMotion on it.
@@ -43,7 +43,7 @@ struct ExternalMotionOptions {
   bool predict = true;           // aim at the extrapolated state (lag ~ 0) instead of the sample
   double max_prediction = 0.3;   // longest extrapolation beyond the newest sample [s]
   double coast_time = 0.2;       // constant-velocity continuation past the blend [s]
-  double stop_time = 0.5;        // velocity decay to zero, then hold [s] (> 0)
+  double stop_time = 0.5;        // velocity decay to zero, then hold [s] (> 0; longer for a fast holder, above)
   // After reset() (the line at rest): the catch-up with a source already moving is spread until this long after
   // the reset [s] (each blend then ends there, aimed at the source's state predicted to that time), so the top
   // accelerates by ~v / start_blend instead of v / min_blend. 0: off.

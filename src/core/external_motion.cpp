@@ -161,8 +161,9 @@ typename SampledMotion<D>::State SampledMotion<D>::predict(const State& fitted, 
 }
 
 // The shortest T >= T_min whose quintic from `from` to the source's state predicted to t_now + T keeps
-// |a| <= a_max + |a_source| and |v| <= v_max + max(|v_from|, |v_source|) + 0.52 |v_source - v_from| (a quintic's
-// velocity change overshoots by 0.512 of it) at kRejoinChecks points: a geometric search, then bisection.
+// |a| <= a_max + |a_source| (or |a_from|, where it starts) and |v| <= max(|v_from|, |v_source|) + v_max (or + 0.52
+// |v_source - v_from| when larger: a quintic's change of velocity overshoots by 0.512 of it) at kRejoinChecks
+// points: a geometric search, then bisection.
 template <int D>
 double SampledMotion<D>::rejoinTime(double T_min, double t_sample, double t_now, const State& from,
                                     const State& fitted, State& target) const {
@@ -171,7 +172,7 @@ double SampledMotion<D>::rejoinTime(double T_min, double t_sample, double t_now,
     Quintic q;
     q.set(t_now, T, from, tgt);
     const double la = std::max(lim_.a_max + tgt.a.norm(), from.a.norm());
-    const double lv = lim_.v_max + std::max(from.v.norm(), tgt.v.norm()) + 0.52 * (tgt.v - from.v).norm();
+    const double lv = std::max(from.v.norm(), tgt.v.norm()) + std::max(lim_.v_max, 0.52 * (tgt.v - from.v).norm());
     for (int i = 1; i <= kRejoinChecks; ++i) {
       const State s = q.eval(t_now + T * i / kRejoinChecks);
       if (s.a.norm() > la || s.v.norm() > lv) return false;
@@ -242,8 +243,9 @@ void SampledMotion<D>::plan(double t_now, double T, const State& from, const Sta
   } else {
     coast_ = blend_;  // unused: the stop piece starts where the blend ends
   }
-  // Stop: smoothstep velocity decay v (1 - 3s² + 2s³), which travels v Ts / 2.
-  const double Ts = opt_.stop_time;
+  // Stop: smoothstep velocity decay v (1 - 3s² + 2s³), which travels v Ts / 2; its deceleration, at most
+  // 1.5 |v| / Ts, kept within the rejoin's bound (a fast holder takes longer than stop_time).
+  const double Ts = std::max(opt_.stop_time, 1.5 * c_end.v.norm() / lim_.a_max);
   State s_end;
   s_end.p = c_end.p + 0.5 * Ts * c_end.v;
   const State& s_begin = Tc > 0.0 ? c_end : target;  // acceleration continuity: the quintic takes a from target.a
