@@ -15,6 +15,7 @@
 
 #include "riser_sim/LineState.h"
 #include "riser_sim/Tension.h"
+#include "riser_sim/external_motion.h"
 #include "riser_sim/force_noise.h"
 #include "riser_sim/scene.h"
 #include "riser_sim_ros/node_params.h"
@@ -31,6 +32,7 @@ struct RunHealth {
   riser_sim::ForceNoise noise;                                // last 10 s
   std::string force_warning;                                  // empty: forces resolved
   Eigen::Vector3d hangoff = Eigen::Vector3d::Zero();           // A_0 now, fixed_frame [m]
+  riser_sim::MotionGaps gaps, bottom_gaps;                     // of the vessel's (a driven bottom's) samples
 };
 
 class LineRun {

@@ -114,6 +114,20 @@ std::string NodeDiagnostics::runningMessage(const ros::Time& now, const RunView&
   addValue("hang-off x [m]", num(h.hangoff.x(), "%.4f"));
   if (line.spatial()) addValue("hang-off y [m]", num(h.hangoff.y(), "%.4f"));
   addValue("hang-off z [m]", num(h.hangoff.z(), "%.4f"));
+  // Pose gaps (external_motion.h: a sample later than max(3 periods, blend + coast)) since the start or ~reset,
+  // and the rejoin after the last one.
+  const double t = line.time();
+  const auto gapValues = [&](const riser_sim::MotionGaps& g, const char* count, const char* longest, const char* last,
+                             const char* rejoin) {
+    addValue(count, std::to_string(g.count));
+    addValue(longest, num(g.longest, "%.3f"));
+    addValue(last, num(g.last, "%.3f"));
+    addValue(rejoin, g.rejoining(t) ? "rejoining, " + num(g.rejoin_end - t, "%.2f") + " s left" : std::string("no"));
+  };
+  gapValues(h.gaps, "pose gaps", "longest pose gap [s]", "last pose gap [s]", "rejoining the vessel");
+  if (line.drivenBottom())
+    gapValues(h.bottom_gaps, "bottom pose gaps", "longest bottom pose gap [s]", "last bottom pose gap [s]",
+              "rejoining the bottom");
   std::string message = "running: real-time factor " + num(rtf, "%.2f") + " (compute " + num(compute_rtf, "%.1f") +
                         "x real time)";
   if (win_dropped_ > 0.0 || (std::isfinite(rtf) && rtf < 0.95)) {
@@ -122,6 +136,12 @@ std::string NodeDiagnostics::runningMessage(const ros::Time& now, const RunView&
   } else if (std::isfinite(pose_age) && pose_age > pose_timeout_) {
     st.level = DiagnosticStatus::WARN;
     message = "no vessel pose for " + num(pose_age, "%.1f") + " s: holding the last one";
+  } else if (h.gaps.rejoining(t) || h.bottom_gaps.rejoining(t)) {
+    st.level = DiagnosticStatus::WARN;
+    const bool top = h.gaps.rejoining(t);
+    const riser_sim::MotionGaps& g = top ? h.gaps : h.bottom_gaps;
+    message = std::string("rejoining the ") + (top ? "vessel" : "bottom") + " after a " + num(g.last, "%.1f") +
+              " s pose gap (" + num(g.rejoin_end - t, "%.1f") + " s left); " + message;
   } else if (std::abs(drift) > riser_sim::kEnergyDriftWarning) {
     st.level = DiagnosticStatus::WARN;
     message = "energy balance off by " + num(drift, "%.3g") + " of m g L: solver.dt does not resolve "

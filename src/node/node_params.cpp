@@ -247,6 +247,11 @@ NodeParams loadNodeParams(const ros::NodeHandle& pnh, const std::string& node_na
   m.coast_time = r.number("motion/coast_time", m.coast_time);
   m.stop_time = r.number("motion/stop_time", m.stop_time);
   m.start_blend = r.number("motion/start_blend", m.start_blend);
+  m.rejoin_max_acceleration = r.number("motion/rejoin_max_acceleration", m.rejoin_max_acceleration);
+  m.rejoin_max_velocity = r.number("motion/rejoin_max_velocity", m.rejoin_max_velocity);
+  m.rejoin_max_angular_acceleration =
+      r.number("motion/rejoin_max_angular_acceleration", m.rejoin_max_angular_acceleration);
+  m.rejoin_max_angular_velocity = r.number("motion/rejoin_max_angular_velocity", m.rejoin_max_angular_velocity);
   const std::string err = m.validate();
   if (!err.empty()) {
     const auto colon = err.find(':');

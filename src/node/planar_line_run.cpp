@@ -47,6 +47,7 @@ RunHealth PlanarLineRun::health() {
   h.force_warning = sim_->forceWarning(h.noise);
   const riser_sim::PointMotion top = motion_->at(sim_->time());
   h.hangoff = Eigen::Vector3d(top.p.x(), 0.0, top.p.y());
+  h.gaps = motion_->gaps();
   return h;
 }
 

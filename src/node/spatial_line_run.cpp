@@ -104,6 +104,8 @@ RunHealth SpatialLineRun::health() {
   h.noise = run_->forceNoise().recent();
   h.force_warning = run_->forceWarning(h.noise);
   h.hangoff = motion_->at(run_->time()).p;
+  h.gaps = motion_->gaps();
+  if (bottom_motion_) h.bottom_gaps = bottom_motion_->gaps();
   return h;
 }
 
