@@ -16,9 +16,10 @@ InitialState solveInitialState(const Scene& scene, const Model& model, const Vec
     // Not an equilibrium, but it must not start inside the seabed (the contact springs would throw it out).
     double level = -INFINITY;
     for (const auto& term : model.terms()) level = std::max(level, term->seabedLevel());
+    const double sink = restingSinkAllowance(scene.seabed, model.totalMass() * model.gravity());
     for (size_t i = 0; i < init.kin.size(); ++i) {
       const Vec2 end = init.kin[i].end();
-      if (end.y() < level)
+      if (end.y() < level - sink)
         throw std::runtime_error("initial: the straight line reaches y = " + std::to_string(end.y()) +
                                  " m at the end of rfe " + std::to_string(i) + ", below the seabed (seabed.level = " +
                                  std::to_string(level) + " m); use initial.type hanging or change initial.angle");

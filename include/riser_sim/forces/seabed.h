@@ -25,6 +25,12 @@ struct SeabedSpec {
   double slope = 0.0, slope_heading = 0.0;
 };
 
+// How deep a start may put a contact point below the seabed and still be "on" it [m]: the sink of one
+// contact point carrying the whole weight W [N] (W / C_E,y). Deeper, the springs would throw the line out.
+inline double restingSinkAllowance(const SeabedSpec& spec, double weight) {
+  return spec.stiffness_normal > 0.0 ? weight / spec.stiffness_normal : 0.0;
+}
+
 // x of every contact point j = 0..n+1 at touchdown; NaN while it is free.
 struct SeabedData : TermData {
   std::vector<double> anchor;

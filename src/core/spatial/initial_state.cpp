@@ -192,9 +192,10 @@ InitialState3 solveInitialState3(const Scene& scene, const Vec3& top) {
     // Not an equilibrium, but it must not start inside the seabed (the contact springs would throw it out).
     if (scene.seabed.enabled) {
       const Seabed3 bed(scene.seabed, buildSpatialModel(scene)->gravity());
+      const double sink = restingSinkAllowance(scene.seabed, planar->totalMass() * planar->gravity());
       for (size_t i = 0; i < init.kin.size(); ++i) {
         const Vec3 end = init.kin[i].end();
-        if (bed.penetration(end) > 0.0)
+        if (bed.penetration(end) > sink)
           throw std::runtime_error("initial: the straight line reaches (" + fmt(end.x()) + ", " + fmt(end.y()) + ", " +
                                    fmt(end.z()) + ") m at the end of rfe " + std::to_string(i) + ", " +
                                    fmt(bed.penetration(end)) + " m below the seabed (seabed.level " +
