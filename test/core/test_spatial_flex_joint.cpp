@@ -4,7 +4,9 @@
 // (bending, axial and joint dampers) from a straight line along the joint's axis.
 #include <gtest/gtest.h>
 
+#include "riser_sim/scene_yaml.h"
 #include "riser_sim/spatial/forces/flex_joint.h"
+#include "riser_sim/spatial/run_builder.h"
 #include "spatial_test_util.h"
 
 namespace riser_sim {
@@ -40,6 +42,32 @@ TEST(SpatialFlexJoint, MomentBalancesTheWeightAtRest) {
   EXPECT_GT(joint->angle(*m, kin, sim.time()), 0.05);  // the weight really bends the joint
   EXPECT_LT((M - W).norm(), 3e-5 * W.norm());
   EXPECT_LT(sim.kineticEnergy(), 1e-9 * (10.0 * 10.0 + 50.0) * 9.81 * 10.0);
+}
+
+// An axis more than 90° off the line at the start is refused naming the key: the spring's moment k θ heads for the
+// fold at 180°, where its direction is undefined (a reversed axis would report no moment while wound by π).
+// spatial_tether's line leaves the top towards the ROV 12 m away and 25 m down: +z is ~150° off it, -z ~30°.
+TEST(SpatialFlexJoint, AxisTurnedRoundIsRefusedNamingTheKey) {
+  const std::string file = std::string(RISER_SIM_SOURCE_DIR) + "/config/scenes/spatial_tether.yaml";
+  for (const char* end : {"top", "bottom"}) {
+    const std::string key = std::string(end) + ".flex_joint.axis";
+    // The bottom joint's axis points along the line away from the ROV: up-ish; -z is turned round there.
+    const std::string turned = std::string(end) == "top" ? "[0, 0, 1]" : "[0, 0, -1]";
+    const Scene scene = loadSceneFile(file, {key + "=" + turned, "solver.dt=0.002"});
+    try {
+      SpatialRun run(scene);
+      ADD_FAILURE() << key << " " << turned << " accepted";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_EQ(std::string(e.what()).rfind(key + ": ", 0), 0u) << e.what();
+      EXPECT_NE(std::string(e.what()).find("at most 90 deg"), std::string::npos) << e.what();
+    }
+  }
+  // Within 90°: accepted, the start loaded and said so, and the joint's moment reported.
+  const Scene ok = loadSceneFile(file, {"top.flex_joint.axis=[0, 0, -1]"});
+  SpatialRun run(ok);
+  EXPECT_NE(run.initial().about.find("top.flex_joint turned"), std::string::npos) << run.initial().about;
+  ASSERT_TRUE(run.step()) << run.divergenceReason();
+  EXPECT_GT(run.maxTopMoment(), 0.0);
 }
 
 }  // namespace

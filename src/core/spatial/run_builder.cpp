@@ -259,6 +259,12 @@ FlexJoints3 addFlexJoints(const Scene& scene, const Kinematics3& initial, Spatia
                                               holder && holder->rotates() ? holder : nullptr, 0.0));
     const auto* joint = static_cast<const FlexJoint*>(model.terms().back().get());
     const double theta = joint->angle(model, initial, 0.0);
+    // A flex joint bends by degrees; past 90° its spring moment k θ heads for the fold at 180°, where its
+    // direction is undefined and its stiffness k θ / sin θ unbounded.
+    if (theta > 0.5 * M_PI)
+      throw std::invalid_argument(std::string(key) + ".axis: " + fmt(theta * 180.0 / M_PI) +
+                                  " deg from the line's direction at the start (at most 90 deg); give the axis "
+                                  "along the line, pointing away from the holder");
     if (theta > 1e-9) out.loaded += std::string(out.loaded.empty() ? "" : ", ") + key + " turned " + fmt(theta) + " rad";
     return joint;
   };
