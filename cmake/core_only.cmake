@@ -24,3 +24,4 @@ endfunction()
 
 include(cmake/core.cmake)
 include(cmake/cli.cmake)
+include(cmake/sweep.cmake)  # riser_sim_sweep: its test (ctest test_sweep)

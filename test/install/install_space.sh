@@ -2,8 +2,8 @@
 # The installed package works on its own: `catkin_make install` into the workspace's install/, then, in an
 # environment holding only install/setup.bash, (1) riser_sim_cli runs every installed scene, (2) roslaunch
 # riser_sim riser_sim.launch starts the node (a private roscore), (3) a downstream catkin package finds
-# riser_sim, includes the core's headers and links the core. One JUnit test case each (install/*.xml under
-# the results folder $1). Exit 1 when any fails.
+# riser_sim, includes the core's headers and links the core, (4) riser_sim_sweep runs a 2-case sweep. One
+# JUnit test case each (install/*.xml under the results folder $1). Exit 1 when any fails.
 # RISER_SIM_WS: the workspace (built first by scripts/build.sh); RISER_SIM_SKIP_TESTS as for the build.
 set -uo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
@@ -126,6 +126,22 @@ EOF
     record downstream_package_links_the_core 0 "paper_table1 has $want elements"
   else
     record downstream_package_links_the_core 1 "expected $want, got: $(printf '%s' "$out" | tail -n 8 | tr '\n' ' ')"
+  fi
+  rm -rf "$tmp"
+
+  # (4) riser_sim_sweep from the install space: its help, and a 2-case sweep on one local Dask worker running
+  # the installed riser_sim_cli beside it.
+  tmp=$(mktemp -d)
+  out=$(clean "
+    rosrun riser_sim riser_sim_sweep --help >/dev/null || exit 1
+    printf '%s\n' \"scene: \$(rospack find riser_sim)/config/scenes/spatial_sea_riser.yaml\" 'duration: 0.2' \\
+      'set: {line.elements: 6}' 'grid: {environment.waves.heading: [0, 90]}' >'$tmp/sweep.yaml'
+    rosrun riser_sim riser_sim_sweep '$tmp/sweep.yaml' --out '$tmp/out' --workers 1 --quiet --no-plots &&
+      grep -c ',ok,' '$tmp/out/results.csv'" 2>&1)
+  if [ "$(printf '%s\n' "$out" | tail -n 1)" = 2 ]; then
+    record sweep_runs_from_install_space 0 "2 cases ok"
+  else
+    record sweep_runs_from_install_space 1 "$(printf '%s' "$out" | tail -n 8 | tr '\n' ' ')"
   fi
   rm -rf "$tmp"
 fi

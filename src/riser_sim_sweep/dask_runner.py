@@ -1,0 +1,111 @@
+"""The Dask side: a LocalCluster of worker processes (one thread each: each task is one CLI process) or an
+existing cluster through its scheduler address, and the loop that hands each finished task to a callback.
+
+Dask reschedules the tasks of a worker that dies (up to distributed.scheduler.allowed-failures, 3); a case
+that kills its worker every time comes back as KilledWorker and is recorded as failed. SIGINT is held off
+while a result is written (InterruptGuard), so an interrupt never tears a row."""
+import contextlib
+import logging
+import os
+import signal
+import sys
+import uuid
+
+import cloudpickle
+
+from .sweep_file import SweepError
+
+
+class InterruptGuard:
+    """SIGINT raises KeyboardInterrupt, except inside hold(): then at its end."""
+
+    def __init__(self):
+        self.pending = False
+        self.holding = False
+        self.previous = None
+
+    def __enter__(self):
+        self.previous = signal.signal(signal.SIGINT, self._handler)
+        return self
+
+    def __exit__(self, *exc):
+        signal.signal(signal.SIGINT, self.previous)
+        return False
+
+    def _handler(self, signum, frame):
+        if self.holding:
+            self.pending = True
+        else:
+            raise KeyboardInterrupt
+
+    @contextlib.contextmanager
+    def hold(self):
+        self.holding = True
+        try:
+            yield
+        finally:
+            self.holding = False
+            if self.pending:
+                self.pending = False
+                raise KeyboardInterrupt
+
+
+def open_client(workers=None, scheduler=None, connect_timeout=10.0):
+    """(client, cluster or None). workers: processes of the local cluster (default: every core)."""
+    from distributed import Client, LocalCluster
+
+    # The workers unpickle run_case by value: a worker of an existing cluster needs numpy and
+    # riser_sim_cli, not this package.
+    cloudpickle.register_pickle_by_value(sys.modules[__package__])
+    if scheduler:
+        if "://" not in scheduler:
+            scheduler = "tcp://" + scheduler
+        try:
+            return Client(scheduler, timeout=connect_timeout), None
+        except (OSError, TimeoutError) as e:
+            raise SweepError("--scheduler %s: no Dask scheduler answered within %g s (%s); start one with "
+                             "`dask-scheduler` and `dask-worker %s`, or leave --scheduler out for a local cluster"
+                             % (scheduler, connect_timeout, e, scheduler))
+    n = workers or os.cpu_count() or 1
+    cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True, dashboard_address=None,
+                           silence_logs=logging.ERROR)
+    return Client(cluster), cluster
+
+
+def close_client(client, cluster):
+    with contextlib.suppress(Exception):
+        client.close(timeout=5)
+    if cluster is not None:
+        with contextlib.suppress(Exception):
+            cluster.close(timeout=5)
+
+
+def run_tasks(client, fn, items, on_result, guard, label):
+    """items: [(tag, task)]; on_result(tag, result dict) for each as it finishes (inside guard.hold()).
+    A task that raised (KilledWorker: its workers died) gives {"status": "failed", "reason": ...}."""
+    from distributed import as_completed
+
+    token = uuid.uuid4().hex[:8]
+    futures = {}
+    for tag, task in items:
+        f = client.submit(fn, task, key="%s-%s-%s" % (label, token, task["case_id"]), pure=False)
+        futures[f] = tag
+    try:
+        for fut in as_completed(list(futures)):
+            tag = futures[fut]
+            if fut.status == "finished":
+                result = fut.result()
+            else:
+                exc = fut.exception()
+                name = type(exc).__name__
+                why = ("its worker died %s times running it" % "several") if name == "KilledWorker" else str(exc)
+                result = {"case_id": tag.case_id, "status": "failed", "reason": "%s: %s" % (name, why),
+                          "values": {}}
+            with guard.hold():
+                on_result(tag, result)
+            fut.release()
+    finally:
+        pending = [f for f in futures if not f.done()]
+        if pending:
+            with contextlib.suppress(Exception):
+                client.cancel(pending)
