@@ -139,123 +139,139 @@ double restAcceleration(const Scene& scene, const Kinematics3& kin, const Vec3& 
   return amax;
 }
 
-InitialState3 solveInitialState3(const Scene& scene, const Vec3& top) {
-  InitialState3 init;
+namespace {
+
+// Stage 1. The vertical plane of the statics: through the top, along the horizontal unit vector u (the straight
+// line's heading, the displaced end's offset, the anchor's direction, or downstream for a free end in a current;
+// down the fall line for a free end on a slope in still water).
+struct StaticsPlane {
+  Vec2 u = Vec2(1.0, 0.0);
+  Mat3 R = Mat3::Identity();  // planar (x, y_up) -> u x + y_up z
+  Vec3 origin = Vec3::Zero(), normal = Vec3::UnitY();
+  bool free_hang = false;     // the end hangs free (hanging, or displaced by zero)
+  bool sloped = false;        // a sloped seabed
+};
+
+StaticsPlane staticsPlane(const Scene& scene, const Vec3& top) {
+  StaticsPlane p;
   const InitialKind kind = scene.initial.type;
-  // The vertical plane of the problem: through the top, along the horizontal unit vector u.
-  Vec2 u(1.0, 0.0);
   const Vec2 bottom_h = scene.bottom_point3.head<2>() - top.head<2>();
-  if (kind == InitialKind::kStraight) u = Vec2(std::cos(scene.initial.heading), std::sin(scene.initial.heading));
-  if (kind == InitialKind::kDisplaced && scene.initial.end_offset.norm() > 0.0) u = scene.initial.end_offset.normalized();
-  if (kind == InitialKind::kBetweenPoints && bottom_h.norm() > 0.0) u = bottom_h.normalized();
+  if (kind == InitialKind::kStraight) p.u = Vec2(std::cos(scene.initial.heading), std::sin(scene.initial.heading));
+  if (kind == InitialKind::kDisplaced && scene.initial.end_offset.norm() > 0.0)
+    p.u = scene.initial.end_offset.normalized();
+  if (kind == InitialKind::kBetweenPoints && bottom_h.norm() > 0.0) p.u = bottom_h.normalized();
   // A line hanging free in a current leans downstream: its plane is the current's (the statics see it steady).
   const Vec2 cur = scene.water.enabled ? currentDirection(scene.water.current) : Vec2::Zero();
-  const bool free_hang = kind == InitialKind::kHanging || (kind == InitialKind::kDisplaced && scene.initial.end_offset.norm() == 0.0);
-  if (free_hang && cur.norm() > 0.0) u = cur;
-  // A sloped seabed: the guess is the planar statics on a level seabed at the slope's height somewhere under the
-  // line, relaxed in 3D where it touches. A free end lies down the fall line (the plane downhill, unless a current
-  // sets it), the level the slope's on the top's vertical (the footprint downhill of it is above the slope). A
-  // pinned end: the level at the anchor (which then lies on it as in 2D). A displaced end: the higher of the
-  // two (the guess is above the slope); it is solved clear of the slope only (its end force is the planar one).
+  p.free_hang = kind == InitialKind::kHanging ||
+                (kind == InitialKind::kDisplaced && scene.initial.end_offset.norm() == 0.0);
+  if (p.free_hang && cur.norm() > 0.0) p.u = cur;
+  p.sloped = scene.seabed.enabled && scene.seabed.slope > 0.0;
+  const Vec2 uphill(std::cos(scene.seabed.slope_heading), std::sin(scene.seabed.slope_heading));
+  if (p.sloped && p.free_hang && cur.norm() == 0.0) p.u = -uphill;
+  p.R = yaw(p.u);
+  p.origin = Vec3(top.x(), top.y(), 0.0);
+  p.normal = Vec3(-p.u.y(), p.u.x(), 0.0);
+  return p;
+}
+
+// Stage 2. The planar scene in that plane: x along u from the top, y_up = z, the current projected (`across`
+// gets its part across the plane), no waves. A sloped seabed becomes a level one at the slope's height somewhere
+// under the line, relaxed in 3D where it touches: a free end's at the top's vertical (the footprint downhill of
+// it is above the slope), a pinned end's at the anchor (which then lies on it as in 2D), a displaced end's the
+// higher of the two (the guess is above the slope; it is solved clear of the slope only). `principal`: with
+// bending axes, whether the plane's bend is about one of them (else the 3D Newton twists it).
+Scene planarScene(const Scene& scene, const StaticsPlane& plane, const Vec3& top, double& across, bool& principal) {
   const SeabedSpec& bed = scene.seabed;
-  const bool sloped = bed.enabled && bed.slope > 0.0;
   const Vec2 uphill(std::cos(bed.slope_heading), std::sin(bed.slope_heading));
   const auto slopeHeight = [&](const Vec2& p) { return bed.level + std::tan(bed.slope) * uphill.dot(p); };
-  if (sloped && free_hang && cur.norm() == 0.0) u = -uphill;
-  const Mat3 R = yaw(u);
-  const Vec3 origin(top.x(), top.y(), 0.0);
-  const Vec3 normal(-u.y(), u.x(), 0.0);  // of the plane
-  init.plane_direction = Vec3(u.x(), u.y(), 0.0);
-
-  // The planar scene in that plane: x along u from the top, y_up = z.
+  const InitialKind kind = scene.initial.type;
   Scene ps = scene;
   ps.space = SpaceKind::kPlanar;
-  bool principal = true;  // bending axes: the plane's bend is about one of them (else the 3D Newton twists it)
-  if (scene.bending_axes.enabled) ps.line.EI = detail::planarBendingStiffness(scene, normal, principal);
+  principal = true;
+  if (scene.bending_axes.enabled) ps.line.EI = detail::planarBendingStiffness(scene, plane.normal, principal);
   ps.bending_axes = BendingAxesSpec();
   ps.top = TopMotionSpec();
   ps.top.position = Vec2(0.0, top.z());
   ps.initial.end_dx = scene.initial.end_offset.norm();
-  ps.bottom_point = Vec2(bottom_h.norm(), scene.bottom_point3.z());
-  double current_across = 0.0;
-  ps.water.current = planarCurrent(scene.water.current, u, current_across);
+  ps.bottom_point = Vec2((scene.bottom_point3.head<2>() - top.head<2>()).norm(), scene.bottom_point3.z());
+  ps.water.current = planarCurrent(scene.water.current, plane.u, across);
   ps.water.waves = WaveSpec();  // the statics never see the waves
-  if (sloped && kind == InitialKind::kBetweenPoints) ps.seabed.level = slopeHeight(scene.bottom_point3.head<2>());
-  else if (sloped && !free_hang)
+  if (plane.sloped && kind == InitialKind::kBetweenPoints) ps.seabed.level = slopeHeight(scene.bottom_point3.head<2>());
+  else if (plane.sloped && !plane.free_hang)
     ps.seabed.level = std::max(slopeHeight(top.head<2>()), slopeHeight(top.head<2>() + scene.initial.end_offset));
-  else if (sloped) ps.seabed.level = slopeHeight(top.head<2>());
+  else if (plane.sloped) ps.seabed.level = slopeHeight(top.head<2>());
   ps.seabed.slope = ps.seabed.slope_heading = 0.0;
-  const std::shared_ptr<Model> planar = buildModel(ps);
+  return ps;
+}
 
-  if (kind == InitialKind::kStraight) {
-    init.kin = fromPlanar(straightLine(*planar, ps.top.position, scene.initial.angle), R, origin);
-    // Not an equilibrium, but it must not start inside the seabed (the contact springs would throw it out).
-    if (scene.seabed.enabled) {
-      const Seabed3 bed(scene.seabed, buildSpatialModel(scene)->gravity());
-      const double sink = restingSinkAllowance(scene.seabed, planar->totalMass() * planar->gravity());
-      for (size_t i = 0; i < init.kin.size(); ++i) {
-        const Vec3 end = init.kin[i].end();
-        if (bed.penetration(end) > sink)
-          throw std::runtime_error("initial: the straight line reaches (" + fmt(end.x()) + ", " + fmt(end.y()) + ", " +
-                                   fmt(end.z()) + ") m at the end of rfe " + std::to_string(i) + ", " +
-                                   fmt(bed.penetration(end)) + " m below the seabed (seabed.level " +
-                                   fmt(scene.seabed.level) + " m); use initial.type hanging or change initial.angle");
-      }
+// Stage 3 (initial.type straight). Not an equilibrium, but it must not start inside the seabed (the contact
+// springs would throw it out): no contact point deeper than the sink of one carrying the whole weight.
+InitialState3 straightStart(const Scene& scene, const StaticsPlane& plane, const Model& planar, const Vec2& top) {
+  InitialState3 init;
+  init.plane_direction = Vec3(plane.u.x(), plane.u.y(), 0.0);
+  init.kin = fromPlanar(straightLine(planar, top, scene.initial.angle), plane.R, plane.origin);
+  if (scene.seabed.enabled) {
+    const Seabed3 bed(scene.seabed, Vec3(0.0, 0.0, -scene.gravity));
+    const double sink = restingSinkAllowance(scene.seabed, planar.totalMass() * planar.gravity());
+    for (size_t i = 0; i < init.kin.size(); ++i) {
+      const Vec3 end = init.kin[i].end();
+      if (bed.penetration(end) > sink)
+        throw std::runtime_error("initial: the straight line reaches (" + fmt(end.x()) + ", " + fmt(end.y()) + ", " +
+                                 fmt(end.z()) + ") m at the end of rfe " + std::to_string(i) + ", " +
+                                 fmt(bed.penetration(end)) + " m below the seabed (seabed.level " +
+                                 fmt(scene.seabed.level) + " m); use initial.type hanging or change initial.angle");
     }
-    init.equilibrium = false;
-    checkBendingAxis(scene, init.kin);
-    init.about = "straight line (not an equilibrium)";
-    init.statics.converged = true;
-    init.statics.message = init.about;
-    return init;
   }
+  init.equilibrium = false;
+  checkBendingAxis(scene, init.kin);
+  init.about = "straight line (not an equilibrium)";
+  init.statics.converged = true;
+  init.statics.message = init.about;
+  return init;
+}
 
-  // The problem is planar in that plane: gravity vertical, the top, the anchor and the end force in it.
+// Stage 4. The planar statics in the plane, rotated into 3D; refused when the problem is not planar there (the
+// anchor, the end force or the solution off the plane beyond round-off).
+void planarEquilibrium(const Scene& scene, const StaticsPlane& plane, const Model& planar, const Scene& ps,
+                       const Vec3& top, InitialState3& init) {
+  const InitialKind kind = scene.initial.type;
   const double L = scene.length;
-  const auto offPlane = [&](const Vec3& p) { return std::abs(normal.dot(p - origin)); };
+  const auto offPlane = [&](const Vec3& p) { return std::abs(plane.normal.dot(p - plane.origin)); };
   std::string check;
-  if (buildSpatialModel(scene)->gravity().head<2>().norm() != 0.0) check = "gravity is not vertical";
-  if (check.empty() && kind == InitialKind::kBetweenPoints &&
+  if (kind == InitialKind::kBetweenPoints &&
       offPlane(scene.bottom_point3) > kPlanarTolerance * std::max(L, (scene.bottom_point3 - top).norm()))
     check = "bottom.position is " + fmt(offPlane(scene.bottom_point3)) + " m off the plane";
-  // A current across the plane (or veering with depth): the planar statics with its projection give the guess
-  // that the 3D relaxation starts from (relaxation.h); a displaced end, held where it is by a horizontal force,
-  // is solved from it by Newton with that force as the multiplier of its horizontal position (modal.h).
-  const bool relax = scene.water.enabled && current_across > 0.0;
-  const bool held_end = relax && kind == InitialKind::kDisplaced && !free_hang;
-
-  const StaticsProblem problem = staticsProblem(ps);
   if (check.empty()) {
-    init.statics = solveStatics(*planar, problem, 0.0);
+    init.statics = solveStatics(planar, staticsProblem(ps), 0.0);
     if (!init.statics.converged) throw std::runtime_error("initial: " + init.statics.message);
-    init.kin = fromPlanar(init.statics.kin, R, origin);
-    init.end_force = planarPoint(init.statics.end_force, R);
-    if (std::abs(normal.dot(init.end_force)) > kPlanarTolerance * init.end_force.norm())
-      check = "the end force points " + fmt(normal.dot(init.end_force)) + " N out of the plane";
+    init.kin = fromPlanar(init.statics.kin, plane.R, plane.origin);
+    init.end_force = planarPoint(init.statics.end_force, plane.R);
+    if (std::abs(plane.normal.dot(init.end_force)) > kPlanarTolerance * init.end_force.norm())
+      check = "the end force points " + fmt(plane.normal.dot(init.end_force)) + " N out of the plane";
     for (size_t i = 0; i < init.kin.size() && check.empty(); ++i)
       if (offPlane(init.kin[i].end()) > kPlanarTolerance * L)
         check = "rfe " + std::to_string(i) + " ends " + fmt(offPlane(init.kin[i].end())) + " m off the plane";
   }
+  const Vec2& u = plane.u;
   if (!check.empty())
     throw std::runtime_error("initial: the statics are solved in the vertical plane through the top along (" +
                              fmt(u.x()) + ", " + fmt(u.y()) + "), but the problem is not planar there: " + check);
   init.about = std::string(name(kind)) + " equilibrium (planar statics in the vertical plane along (" + fmt(u.x()) +
                ", " + fmt(u.y()) + "), rotated into 3D)";
+}
 
-  // The rotated state must be an equilibrium of the 3D model: its accelerations at rest ~0. The statics
-  // leave a residual force up to initial.tolerance x the weight W on a coordinate; on the lightest rfe
-  // (mass m_min) that is an acceleration of tolerance W / m_min. The bound allows 100x that (the residual
-  // spreads over the force, Δ and moment equations of an rfe), plus 1e-9 g of round-off.
-  const Model& line = *planar;
-  double m_min = INFINITY;
-  for (int i = 0; i < line.bodies(); ++i) m_min = std::min(m_min, line.rfe(i).mass);
-  const double W = line.totalMass() * scene.gravity;
-  init.acceleration_bound = 100.0 * scene.initial.tolerance * W / m_min + 1e-9 * std::max(scene.gravity, 1.0);
-  int where = 0;
-  init.max_acceleration = restAcceleration(scene, init.kin, init.end_force, top, where);
+// Stage 5. At rest in 3D where the plane's solution is not: a displaced end in a current across the plane or on
+// a slope by Newton in 3D with the end held by a horizontal force (modal.h); a current across the plane or a
+// slope under the line by the dynamic relaxation (relaxation.h). `where` gets the rfe of the largest acceleration.
+void restIn3D(const Scene& scene, const StaticsPlane& plane, double current_across, const Vec3& top,
+              InitialState3& init, int& where) {
+  const InitialKind kind = scene.initial.type;
+  const Vec2& u = plane.u;
+  const bool relax = scene.water.enabled && current_across > 0.0;
+  const bool held_end = relax && kind == InitialKind::kDisplaced && !plane.free_hang;
   // On a slope: relaxed when the guess touches it (off the seabed it is the planar equilibrium).
-  const bool relax_slope = sloped && !(init.max_acceleration <= init.acceleration_bound);
-  const bool slope_end = relax_slope && kind == InitialKind::kDisplaced && !free_hang;
+  const bool relax_slope = plane.sloped && !(init.max_acceleration <= init.acceleration_bound);
+  const bool slope_end = relax_slope && kind == InitialKind::kDisplaced && !plane.free_hang;
   if (held_end || slope_end) {
     const std::shared_ptr<SpatialModel> model = buildSpatialModel(stillWater(scene));
     const Vec2 xy = top.head<2>() + scene.initial.end_offset;
@@ -273,7 +289,7 @@ InitialState3 solveInitialState3(const Scene& scene, const Vec3& top) {
                  ", then Newton in 3D with the end held at (" + fmt(xy.x()) + ", " + fmt(xy.y()) +
                  ") by the horizontal force (" + fmt(init.end_force.x()) + ", " + fmt(init.end_force.y()) + ") N";
     init.max_acceleration = restAcceleration(scene, init.kin, init.end_force, top, where);
-  } else if ((relax || relax_slope) && !scene.bending_axes.enabled) {  // with bending axes: the 3D Newton below
+  } else if ((relax || relax_slope) && !scene.bending_axes.enabled) {  // with bending axes: stage 6's Newton
     const Relaxed3 r = relaxToRest(scene, init.kin, top, init.acceleration_bound);
     init.kin = r.kin;
     init.about = std::string(name(kind)) + " equilibrium " +
@@ -283,19 +299,52 @@ InitialState3 solveInitialState3(const Scene& scene, const Vec3& top) {
                  " s, " + std::to_string(r.steps) + " steps)";
     init.max_acceleration = restAcceleration(scene, init.kin, init.end_force, top, where);
   }
+}
+
+}  // namespace
+
+// The stages above, then the spins at rest (stage 6: bent between bending axes, Newton in 3D with the spins) and
+// the checks every accepted start passes: at rest (accelerations and twist moments within the bounds from
+// initial.tolerance) and stable (checkStable).
+InitialState3 solveInitialState3(const Scene& scene, const Vec3& top) {
+  const InitialKind kind = scene.initial.type;
+  const StaticsPlane plane = staticsPlane(scene, top);
+  double current_across = 0.0;
+  bool principal = true;
+  const Scene ps = planarScene(scene, plane, top, current_across, principal);
+  const std::shared_ptr<Model> planar = buildModel(ps);
+  if (kind == InitialKind::kStraight) return straightStart(scene, plane, *planar, ps.top.position);
+
+  InitialState3 init;
+  init.plane_direction = Vec3(plane.u.x(), plane.u.y(), 0.0);
+  planarEquilibrium(scene, plane, *planar, ps, top, init);
+
+  // The rotated state must be an equilibrium of the 3D model: its accelerations at rest ~0. The statics
+  // leave a residual force up to initial.tolerance x the weight W on a coordinate; on the lightest rfe
+  // (mass m_min) that is an acceleration of tolerance W / m_min. The bound allows 100x that (the residual
+  // spreads over the force, Δ and moment equations of an rfe), plus 1e-9 g of round-off.
+  const Model& line = *planar;
+  double m_min = INFINITY;
+  for (int i = 0; i < line.bodies(); ++i) m_min = std::min(m_min, line.rfe(i).mass);
+  const double W = line.totalMass() * scene.gravity;
+  init.acceleration_bound = 100.0 * scene.initial.tolerance * W / m_min + 1e-9 * std::max(scene.gravity, 1.0);
+  int where = 0;
+  init.max_acceleration = restAcceleration(scene, init.kin, init.end_force, top, where);
+  restIn3D(scene, plane, current_across, top, init, where);
+
   // The spins at rest (torsion on): a moment on a free spin is a residual as a force is, bounded as the 3D
   // statics' moment rows are, relative to weight x length (100x initial.tolerance, plus round-off).
   checkBendingAxis(scene, init.kin);
-  init.twist_moment_bound = (100.0 * scene.initial.tolerance + 1e-12) * W * L;
+  init.twist_moment_bound = (100.0 * scene.initial.tolerance + 1e-12) * W * scene.length;
   int moment_where = 0;
   const auto atRest = [&] {
     init.max_acceleration = restAcceleration(scene, init.kin, init.end_force, top, init.material_axes, where,
                                              init.max_twist_moment, moment_where, init.hang_off);
     return init.max_acceleration <= init.acceleration_bound && init.max_twist_moment <= init.twist_moment_bound;
   };
-  // Bending axes: a line bent between them twists (and leaves the plane): Newton in 3D with the spins.
+  // Stage 6. Bending axes: a line bent between them twists (and leaves the plane): Newton in 3D with the spins.
   if (!atRest() && scene.bending_axes.enabled) {
-    const bool end_held = kind == InitialKind::kDisplaced && !free_hang;
+    const bool end_held = kind == InitialKind::kDisplaced && !plane.free_hang;
     detail::twistedEquilibrium(scene, end_held, top.head<2>() + scene.initial.end_offset, init);
     init.about += std::string("; ") + (principal ? "" : "bent between the bending axes: ") +
                   "then Newton in 3D with the spins (the line twists)";
@@ -310,7 +359,7 @@ InitialState3 solveInitialState3(const Scene& scene, const Vec3& top) {
     throw std::runtime_error("initial: the " + std::string(name(kind)) + " equilibrium is not at rest in twist: " +
                              fmt(init.max_twist_moment) + " N m about rfe " + std::to_string(moment_where) +
                              "'s axis (bound " + fmt(init.twist_moment_bound) + " N m from initial.tolerance)");
-  checkStable(scene, init, kind == InitialKind::kDisplaced && !free_hang);
+  checkStable(scene, init, kind == InitialKind::kDisplaced && !plane.free_hang);
   return init;
 }
 
