@@ -51,9 +51,9 @@ int runModes(const Scene& scene, int count, const std::string& csv_path, bool qu
   if (r.equilibrium_residual > 1e-6)
     std::fprintf(stderr, "riser_sim_cli: warning: the state is not an equilibrium (residual %.2e); the modes are "
                  "not meaningful\n", r.equilibrium_residual);
-  if (count > r.dofs)
-    std::fprintf(stderr, "riser_sim_cli: warning: --modes %d: the line has %d degrees of freedom; all %d modes "
-                 "shown\n", count, r.dofs, static_cast<int>(r.modes.size()));
+  if (count > static_cast<int>(r.modes.size()))
+    std::fprintf(stderr, "riser_sim_cli: warning: --modes %d: the line has %d modes (%d coordinates less its "
+                 "constraints); all shown\n", count, static_cast<int>(r.modes.size()), r.coordinates);
   OutputFile table;
   table.useStdout();
   int w = 0;  // the character column: the engine's widest name

@@ -152,3 +152,21 @@ TEST(CliSpatialEnds, ModesWithATopFlexJoint) {
 }
 
 }  // namespace
+
+// More modes asked than the line has: every mode shown and a warning that says how many there are (a pinned 3D
+// line has fewer modes than coordinates: its constraints take some).
+TEST(CliSpatialEnds, MoreModesThanTheLineHasIsSaid) {
+  const std::string scene = std::string(RISER_SIM_SOURCE_DIR) + "/config/scenes/spatial_flat_umbilical.yaml";
+  const CliRun all = runCli("--scene " + scene + " --modes 1000");
+  ASSERT_EQ(all.code, 0) << all.err;
+  const size_t count = modeTable(all.out).size();
+  ASSERT_GT(count, 10u);
+  EXPECT_NE(all.err.find("warning: --modes 1000: the line has " + std::to_string(count) + " modes"), std::string::npos)
+      << all.err;
+  // One more than it has: said too; exactly as many: no warning.
+  const CliRun over = runCli("--scene " + scene + " --modes " + std::to_string(count + 1));
+  EXPECT_EQ(modeTable(over.out).size(), count);
+  EXPECT_NE(over.err.find("warning: --modes"), std::string::npos) << over.err;
+  const CliRun exact = runCli("--scene " + scene + " --modes " + std::to_string(count));
+  EXPECT_EQ(exact.err.find("warning: --modes"), std::string::npos) << exact.err;
+}
