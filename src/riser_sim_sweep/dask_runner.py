@@ -8,10 +8,10 @@ import contextlib
 import logging
 import os
 import signal
-import sys
+import shutil
+import tempfile
 import uuid
-
-import cloudpickle
+import zipfile
 
 from .sweep_file import SweepError
 
@@ -54,22 +54,37 @@ def open_client(workers=None, scheduler=None, connect_timeout=10.0):
     """(client, cluster or None). workers: processes of the local cluster (default: every core)."""
     from distributed import Client, LocalCluster
 
-    # The workers unpickle run_case by value: a worker of an existing cluster needs numpy and
-    # riser_sim_cli, not this package.
-    cloudpickle.register_pickle_by_value(sys.modules[__package__])
     if scheduler:
         if "://" not in scheduler:
             scheduler = "tcp://" + scheduler
         try:
-            return Client(scheduler, timeout=connect_timeout), None
+            client = Client(scheduler, timeout=connect_timeout)
         except (OSError, TimeoutError) as e:
             raise SweepError("--scheduler %s: no Dask scheduler answered within %g s (%s); start one with "
                              "`dask-scheduler` and `dask-worker %s`, or leave --scheduler out for a local cluster"
                              % (scheduler, connect_timeout, e, scheduler))
+        # The workers of an existing cluster get this package as a zip (a worker plugin: a worker that joins
+        # or restarts later gets it too); they need numpy and riser_sim_cli of their own.
+        zip_path = _package_zip()
+        try:
+            client.upload_file(zip_path)
+        finally:
+            shutil.rmtree(os.path.dirname(zip_path), ignore_errors=True)
+        return client, None
     n = workers or os.cpu_count() or 1
     cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True, dashboard_address=None,
                            silence_logs=logging.ERROR)
     return Client(cluster), cluster
+
+
+def _package_zip():
+    pkg = os.path.dirname(os.path.abspath(__file__))
+    path = os.path.join(tempfile.mkdtemp(prefix="riser_sim_sweep_zip_"), "riser_sim_sweep_%s.zip" % uuid.uuid4().hex[:8])
+    with zipfile.ZipFile(path, "w") as z:
+        for name in sorted(os.listdir(pkg)):
+            if name.endswith(".py"):
+                z.write(os.path.join(pkg, name), "riser_sim_sweep/" + name)
+    return path
 
 
 def close_client(client, cluster):

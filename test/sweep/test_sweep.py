@@ -12,8 +12,9 @@ shipped scenes and checks its results table against independent runs of riser_si
   - bad input: unknown sweep key (named with the closest) before anything runs; cases refused by the scene
     check listed while the rest run; a results folder of another sweep refused; an unreachable scheduler
     fails within seconds;
-  - --tune on the J-lay scene: the setting it reports, re-run here through the CLI, is within the asked
-    tolerance of the reference the test computes itself.
+  - --tune on the J-lay scene at n = 40 (its seabed springs are per contact point, so its tension is a
+    function of n: the tune is of the time integration): the setting it reports, re-run here through the
+    CLI, is within the asked tolerance of the reference the test computes itself.
 Writes a JUnit file (--xml). Every wait polls a condition; every process started here is stopped by id.
 RISER_SIM_CHECK=1 (make check) skips the suite unless RISER_SIM_LONG=1.
 """
@@ -75,7 +76,7 @@ HEADINGS = """scene: {scenes}/spatial_sea_riser.yaml
 duration: {duration}
 set:
   line.elements: 6
-  environment.waves.ramp: 0.5
+  environment.waves.ramp: 0.5{extra}
 grid:
   environment.waves.heading: {{start: 0, stop: {stop}, step: 30}}
 keep:
@@ -85,8 +86,11 @@ keep:
 """
 
 
-def heading_sweep(tmp, duration=0.5, stop=330):
-    return write(os.path.join(tmp, "headings.yaml"), HEADINGS.format(scenes=SCENES, duration=duration, stop=stop))
+def heading_sweep(tmp, duration=0.5, stop=330, dt=None):
+    """12 headings (stop 330); dt: a smaller solver.dt for cases that last (~0.1 ms per step)."""
+    extra = "\n  solver.dt: %r" % dt if dt else ""
+    return write(os.path.join(tmp, "headings.yaml"), HEADINGS.format(scenes=SCENES, duration=duration, stop=stop,
+                                                                      extra=extra))
 
 
 def tool(args, **kw):
@@ -220,13 +224,13 @@ class Sweep(unittest.TestCase):
     # -- A worker killed mid-case.
     def test_killed_worker_case_retried_once_in_table(self):
         out = os.path.join(self.tmp, "out")
-        sweep = heading_sweep(self.tmp, duration=4.0, stop=150)  # 6 cases of ~1 s of CPU
+        sweep = heading_sweep(self.tmp, duration=3.0, stop=150, dt=0.001)  # 6 cases of 3000 steps
         p = self.start([PY, A.tool, sweep, "--out", out, "--workers", "2", "--quiet", "--no-plots"],
                        os.path.join(self.tmp, "sweep.log"))
 
         def running_cli():
             for pid, (ppid, comm, argv) in descendants(p.pid).items():
-                if comm == "riser_sim_cli" and "--csv" in argv:
+                if argv and os.path.basename(argv[0]).startswith("riser_sim_cli") and "--output-dt" in argv:
                     return pid, ppid, argv
             return None
 
@@ -245,7 +249,7 @@ class Sweep(unittest.TestCase):
     # -- Ctrl-C and resume.
     def test_sigint_then_resume_runs_only_missing(self):
         out = os.path.join(self.tmp, "out")
-        sweep = heading_sweep(self.tmp, duration=1.5, stop=210)  # 8 cases
+        sweep = heading_sweep(self.tmp, duration=2.0, stop=210, dt=0.001)  # 8 cases of 2000 steps
         log = os.path.join(self.tmp, "sweep.log")
         p = self.start([PY, A.tool, sweep, "--out", out, "--workers", "1", "--no-plots"], log)
         table = os.path.join(out, "results.csv")
@@ -298,7 +302,7 @@ class Sweep(unittest.TestCase):
         self.assertIn("holds another sweep", p.stderr)
         self.assertEqual(len(read_rows(out)), 3)
         # A kept column that does not exist: named with the closest, before any case runs.
-        typo = write(os.path.join(self.tmp, "typo.yaml"), HEADINGS.format(scenes=SCENES, duration=0.2, stop=30)
+        typo = write(os.path.join(self.tmp, "typo.yaml"), HEADINGS.format(scenes=SCENES, duration=0.2, stop=30, extra="")
                      .replace("[tension_top, tension_max, y_end]", "[tension_tpo]"))
         out2 = os.path.join(self.tmp, "out2")
         p = tool([typo, "--out", out2, "--workers", "1"])
@@ -317,14 +321,14 @@ class Sweep(unittest.TestCase):
     # -- --tune on the J-lay scene.
     def test_tune_jlay_setting_within_tolerance(self):
         out = os.path.join(self.tmp, "tune")
-        tol_rms, tol_max, dur = 0.005, 0.02, 3.0
+        tol_rms, tol_max, dur = 0.01, 0.03, 3.0
         p = tool(["--tune", os.path.join(SCENES, "paper_jlay_170m.yaml"), "--quantity", "tension_top",
                   "--tol-rms", str(tol_rms), "--tol-max", str(tol_max), "--duration", str(dur), "--out", out,
-                  "--workers", "2", "--ns", "10,20", "--integrators", "rk4,midpoint,generalized_alpha",
-                  "--formulations", "recursive", "--dts", "0.005,0.01,0.02,0.05", "--ref-n", "40",
+                  "--workers", "2", "--ns", "40", "--integrators", "rk4,midpoint,generalized_alpha",
+                  "--formulations", "recursive,absolute", "--dts", "0.005,0.01,0.02,0.05", "--ref-n", "40",
                   "--ref-dt", "0.001", "--quiet"], timeout=300)
         self.assertEqual(p.returncode, 0, p.stderr)
-        self.assertIn("converged", p.stderr)
+        self.assertIn("tune:   converged:", p.stderr)
         sets = p.stdout.strip().splitlines()[-1].split()
         self.assertEqual(sets[0::2], ["--set"] * (len(sets) // 2))
         chosen = dict(s.split("=", 1) for s in sets[1::2])
