@@ -119,6 +119,8 @@ def sweep_main(args):
     n_bad = sum(s not in ("ok", "warning") for s in statuses)
     _log("%d of %d cases in %s (%d ran now, %d skipped as done; %d not ok: failed, diverged or refused)"
          % (len(statuses), len(cases), folder.table, out.ran, out.skipped, n_bad))
+    if out.ran:
+        _log("run phase: %d cases in %.3f s of wall time" % (out.ran, out.run_phase_s))
     if out.interrupted:
         _log("interrupted: %d cases left; rerun the same command to run only them" % (len(cases) - len(statuses)))
         return EXIT_INTERRUPTED

@@ -18,6 +18,7 @@ class SweepOutcome:
         self.ran = self.refused = self.failed = self.skipped = 0
         self.interrupted = False
         self.wall_s = 0.0
+        self.run_phase_s = 0.0  # from the first case submitted to the last row written [s]
 
 
 def open_folder(spec, cases, out):
@@ -65,10 +66,12 @@ def run_sweep(spec, cases, folder, client, cli, guard, check=True, retry_failed=
             by_id[case.case_id] = result
 
         items = [(c, _task(spec, cli, c, False)) for c in pending]
+        t_run = time.monotonic()
         try:
             run_tasks(client, run_case, items, on_result, guard, "case")
         finally:
             progress.finish()
+            out.run_phase_s = time.monotonic() - t_run
     except KeyboardInterrupt:
         out.interrupted = True
     out.wall_s = time.monotonic() - t0
