@@ -50,6 +50,17 @@ class InterruptGuard:
                 raise KeyboardInterrupt
 
 
+class QuietOnInterrupt:
+    """Worker plugin of the local cluster: Ctrl-C in a terminal reaches the worker processes too; they leave
+    it to the sweep (which closes the cluster) instead of dying with a traceback each. A Python handler, not
+    SIG_IGN: the CLI processes they start get the default action back at exec, so Ctrl-C stops them."""
+
+    def setup(self, worker):
+        import threading
+        if threading.current_thread() is threading.main_thread():
+            signal.signal(signal.SIGINT, lambda signum, frame: None)
+
+
 def open_client(workers=None, scheduler=None, connect_timeout=10.0):
     """(client, cluster or None). workers: processes of the local cluster (default: every core)."""
     from distributed import Client, LocalCluster
@@ -74,7 +85,9 @@ def open_client(workers=None, scheduler=None, connect_timeout=10.0):
     n = workers or os.cpu_count() or 1
     cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True, dashboard_address=None,
                            silence_logs=logging.ERROR)
-    return Client(cluster), cluster
+    client = Client(cluster)
+    client.register_worker_plugin(QuietOnInterrupt(), name="riser_sim_sweep-quiet-on-interrupt")
+    return client, cluster
 
 
 def _package_zip():

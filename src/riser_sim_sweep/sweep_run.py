@@ -58,6 +58,8 @@ def run_sweep(spec, cases, folder, client, cli, guard, check=True, retry_failed=
         by_id = {}
 
         def on_result(case, result):
+            if result.get("exit_code") == -2:  # the CLI got the terminal's Ctrl-C: not the case's result
+                raise KeyboardInterrupt
             if folder.write(case, result):
                 out.ran += 1
                 if result["status"] not in ("ok", "warning"):
