@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # riser_sim_node in real time with every output published and subscribed: real-time factor, CPU share
 # (the node process's utime + stime per wall second: robust to other load), step time and the p99 of one
-# publish period's work. Prints a table and writes out/bench/node.csv.
+# publish period's work. Prints a table and writes out/bench/node.csv, and the tables
+# out/bench/tables/node_table1.md, node_sea3d.md (bench_tables.py) of the cases run.
 #   bench/node_bench.sh [window_seconds] [table1|sea3d|all]     (default all; needs a built workspace)
 # table1: the Table 1 line (config/scenes/paper_table1.yaml) at n = 40 and n = 100, the vessel surging
 #   10 m / 27 s; dt per n: the largest of the paper's kind that is stable for RK4 with this stiff line
@@ -38,8 +39,10 @@ for spec in "${specs[@]}"; do
 done
 echo "node_bench: load average $(cut -d' ' -f1-3 /proc/loadavg) at the end"
 
-/usr/bin/python3 - "$csv" <<'PY'
+/usr/bin/python3 - "$csv" "$root/bench" "bench/node_bench.sh $*" <<'PY'
 import csv, sys
+sys.path.insert(0, sys.argv[2])
+import bench_tables
 rows = list(csv.DictReader(open(sys.argv[1])))
 head = ["scene", "n", "dt [s]", "RTF", "compute RTF", "CPU [%]", "step [us]", "p99 work/period [ms]", "period [ms]",
         "publish p99 [ms]", "tension [Hz]", "status"]
@@ -49,6 +52,22 @@ table = [head] + [[r.get(k, "") or "-" for k in keys] for r in rows]
 widths = [max(len(row[i]) for row in table) for i in range(len(head))]
 for row in table:
     print("  ".join(c.rjust(w) for c, w in zip(row, widths)))
+# docs/benchmarks.md's tables, one per case.
+md_head = ["n", "dt [s]", "real-time factor", "compute real-time factor", "CPU [% of a core]", "step [us]",
+           "p99 work per publish period [ms]", "publish period [ms]", "publish p99 [ms]", "status"]
+md_keys = ["n", "dt", "real_time_factor", "compute_real_time_factor", "cpu_percent", "step_mean_us",
+           "work_per_publish_period_p99_ms", "publish_period_ms", "publish_p99_ms", "status"]
+for name, scene in (("node_table1", "paper_table1"), ("node_sea3d", "spatial_sea_riser_n100")):
+    mine = [r for r in rows if r.get("scene", "") == scene]
+    if not mine:
+        continue
+    lines = ["The node on %s, every output published and subscribed:" % scene, "",
+             "| " + " | ".join(md_head) + " |", "|" + "---|" * len(md_head)]
+    cell = lambda v: " ".join((v or "-").replace("|", "/").split())  # a node's error text in one cell
+    lines += ["| " + " | ".join(cell(r.get(k, "")) for k in md_keys) + " |" for r in mine]
+    print()
+    print("\n".join(lines))
+    print("wrote %s" % bench_tables.write(name, lines, sys.argv[3]))
 PY
 echo "wrote $csv"
 exit $status

@@ -5,7 +5,8 @@ the reference's own convergence shaded; the speed/accuracy targets (docs/benchma
 <out>/pareto_<case>.png (position | top tension | largest axial force), <out>/pareto.png (positions, all
 cases), <out>/pareto_forces.png (forces, all cases) and, from step_cost.csv when present,
 <out>/step_cost.png. Prints, per case and accuracy, the cheapest setting that reaches it, and whether
-the force targets are met.
+the force targets are met; both tables also go to out/bench/tables/tradeoff_cheapest.md and
+tradeoff_force_targets.md (bench_tables.py) for docs/benchmarks.md.
 
   plot_tradeoff.py [--clock=cpu|wall] [CSV [OUT_DIR]]
 
@@ -17,6 +18,7 @@ import os
 import sys
 from collections import defaultdict
 
+import bench_tables  # noqa: E402  (beside this script)
 import matplotlib
 
 matplotlib.use("Agg")
@@ -217,9 +219,19 @@ def pct(x):
 
 
 # Cheapest setting per case and accuracy: position, then the two force histories.
-print(f"\nCheapest run per accuracy ({'thread CPU' if clock == 'cpu' else 'median wall'} time):\n")
-print("| case | measure | accuracy | setting | n | h or tol | CPU [s] | wall [s] | RTF (CPU) | error |")
-print("|---|---|---|---|---|---|---|---|---|---|")
+cheapest, force_targets = [], []
+
+
+def out(table, line):
+    print(line)
+    table.append(line)
+
+
+print()
+out(cheapest, f"Cheapest run per accuracy ({'thread CPU' if clock == 'cpu' else 'median wall'} time):")
+out(cheapest, "")
+out(cheapest, "| case | measure | accuracy | setting | n | h or tol | CPU [s] | wall [s] | RTF (CPU) | error |")
+out(cheapest, "|---|---|---|---|---|---|---|---|---|---|")
 KINDS = [("position", "err_pos_m", (1e-2, 1e-3, 1e-4), lambda a: f"{a * 1e3:g} mm", lambda e: f"{e * 1e3:.3g} mm"),
          ("top T RMS", "err_top_rms", (5e-2, 2e-2, 1e-2), pct, pct),
          ("max axial RMS", "err_axial_rms", (5e-2, 2e-2, 1e-2), pct, pct)]
@@ -232,17 +244,19 @@ for c in cases:
         for acc in accs:
             good = [r for r in ok if num(r, col) <= acc]
             if not good:
-                print(f"| {c} | {kind} | {fa(acc)} | none | | | | | | |")
+                out(cheapest, f"| {c} | {kind} | {fa(acc)} | none | | | | | | |")
                 continue
             b = min(good, key=lambda r: float(r[tcol]))
-            print(f"| {c} | {kind} | {fa(acc)} | {label(b)} | {b['n']} | {setting(b)} | {float(b['cpu_s']):.4g} | "
-                  f"{float(b['wall_s']):.4g} | {dur / float(b['cpu_s']):.0f} | {fe(num(b, col))} |")
+            out(cheapest, f"| {c} | {kind} | {fa(acc)} | {label(b)} | {b['n']} | {setting(b)} | {float(b['cpu_s']):.4g} | "
+                          f"{float(b['wall_s']):.4g} | {dur / float(b['cpu_s']):.0f} | {fe(num(b, col))} |")
 
 # The force targets: met or not, and the cheapest run that meets them.
-print(f"\nForce targets (RTF by {'thread CPU' if clock == 'cpu' else 'median wall'} time):\n")
-print("| case | target | met? | cheapest run that meets it | n | h or tol | RTF | top T RMS / max | "
+print()
+out(force_targets, f"Force targets (RTF by {'thread CPU' if clock == 'cpu' else 'median wall'} time):")
+out(force_targets, "")
+out(force_targets, "| case | target | met? | cheapest run that meets it | n | h or tol | RTF | top T RMS / max | "
       "max axial RMS / max |")
-print("|---|---|---|---|---|---|---|---|---|")
+out(force_targets, "|---|---|---|---|---|---|---|---|---|")
 for tcases, text, n, limits, rtf in FORCE_TARGETS:
     for c in tcases:
         if c not in cases:
@@ -252,15 +266,20 @@ for tcases, text, n, limits, rtf in FORCE_TARGETS:
         good = [r for r in ok if dur / float(r[tcol]) >= rtf and all(num(r, col) <= lim for col, lim in limits)]
         where = text + (f" (n = {n})" if n else "")
         if not ok:
-            print(f"| {c} | {where} | not run | | | | | | |")
+            out(force_targets, f"| {c} | {where} | not run | | | | | | |")
             continue
         if not good:
-            print(f"| {c} | {where} | **not met** | | | | | | |")
+            out(force_targets, f"| {c} | {where} | **not met** | | | | | | |")
             continue
         b = min(good, key=lambda r: float(r[tcol]))
-        print(f"| {c} | {where} | **met** | {label(b)} | {b['n']} | {setting(b)} | {dur / float(b[tcol]):.0f} | "
-              f"{pct(num(b, 'err_top_rms'))} / {pct(num(b, 'err_top_max'))} | "
-              f"{pct(num(b, 'err_axial_rms'))} / {pct(num(b, 'err_axial_max'))} |")
+        out(force_targets, f"| {c} | {where} | **met** | {label(b)} | {b['n']} | {setting(b)} | "
+                           f"{dur / float(b[tcol]):.0f} | {pct(num(b, 'err_top_rms'))} / {pct(num(b, 'err_top_max'))} | "
+                           f"{pct(num(b, 'err_axial_rms'))} / {pct(num(b, 'err_axial_max'))} |")
+
+command = " ".join(["bench/plot_tradeoff.py"] + sys.argv[1:])
+print(f"wrote {bench_tables.write('tradeoff_cheapest', cheapest, command)}")
+if len(force_targets) > 4:  # a row beyond the caption and the header
+    print(f"wrote {bench_tables.write('tradeoff_force_targets', force_targets, command)}")
 
 # Cost of one step against n.
 sc = os.path.join(os.path.dirname(src) or ".", "step_cost.csv")
