@@ -206,7 +206,7 @@ def tune_main(args):
                 est_rms, est_max = rms / (2 ** ORDER - 1), mx / (2 ** ORDER - 1)
                 conv.append((what, rms, mx, est_rms, est_max))
             converged = all(e_rms <= args.tol_rms / 4 and e_max <= args.tol_max / 4 for _, _, _, e_rms, e_max in conv)
-            unit = "" if args.absolute else " of max|ref|"
+            unit = "" if args.absolute else " (relative to max|ref|)"
             lines = ["reference: %s (%s s simulated)" % (" ".join(cases_r[0].set_args()[1::2]),
                                                          duration if duration is not None else "run.duration")]
             for what, rms, mx, er, em in conv:
