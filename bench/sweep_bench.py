@@ -88,6 +88,7 @@ def main():
     for r in res:
         print("| %s | %d | %.2f | %.3f | %.3f |" % (r["what"], r["cases"], r["run_phase_s"], r["per_case_s"],
                                                   r["case_process_s"]))
+    print("")
     print("speedup 2 workers / 1 worker (cases of >= 1 s): %.2f (nproc %d, load average %.1f)"
           % (speedup, os.cpu_count(), os.getloadavg()[0]))
     print("overhead per case beyond the CLI process (1 worker, 40 short cases): %.1f ms (target <= 50 ms); "
