@@ -59,6 +59,25 @@ class ResultsFolder:
         rows = list(csv.DictReader(io.StringIO(data.decode())))
         return {r["case_id"]: r["status"] for r in rows if r.get("status") in FINISHED}
 
+    def drop(self, case_ids):
+        """Removes the rows of case_ids (their rerun writes new ones): the table is rewritten to a temporary
+        file and renamed over the old one."""
+        case_ids = set(case_ids)
+        if not case_ids:
+            return
+        with open(self.table, newline="") as f:
+            lines = f.read().splitlines(keepends=True)
+        head, rows = lines[0], lines[1:]
+        keep = [ln for ln, r in zip(rows, csv.DictReader(io.StringIO("".join(lines)))) if r["case_id"] not in case_ids]
+        tmp = self.table + ".tmp"
+        with open(tmp, "w", newline="") as f:
+            f.write(head + "".join(keep))
+            f.flush()
+            os.fsync(f.fileno())
+        os.replace(tmp, self.table)
+        for cid in case_ids:
+            self.done.pop(cid, None)
+
     def _append(self, text):
         with open(self.table, "a") as f:
             f.write(text)

@@ -42,9 +42,9 @@ def run_sweep(spec, cases, folder, client, cli, guard, check=True, retry_failed=
     done = folder.done
     pending = [c for c in cases if c.case_id not in done or (retry_failed and done[c.case_id] != "ok"
                                                              and done[c.case_id] != "warning")]
-    if retry_failed:  # a retried case gets a new row: the old one is dropped from the resume set
-        for c in pending:
-            done.pop(c.case_id, None)
+    if retry_failed:  # a retried case gets a new row: its old one leaves the table first
+        with guard.hold():
+            folder.drop([c.case_id for c in pending if c.case_id in done])
     out.skipped = len(cases) - len(pending)
     if out.skipped:
         log("%d of %d cases already in %s: skipped" % (out.skipped, len(cases), folder.table))
@@ -108,9 +108,6 @@ def _check(spec, pending, folder, client, cli, guard, out, quiet, log):
         log("%d cases failed their initial statics (not run):" % len(failed))
         for case, r in failed:
             log("  case %d %s: %s" % (case.index, " ".join(case.set_args()[1::2]), r["reason"]))
-    if not good:
-        raise SweepError("every pending case failed the scene check; nothing to run (first: %s)"
-                         % (refused or failed)[0][1]["reason"])
     for case, r in refused + failed:
         r = dict(r, values={}, wall_s=None, cpu_s=None, run_wall_s=None, rtf=None)
         with guard.hold():
@@ -119,4 +116,7 @@ def _check(spec, pending, folder, client, cli, guard, out, quiet, log):
             out.refused += 1
         else:
             out.failed += 1
+    if not good:
+        raise SweepError("every pending case failed the scene check (their rows are in %s); nothing to run "
+                         "(first: %s)" % (folder.table, (refused or failed)[0][1]["reason"]))
     return [c for c in pending if results[c.case_id][1]["status"] in ("ok", "warning")]

@@ -296,6 +296,11 @@ class Sweep(unittest.TestCase):
         self.assertEqual(st["0"]["status"], "refused")
         self.assertIn("line.elements", st["0"]["reason"])
         self.assertEqual((st["6"]["status"], st["8"]["status"]), ("ok", "ok"))
+        # --retry-failed reruns the refused case alone; the table keeps one row per case.
+        p = tool([mixed, "--out", out, "--workers", "1", "--no-plots", "--retry-failed"])
+        self.assertEqual(p.returncode, 2, p.stderr)  # nothing left to run: every pending case refused
+        self.assertIn("2 of 3 cases already in", p.stderr)
+        self.assertEqual(sorted(r["line.elements"] for r in read_rows(out)), ["0", "6", "8"])
         # The same folder for another sweep.
         p = tool([heading_sweep(self.tmp), "--out", out, "--workers", "1"])
         self.assertEqual(p.returncode, 2)
