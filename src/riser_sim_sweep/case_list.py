@@ -4,6 +4,7 @@ cases finds the finished ones again."""
 import hashlib
 import itertools
 import json
+import re
 
 from .scatter_table import read_scatter
 
@@ -23,9 +24,16 @@ class Case:
         return out
 
 
+PLAIN = re.compile(r"^[A-Za-z_][A-Za-z0-9_]*$")
+YAML_WORDS = {"true", "false", "yes", "no", "on", "off", "null", "y", "n", "~"}
+
+
 def format_value(v):
+    """As YAML the CLI reads back exactly: floats by repr, a plain word as itself, the rest as JSON."""
     if isinstance(v, float):
         return repr(v)
+    if isinstance(v, str) and PLAIN.match(v) and v.lower() not in YAML_WORDS:
+        return v
     return json.dumps(v)
 
 

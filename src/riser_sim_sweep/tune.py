@@ -206,7 +206,7 @@ def tune_main(args):
                 est_rms, est_max = rms / (2 ** ORDER - 1), mx / (2 ** ORDER - 1)
                 conv.append((what, rms, mx, est_rms, est_max))
             converged = all(e_rms <= args.tol_rms / 4 and e_max <= args.tol_max / 4 for _, _, _, e_rms, e_max in conv)
-            unit = "" if args.absolute else " (relative to max|ref|)"
+            unit = "" if args.absolute else ", relative to max|ref|"
             lines = ["reference: %s (%s s simulated)" % (" ".join(cases_r[0].set_args()[1::2]),
                                                          duration if duration is not None else "run.duration")]
             for what, rms, mx, er, em in conv:
@@ -271,7 +271,7 @@ def tune_main(args):
              % (args.tol_rms, args.tol_max, unit, q, " ".join(min(finite, key=lambda r: r["rms"])["set"])
                 if finite else "none", min((r["rms"] for r in finite), default=math.nan)))
         return 3
-    _log("cheapest within RMS %g, max %g%s of %s: RTF %.3g, error RMS %.3g, max %.3g%s"
+    _log("cheapest within RMS %g, max %g%s, on %s: RTF %.3g, error RMS %.3g, max %.3g%s"
          % (args.tol_rms, args.tol_max, unit, q, best["rtf"], best["rms"], best["max"],
             "" if best["status"] == "ok" else " (CLI warning: %s)" % best["status"]))
     print(" ".join("--set %s" % s for s in best["set"]))
