@@ -7,10 +7,7 @@ add_library(riser_sim_ros
   src/node/line_messages.cpp
   src/node/line_markers.cpp
   src/node/sea_markers.cpp
-  src/node/line_messages3.cpp
-  src/node/line_run.cpp
-  src/node/planar_line_run.cpp
-  src/node/spatial_line_run.cpp
+  src/node/node_run.cpp
   src/node/timing_stats.cpp
   src/node/modes_service.cpp
   src/node/master_watch.cpp
@@ -74,7 +71,7 @@ if(CATKIN_ENABLE_TESTING)
     catkin_add_gtest(test_node_helpers test/ros/test_node_helpers.cpp)
     riser_sim_ros_test(test_node_helpers)
   endif()
-  # The 3D outputs through the node's LineRun (~state, markers, frames), no master either.
+  # The 3D outputs through the node's run (NodeRun: ~state, markers, frames), no master either.
   catkin_add_gtest(test_node_helpers3 test/ros/test_node_helpers3.cpp)
   riser_sim_ros_test(test_node_helpers3)
   # rosrun finds the programs once and quietly (the workspace is not inside the package tree).

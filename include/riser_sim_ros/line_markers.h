@@ -8,10 +8,8 @@
 
 #include <visualization_msgs/MarkerArray.h>
 
-#include "riser_sim/model.h"
-#include "riser_sim/outputs.h"
+#include "riser_sim/line_run.h"
 #include "riser_sim/scene.h"
-#include "riser_sim/spatial/run_builder.h"
 #include "riser_sim_ros/node_params.h"
 
 namespace riser_sim_ros {
@@ -31,17 +29,13 @@ class LineMarkers {
   // Marker ids (each marker also has its own ns: line, nodes, end_mass, top_tension, legend, ...).
   enum Id { kLine = 0, kNodes, kEndMass, kTopText, kLegendBar, kLegendLow, kLegendHigh, kLegendTitle, kWater, kSeabed };
 
-  LineMarkers(const riser_sim::Model& model, const std::string& fixed_frame, const MarkerParams& params,
+  // The line of `length` [m] in `bodies` rfes, its end mass drawn larger when it has one.
+  LineMarkers(double length, int bodies, bool end_mass, const std::string& fixed_frame, const MarkerParams& params,
               const Surfaces& surfaces = {});
-  void fill(const riser_sim::LineOutputs& out, const ros::Time& stamp);
-  // The 3D line (space: spatial): the same markers, in 3D.
-  void fill(const riser_sim::spatial::LineOutputs3& out, const ros::Time& stamp);
+  void fill(const riser_sim::RunOutputs& out, const ros::Time& stamp);
   visualization_msgs::MarkerArray msg;
 
  private:
-  // P(i) -> world point of vertex i = 0..n + 1 (A_0 .. A_n, end).
-  template <class P>
-  void fillWith(P world, const std::vector<double>& axial_force, double top_tension, const ros::Time& stamp);
   visualization_msgs::Marker& marker(int id) { return msg.markers[index_[id]]; }
   int index_[kSeabed + 1] = {-1, -1, -1, -1, -1, -1, -1, -1, -1, -1};
   double length_, text_height_;

@@ -1,7 +1,7 @@
 // The node's data outputs as one table: each entry is a topic (or the tf frames) with its publishing
-// rate (~rates/<name>, in ROS time) and the function that sends the LineRun's message. Adding a topic: a
-// line in dataTopicRates() and one in LineTopics' constructor (line_topics.cpp), and its message in
-// LineRun (line_run.h) and its planar and 3D implementations.
+// rate (~rates/<name>, in ROS time) and the function that sends the NodeRun's message. Adding a topic: a
+// line in dataTopicRates() and one in LineTopics' constructor (line_topics.cpp), its message filled from
+// riser_sim::RunOutputs by LineMessages (line_messages.h) and handed out by NodeRun (node_run.h).
 #pragma once
 #include <functional>
 #include <memory>
@@ -11,7 +11,7 @@
 #include <ros/ros.h>
 #include <tf2_ros/transform_broadcaster.h>
 
-#include "riser_sim_ros/line_run.h"
+#include "riser_sim_ros/node_run.h"
 #include "riser_sim_ros/node_params.h"
 #include "riser_sim_ros/ros_clock.h"
 
@@ -36,11 +36,11 @@ class LineTopics {
   bool due(const ros::Time& now);
   // Sends the marked topics: the run's messages of its last evaluate(), stamped `stamp`. True when the
   // fastest topic (the one that defines "one publish period") was among them.
-  bool publishDue(LineRun& run, const ros::Time& stamp);
+  bool publishDue(NodeRun& run, const ros::Time& stamp);
   double referencePeriod() const;  // period of the fastest topic [s]; NaN when all are off
 
  private:
-  using Send = std::function<void(LineRun&, const ros::Time&)>;
+  using Send = std::function<void(NodeRun&, const ros::Time&)>;
   struct Topic {
     std::string name;
     Schedule schedule;

@@ -8,7 +8,7 @@
 #include <diagnostic_msgs/DiagnosticArray.h>
 #include <ros/ros.h>
 
-#include "riser_sim_ros/line_run.h"
+#include "riser_sim_ros/node_run.h"
 #include "riser_sim_ros/ros_clock.h"
 #include "riser_sim_ros/timing_stats.h"
 #include "riser_sim_ros/vessel_input.h"
@@ -24,8 +24,10 @@ std::string num(double v, const char* format = "%.6g");
 struct RunView {
   RunMode mode = RunMode::kWaiting;
   std::string reason;                              // why diverged / statics failed
-  LineRun* line = nullptr;                         // null before the first start (energy is computed lazily)
+  NodeRun* line = nullptr;                         // null before the first start (energy is computed lazily)
   ros::Time last_pose;                             // ROS time the last valid pose arrived (zero: none)
+  bool missing_vessel = true, missing_bottom = false;  // waiting: the inputs without a valid pose yet
+  long failed_starts = 0;                          // start attempts that failed since the last start
 };
 
 class NodeDiagnostics {
@@ -54,6 +56,7 @@ class NodeDiagnostics {
  private:
   void addValue(const char* key, const std::string& value);
   std::string runningMessage(const ros::Time& now, const RunView& run, double pose_age);
+  std::string waitingFor(const RunView& run) const;  // "vessel pose (<source>)", the bottom's, or both
 
   ros::Publisher pub_;
   std::string name_;

@@ -23,13 +23,17 @@ struct MarkerParams {
   double text_height = 0.0;  // [m], 0 = L / 25
 };
 
+// The largest hang-off or bottom offset: a point on the vessel (the ROV) [m]. Its lever arm turns the body's
+// attitude into the point's motion, so an offset far beyond any hull makes every roll a huge displacement.
+constexpr double kMaxOffset = 1000.0;
+
 struct NodeParams {
   std::string vessel_input = "pose";   // pose | odom | tf
   std::string fixed_frame = "world";
   std::string vessel_frame = "vessel";  // tf input: child frame looked up in fixed_frame
   std::string expected_frame;           // header.frame_id of pose/odom input; default fixed_frame
   std::string tf_prefix;                // default: node name without the leading slash
-  Eigen::Vector3d hangoff_offset = Eigen::Vector3d::Zero();  // hang-off point in the vessel frame [m]
+  Eigen::Vector3d hangoff_offset = Eigen::Vector3d::Zero();  // hang-off point in the vessel frame [m], |.| <= kMaxOffset
   std::string wrench_frame = "fixed";  // 3D wrenches: fixed (fixed_frame) | body (vessel_frame, bottom_frame)
   // A driven bottom (3D, bottom.motion.type external): ~bottom_pose's attachment point in the ROV frame [m]
   // and the frame_id of a body-frame ~bottom_wrench.
@@ -37,7 +41,7 @@ struct NodeParams {
   std::string bottom_frame = "rov";
   double pose_timeout = 1.0;       // no valid pose for this long: warn and hold [s]
   double max_out_of_plane = 1.0;   // warn when the hang-off's world y exceeds this [m]
-  double max_position = 1e7;       // poses with a coordinate beyond this are ignored [m]
+  double max_position = 1e7;       // poses (and hang-off / bottom points) with a coordinate beyond this are ignored [m]
   double max_pose_age = 1.0;       // poses stamped more than this before ROS time are ignored [s]
   double max_pose_lead = 0.5;      // poses stamped more than this after ROS time are ignored [s]
   double clock_timeout = 1.0;      // ROS time still for this long (wall time): paused, said on /diagnostics [s]

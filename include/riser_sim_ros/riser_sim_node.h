@@ -2,8 +2,8 @@
 // See docs/ros_interface.md for topics, frames, parameters and services.
 //
 // Composition: VesselInput (poses in -> SampleBuffer), RosClockWatch + LoopPacer (ROS time, wall
-// pacing), the run (LineRun: the planar core or, for space: spatial, the 3D one), LineTopics (the data
-// topics, each at its rate),
+// pacing), the run (NodeRun: the core's LineRun over either engine, fed the poses, and its messages),
+// LineTopics (the data topics, each at its rate),
 // NodeDiagnostics (/diagnostics), ResetHandshake (~reset) and ModesServer (~modes).
 //
 // Threads: ROS callbacks (vessel input, ~reset, tf listener) only copy samples into a SampleBuffer; they
@@ -23,11 +23,11 @@
 #include <tf2_ros/buffer.h>
 
 #include "riser_sim/scene.h"
-#include "riser_sim_ros/line_run.h"
 #include "riser_sim_ros/line_topics.h"
 #include "riser_sim_ros/modes_service.h"
 #include "riser_sim_ros/node_diagnostics.h"
 #include "riser_sim_ros/node_params.h"
+#include "riser_sim_ros/node_run.h"
 #include "riser_sim_ros/reset_handshake.h"
 #include "riser_sim_ros/ros_clock.h"
 #include "riser_sim_ros/scene_param.h"
@@ -55,6 +55,7 @@ class RiserSimNode {
   void onClockJump(const ros::Time& now);
   bool start(const VesselSample& s, const VesselSample* bottom, const ros::Time& now, std::string& message);
   void tryStart(int n, int nb, const ros::Time& now);
+  void startFailed(const std::string& message);  // logs a failed start (once, then throttled with a count)
   void integrate(const ros::Time& now);
   void publish();
   void serveReset(const ros::Time& now);
@@ -85,7 +86,7 @@ class RiserSimNode {
   ResetHandshake reset_;
   ros::ServiceServer reset_srv_;
 
-  std::unique_ptr<LineRun> line_;
+  std::unique_ptr<NodeRun> line_;
   RunView run_;                    // mode, reason, line_, last pose: what /diagnostics reports
   std::atomic<bool> stop_{false};
   ros::Time origin_;               // sim time t = (ROS time - origin_) - dropped_
@@ -94,6 +95,11 @@ class RiserSimNode {
   // Rate limits of repeated warnings, per riser (ROS_WARN_THROTTLE's limit is shared by every riser of
   // a nodelet manager) and on wall time.
   WarnThrottle waiting_warn_{5.0}, no_pose_warn_{5.0}, no_bottom_warn_{5.0}, behind_warn_{5.0};
+  // A start that keeps failing: the first failure is logged, then at most one line per kStartErrorPeriod
+  // with the number of failures in between (all counted on /diagnostics).
+  static constexpr double kStartErrorPeriod = 60.0;  // [s] of wall time
+  WallClock::time_point start_error_logged_;
+  long start_failures_logged_ = 0;  // run_.failed_starts at the last line
   std::unique_ptr<ModesServer> modes_;  // last: stopped first on destruction
 };
 

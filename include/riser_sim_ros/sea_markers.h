@@ -15,8 +15,8 @@
 #include <Eigen/Geometry>
 #include <visualization_msgs/MarkerArray.h>
 
+#include "riser_sim/line_run.h"
 #include "riser_sim/scene.h"
-#include "riser_sim/spatial/run_builder.h"
 #include "riser_sim/spatial/water.h"
 #include "riser_sim/water.h"
 #include "riser_sim_ros/line_markers.h"
@@ -36,7 +36,7 @@ class SeaMarkers3 {
   // Appends the scene's markers to msg (LineMarkers' array, frame and stamps as its markers).
   SeaMarkers3(const riser_sim::Scene& scene, const std::string& fixed_frame, visualization_msgs::MarkerArray& msg);
   // Updates them in msg for the line in `out` (its time and horizontal extent). Allocates nothing.
-  void fill(const riser_sim::spatial::LineOutputs3& out, visualization_msgs::MarkerArray& msg) const;
+  void fill(const riser_sim::RunOutputs& out, visualization_msgs::MarkerArray& msg) const;
   bool empty() const { return current_ < 0 && waves_ < 0 && seabed_ < 0; }
 
  private:

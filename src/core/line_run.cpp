@@ -2,29 +2,73 @@
 #include "riser_sim/line_run.h"
 
 #include <cmath>
+#include <stdexcept>
 
 #include "riser_sim/run_builder.h"
+#include "riser_sim/spatial/external_motion3.h"
+#include "riser_sim/spatial/joint_bending.h"
+#include "riser_sim/spatial/rfe_frames.h"
 #include "riser_sim/spatial/run_builder.h"
 
 namespace riser_sim {
+
+bool allFinite(const RunOutputs& o) {
+  const auto finite = [](const std::vector<double>& v) {
+    for (double x : v)
+      if (!std::isfinite(x)) return false;
+    return true;
+  };
+  const auto finite3 = [](const AlignedVector<Vec3>& v) {
+    for (const Vec3& x : v)
+      if (!x.allFinite()) return false;
+    return true;
+  };
+  for (const Eigen::Quaterniond& q : o.frames)
+    if (!q.coeffs().allFinite()) return false;
+  for (const Vec3* v : {&o.top_point, &o.end_point, &o.top_force, &o.bottom_force, &o.top_moment, &o.bottom_moment,
+                        &o.bottom_point})
+    if (!v->allFinite()) return false;
+  for (double x : {o.t, o.top_twist, o.top_tension, o.max_tension, o.bottom_tension, o.energy, o.work,
+                   o.energy_drift, o.constraint_error})
+    if (!std::isfinite(x)) return false;
+  return finite3(o.springs) && finite3(o.points) && finite3(o.bending_moment_vector) && finite(o.axial_force) &&
+         finite(o.elongations) && finite(o.arc_length) && finite(o.angles) && finite(o.bending_moment) &&
+         finite(o.curvature);
+}
 
 namespace {
 
 // Planar (x, y), y up -> 3D (x, 0, y), z up.
 Vec3 inSpace(const Vec2& p) { return Vec3(p.x(), 0.0, p.y()); }
+// 3D -> the planar scene's plane (world y dropped).
+Vec2 inPlane(const Vec3& p) { return Vec2(p.x(), p.z()); }
+
+// Every per-rfe and per-joint output sized for nb rfes.
+void sizeOutputs(RunOutputs& o, int nb, bool planar) {
+  o.springs.assign(nb, Vec3::Zero());
+  o.axial_force.assign(nb, 0.0);
+  o.points.assign(nb + 1, Vec3::Zero());
+  o.frames.assign(nb, Eigen::Quaterniond::Identity());
+  o.elongations.assign(nb, 0.0);
+  o.arc_length.assign(nb, 0.0);
+  o.angles.assign(planar ? nb : 0, 0.0);
+  o.bending_moment_vector.assign(nb - 1, Vec3::Zero());
+  o.bending_moment.assign(nb - 1, 0.0);
+  o.curvature.assign(nb - 1, 0.0);
+}
 
 class PlanarLineRun : public LineRun {
  public:
-  explicit PlanarLineRun(const Scene& scene) : run_(buildRun(scene)), sim_(*run_.sim) {
+  PlanarLineRun(const Scene& scene, const LineRunInputs& inputs) : run_(build(scene, inputs)), sim_(*run_.sim) {
     const InitialState& init = run_.initial;
     start_.about = init.about;
+    start_.equilibrium = init.equilibrium;
     start_.statics_iterations = init.statics.iterations;
     start_.statics_residual = init.statics.residual;
     start_.statics_message = init.statics.message;
     start_.end_force = inSpace(init.statics.end_force);
-    const int rfes = sim_.model().bodies();
-    out_.springs.assign(rfes, Vec3::Zero());
-    out_.axial_force.assign(rfes, 0.0);
+    if (inputs.top) motion_ = static_cast<ExternalMotion*>(&sim_.topMotion());
+    sizeOutputs(out_, sim_.model().bodies(), true);
   }
   bool spatial() const override { return false; }
   bool step() override { return sim_.step(); }
@@ -34,20 +78,34 @@ class PlanarLineRun : public LineRun {
   const std::string& divergenceReason() const override { return sim_.divergenceReason(); }
   const RunOutputs& outputs() override {
     const LineOutputs& o = sim_.outputs();
+    const Model& model = sim_.model();
     out_.t = o.t;
     out_.top_point = inSpace(o.points.front());
     out_.end_point = inSpace(o.points.back());
     out_.top_force = inSpace(o.top_force);
     out_.bottom_force = inSpace(o.bottom_force);
     out_.top_tension = o.top_tension;
+    out_.bottom_tension = o.bottom_tension;
     out_.max_tension = o.max_tension;
     out_.energy = o.kinetic_energy + o.potential_energy;
     out_.work = o.work_in;
     out_.constraint_error = o.constraint_error;
+    for (size_t k = 0; k < o.points.size(); ++k) out_.points[k] = inSpace(o.points[k]);
     for (size_t k = 0; k < out_.springs.size(); ++k) {  // A_k + l1_k (cos φ_k, sin φ_k)
-      const double l1 = sim_.model().rfe(static_cast<int>(k)).length1, phi = o.angles[k];
+      const double l1 = model.rfe(static_cast<int>(k)).length1, phi = o.angles[k];
       out_.springs[k] = inSpace(o.points[k] + l1 * Vec2(std::cos(phi), std::sin(phi)));
       out_.axial_force[k] = o.axial_force[k];
+      out_.elongations[k] = o.elongations[k];
+      out_.arc_length[k] = o.arc_length[k];
+      out_.angles[k] = phi;
+      // x towards z in the x-z plane: a turn by -φ about y.
+      out_.frames[k] = Eigen::Quaterniond(Eigen::AngleAxisd(-phi, Vec3::UnitY()));
+    }
+    const double d = model.segmentLength();
+    for (size_t j = 0; j < out_.bending_moment.size(); ++j) {  // a turn from +x towards +z is about -y
+      out_.bending_moment[j] = o.bending_moment[j];
+      out_.bending_moment_vector[j] = Vec3(0.0, -o.bending_moment[j], 0.0);
+      out_.curvature[j] = std::abs(o.angles[j + 1] - o.angles[j]) / d;
     }
     out_.energy_drift = sim_.energyDrift();
     return out_;
@@ -58,21 +116,51 @@ class PlanarLineRun : public LineRun {
   const ForceNoiseMonitor& forceNoise() const override { return sim_.forceNoise(); }
   std::string forceWarning(const ForceNoise& e) const override { return sim_.forceWarning(e); }
   double stableStepEstimate() const override { return sim_.stableStepEstimate(); }
+  std::string stepAboveLimit() const override { return sim_.stepAboveLimit(); }
   double highestFrequency() const override { return sim_.highestFrequency(); }
   bool explicitFixedStep() const override { return sim_.integrator().explicitFixedStep(); }
   Integrator::Stats integratorStats() const override { return sim_.integrator().stats(); }
 
+  bool addSample(Holder h, double t_sample, const Vec3& p, const Eigen::Quaterniond&) override {
+    return h == Holder::kTop && motion_ && motion_->addSample(t_sample, inPlane(p), sim_.time());
+  }
+  void restartHolder(Holder h, double t, const Vec3& p, const Eigen::Quaterniond&) override {
+    if (h == Holder::kTop && motion_) motion_->reset(t, inPlane(p));
+  }
+  void shiftSampleTimes(double dt) override {
+    if (motion_) motion_->shiftSampleTimes(dt);
+  }
+  bool live(Holder h) const override { return h == Holder::kTop && motion_; }
+  MotionGaps gaps(Holder h) const override { return live(h) ? motion_->gaps() : MotionGaps(); }
+
  private:
+  // The run of the scene; a live top: an ExternalMotion from its start, the scene's top fixed there.
+  Run build(const Scene& scene, const LineRunInputs& inputs) {
+    if (inputs.bottom)
+      throw std::invalid_argument("bottom.motion: a bottom driven from outside needs space: spatial");
+    held_ = scene;
+    if (!inputs.top) return buildRun(held_);
+    const Vec2 top = inPlane(inputs.top->point);
+    held_.top.type = MotionKind::kFixed;
+    held_.top.position = top;
+    RunInputs in;
+    in.top = top;
+    in.motion = std::make_unique<ExternalMotion>(top, inputs.top->t, inputs.motion);
+    return buildRun(held_, std::move(in));
+  }
+
   Run run_;
   Simulator& sim_;
+  ExternalMotion* motion_ = nullptr;  // a live top, owned by sim_
   RunOutputs out_;
 };
 
 class SpatialLineRun : public LineRun {
  public:
-  explicit SpatialLineRun(const Scene& scene) : run_(scene) {
+  SpatialLineRun(const Scene& scene, const LineRunInputs& inputs) : run_(build(scene, inputs)) {
     const spatial::InitialState3& init = run_.initial();
     start_.about = init.about;
+    start_.equilibrium = init.equilibrium;
     start_.statics_iterations = init.statics.iterations;
     start_.statics_residual = init.statics.residual;
     start_.statics_message = init.statics.message;
@@ -83,6 +171,18 @@ class SpatialLineRun : public LineRun {
     start_.has_twist_moment = scene.torsion.enabled;
     start_.initial_twist_moment = init.max_twist_moment;
     start_.initial_twist_moment_bound = init.twist_moment_bound;
+    if (bottom_) {  // the modes hold a driven bottom where it started
+      held_.bottom_motion.type = MotionKind::kFixed;
+      held_.bottom_point3 = held_.bottom_motion.position3 = init.kin.back().end();
+    }
+    const spatial::SpatialModel& model = run_.model();
+    const int nb = model.bodies();
+    sizeOutputs(out_, nb, false);
+    for (int i = 0; i < nb; ++i) out_.arc_length[i] = model.rfe(i).s_begin + 0.5 * model.rfe(i).length;
+    stiffness_ = model.bendingStiffness();
+    damping_ = model.bendingDamping();
+    segment_ = model.line().segmentLength();
+    kin_.resize(nb);
   }
   bool spatial() const override { return true; }
   bool step() override { return run_.step(); }
@@ -92,6 +192,9 @@ class SpatialLineRun : public LineRun {
   const std::string& divergenceReason() const override { return run_.divergenceReason(); }
   const RunOutputs& outputs() override {
     const spatial::LineOutputs3& o = run_.outputs();
+    const spatial::SpatialSimulator& sim = run_.simulator();
+    sim.kinematics(kin_);  // of the same state, velocities included (the dampers' moments)
+    const spatial::Kinematics3& kin = kin_;
     out_.t = o.t;
     out_.top_point = o.points.front();
     out_.end_point = o.points.back();
@@ -102,14 +205,24 @@ class SpatialLineRun : public LineRun {
     out_.bottom_point = o.bottom_point;
     out_.top_twist = o.top_twist;
     out_.top_tension = o.top_tension;
+    out_.bottom_tension = o.axial_force.back();
     out_.max_tension = o.max_tension;
     out_.energy = o.kinetic_energy + o.potential_energy;
     out_.work = o.work_in;
     out_.constraint_error = o.constraint_error;
-    out_.springs.resize(o.springs.size());  // the same size every call: allocates once
-    out_.axial_force.resize(o.axial_force.size());
-    for (size_t k = 0; k < o.springs.size(); ++k) out_.springs[k] = o.springs[k];
-    for (size_t k = 0; k < o.axial_force.size(); ++k) out_.axial_force[k] = o.axial_force[k];
+    for (size_t k = 0; k < o.points.size(); ++k) out_.points[k] = o.points[k];
+    for (size_t k = 0; k < o.springs.size(); ++k) {
+      out_.springs[k] = o.springs[k];
+      out_.axial_force[k] = o.axial_force[k];
+      out_.elongations[k] = kin[k].delta;
+    }
+    for (size_t j = 0; j < out_.curvature.size(); ++j) {
+      const spatial::BendingJoint b = spatial::bendingJoint(kin[j], kin[j + 1], stiffness_, damping_, segment_);
+      out_.curvature[j] = b.curvature;
+      out_.bending_moment_vector[j] = b.moment;
+      out_.bending_moment[j] = b.moment.norm();
+    }
+    fillFrames(sim, kin);
     out_.energy_drift = run_.energyDrift();
     return out_;
   }
@@ -119,6 +232,7 @@ class SpatialLineRun : public LineRun {
   const ForceNoiseMonitor& forceNoise() const override { return run_.forceNoise(); }
   std::string forceWarning(const ForceNoise& e) const override { return run_.forceWarning(e); }
   double stableStepEstimate() const override { return run_.stableStepEstimate(); }
+  std::string stepAboveLimit() const override { return run_.stepAboveLimit(); }
   double highestFrequency() const override { return run_.highestFrequency(); }
   bool explicitFixedStep() const override { return run_.explicitFixedStep(); }
   Integrator::Stats integratorStats() const override { return run_.simulator().integrator().stats(); }
@@ -129,16 +243,78 @@ class SpatialLineRun : public LineRun {
   double maxTopMoment() const override { return run_.maxTopMoment(); }
   double maxBottomMoment() const override { return run_.maxBottomMoment(); }
 
+  bool addSample(Holder h, double t_sample, const Vec3& p, const Eigen::Quaterniond& q) override {
+    spatial::ExternalMotion3* m = motion(h);
+    return m && m->addSample(t_sample, p, q, run_.time());
+  }
+  void restartHolder(Holder h, double t, const Vec3& p, const Eigen::Quaterniond& q) override {
+    if (spatial::ExternalMotion3* m = motion(h)) m->reset(t, p, q);
+  }
+  void shiftSampleTimes(double dt) override {
+    if (top_) top_->shiftSampleTimes(dt);
+    if (bottom_) bottom_->shiftSampleTimes(dt);
+  }
+  bool live(Holder h) const override { return (h == Holder::kTop ? top_ : bottom_.get()) != nullptr; }
+  MotionGaps gaps(Holder h) const override {
+    const spatial::ExternalMotion3* m = h == Holder::kTop ? top_ : bottom_.get();
+    return m ? m->gaps() : MotionGaps();
+  }
+
  private:
-  mutable spatial::SpatialRun run_;  // simulator() is non-const
+  // The run of the scene; live holders: ExternalMotion3s from their starts (with the attitude: flex joints
+  // turn with the vessel and the ROV), the scene's top fixed at its start.
+  spatial::SpatialRun build(const Scene& scene, const LineRunInputs& inputs) {
+    held_ = scene;
+    spatial::RunInputs3 in;
+    if (inputs.top) {
+      const HolderStart& s = *inputs.top;
+      held_.top.type = MotionKind::kFixed;
+      held_.top.position3 = s.point;
+      in.top = s.point;
+      auto m = std::make_unique<spatial::ExternalMotion3>(s.point, s.attitude, s.t, inputs.motion);
+      top_ = m.get();
+      in.motion = std::move(m);
+    }
+    if (inputs.bottom) {
+      const HolderStart& s = *inputs.bottom;
+      bottom_ = std::make_shared<spatial::ExternalMotion3>(s.point, s.attitude, s.t, inputs.motion);
+      in.bottom_motion = bottom_;
+    }
+    return spatial::SpatialRun(held_, std::move(in));
+  }
+  spatial::ExternalMotion3* motion(Holder h) { return h == Holder::kTop ? top_ : bottom_.get(); }
+
+  // Torsion on: the material frames (the spins follow q in the state, simulator.h); a chart at its singularity
+  // (the top rfe turned 180 deg from the hang-off's axis) or no torsion: the minimal-rotation frames.
+  void fillFrames(const spatial::SpatialSimulator& sim, const spatial::Kinematics3& kin) {
+    const int nb = static_cast<int>(out_.frames.size());
+    bool finite = false;
+    if (run_.hasTorsion()) {
+      const double* theta = sim.state().data() + run_.model().dofs();
+      const spatial::TwistFrames& f = sim.lastEvaluation().twist.frames;
+      finite = true;
+      for (int i = 0; i < nb; ++i) {
+        out_.frames[i] = spatial::materialFrame(kin[i].e, f.centre[i], f.ref[i], i == 0 ? 0.0 : theta[i]);
+        finite = finite && out_.frames[i].coeffs().allFinite();
+      }
+    }
+    if (!finite) line_frames_.update(out_.points, nb, out_.frames);
+  }
+
+  spatial::ExternalMotion3* top_ = nullptr;         // a live top, owned by run_'s simulator
+  std::shared_ptr<spatial::ExternalMotion3> bottom_;  // a live bottom, shared with run_'s model
+  mutable spatial::SpatialRun run_;                 // simulator() is non-const
   RunOutputs out_;
+  spatial::LineFrames line_frames_;
+  spatial::Kinematics3 kin_;  // of the last outputs()
+  double stiffness_ = 0.0, damping_ = 0.0, segment_ = 1.0;  // c = EI/d [N m/rad], c_d [N m s/rad], d [m]
 };
 
 }  // namespace
 
-std::unique_ptr<LineRun> buildLineRun(const Scene& scene) {
-  if (scene.space == SpaceKind::kSpatial) return std::make_unique<SpatialLineRun>(scene);
-  return std::make_unique<PlanarLineRun>(scene);
+std::unique_ptr<LineRun> buildLineRun(const Scene& scene, const LineRunInputs& inputs) {
+  if (scene.space == SpaceKind::kSpatial) return std::make_unique<SpatialLineRun>(scene, inputs);
+  return std::make_unique<PlanarLineRun>(scene, inputs);
 }
 
 }  // namespace riser_sim

@@ -50,10 +50,10 @@ std_msgs::ColorRGBA tensionColour(double x, double lo, double hi) {
               stops[k][2] + w * (stops[k + 1][2] - stops[k][2]));
 }
 
-LineMarkers::LineMarkers(const riser_sim::Model& model, const std::string& fixed_frame, const MarkerParams& params,
-                         const Surfaces& surfaces)
-    : length_(model.length()), surfaces_(surfaces) {
-  const int nb = model.bodies();
+LineMarkers::LineMarkers(double length, int bodies, bool end_mass, const std::string& fixed_frame,
+                         const MarkerParams& params, const Surfaces& surfaces)
+    : length_(length), surfaces_(surfaces) {
+  const int nb = bodies;
   const double width = params.line_width > 0.0 ? params.line_width : length_ / 150.0;
   const double sphere = params.node_scale > 0.0 ? params.node_scale : 2.5 * width;
   text_height_ = params.text_height > 0.0 ? params.text_height : length_ / 25.0;
@@ -83,7 +83,7 @@ LineMarkers::LineMarkers(const riser_sim::Model& model, const std::string& fixed
   marker(kNodes).points.resize(nb);  // A_0 .. A_n
 
   add(kEndMass, Marker::SPHERE, "end_mass");
-  const double end_size = model.endMass() > 0.0 ? 2.0 * sphere : sphere;
+  const double end_size = end_mass ? 2.0 * sphere : sphere;
   marker(kEndMass).scale.x = marker(kEndMass).scale.y = marker(kEndMass).scale.z = end_size;
   marker(kEndMass).color = rgba(0.9, 0.5, 0.1);
 
@@ -112,22 +112,13 @@ LineMarkers::LineMarkers(const riser_sim::Model& model, const std::string& fixed
   }
 }
 
-void LineMarkers::fill(const riser_sim::LineOutputs& out, const ros::Time& stamp) {
-  fillWith([&](int i) { return point(out.points[i].x(), out.points[i].y()); }, out.axial_force, out.top_tension, stamp);
-}
-
-void LineMarkers::fill(const riser_sim::spatial::LineOutputs3& out, const ros::Time& stamp) {
-  fillWith(
-      [&](int i) {
-        geometry_msgs::Point p;
-        p.x = out.points[i].x(), p.y = out.points[i].y(), p.z = out.points[i].z();
-        return p;
-      },
-      out.axial_force, out.top_tension, stamp);
-}
-
-template <class P>
-void LineMarkers::fillWith(P world, const std::vector<double>& axial_force, double top_tension, const ros::Time& stamp) {
+void LineMarkers::fill(const riser_sim::RunOutputs& out, const ros::Time& stamp) {
+  const auto world = [&](int i) {
+    geometry_msgs::Point p;
+    p.x = out.points[i].x(), p.y = out.points[i].y(), p.z = out.points[i].z();
+    return p;
+  };
+  const std::vector<double>& axial_force = out.axial_force;
   for (auto& m : msg.markers) m.header.stamp = stamp;
   const int nb = static_cast<int>(axial_force.size());
   double lo = axial_force[0], hi = axial_force[0];
@@ -157,7 +148,7 @@ void LineMarkers::fillWith(P world, const std::vector<double>& axial_force, doub
   auto& top = marker(kTopText);
   top.pose.position = p0;
   top.pose.position.z += 1.2 * text_height_;
-  formatKn(buf, sizeof(buf), "top tension ", top_tension);
+  formatKn(buf, sizeof(buf), "top tension ", out.top_tension);
   top.text = buf;
 
   // Legend: a vertical colour bar right of the line, a third of the line length tall, its top a tenth

@@ -1,60 +1,36 @@
 #include "riser_sim_ros/line_messages.h"
 
-#include <Eigen/Geometry>
-#include <cmath>
+#include <algorithm>
 
 namespace riser_sim_ros {
 
 namespace {
-template <class V>
-bool finite(const V& v) {
-  for (double x : v)
-    if (!std::isfinite(x)) return false;
-  return true;
-}
+void set(geometry_msgs::Vector3& m, const Eigen::Vector3d& v) { m.x = v.x(), m.y = v.y(), m.z = v.z(); }
 }  // namespace
 
-bool outputsFinite(const riser_sim::LineOutputs& out) {
-  for (const auto& p : out.points)
-    if (!p.allFinite()) return false;
-  return finite(out.angles) && finite(out.elongations) && finite(out.axial_force) && finite(out.bending_moment) &&
-         out.top_force.allFinite() && std::isfinite(out.top_tension) && std::isfinite(out.bottom_tension) &&
-         std::isfinite(out.max_tension);
-}
-
-geometry_msgs::Quaternion planeRotation(double phi) {
-  geometry_msgs::Quaternion q;
-  q.x = 0.0;
-  q.y = std::sin(-0.5 * phi);
-  q.z = 0.0;
-  q.w = std::cos(-0.5 * phi);
-  return q;
-}
-
-LineMessages::LineMessages(const riser_sim::Model& model, const std::string& fixed_frame,
-                           const std::string& tf_prefix)
-    : segment_(model.segmentLength()) {
-  const size_t nb = model.bodies();
+LineMessages::LineMessages(int nb, const std::string& fixed_frame, const std::string& tf_prefix, bool body_frame,
+                           const std::string& vessel_frame, bool bottom_body, const std::string& bottom_frame)
+    : body_frame_(body_frame), bottom_body_(bottom_body) {
   tension.header.frame_id = fixed_frame;
   tension.axial_force.resize(nb);
   tension.arc_length.resize(nb);
   state.header.frame_id = fixed_frame;
   state.points.resize(nb + 1);
-  state.angles.resize(nb);
   state.elongations.resize(nb);
   state.bending_moments.resize(nb - 1);
   state.curvatures.resize(nb - 1);
   state.bending_moment_vectors.resize(nb - 1);
-  wrench.header.frame_id = fixed_frame;
+  top_wrench.header.frame_id = body_frame ? vessel_frame : fixed_frame;
+  bottom_wrench.header.frame_id = bottom_body ? bottom_frame : fixed_frame;
   transforms.resize(nb + 1);
   const std::string prefix = tf_prefix.empty() ? "" : tf_prefix + "/";
-  for (size_t i = 0; i <= nb; ++i) {
+  for (int i = 0; i <= nb; ++i) {
     transforms[i].header.frame_id = fixed_frame;
     transforms[i].child_frame_id = i < nb ? prefix + "rfe_" + std::to_string(i) : prefix + "end";
   }
 }
 
-void LineMessages::fillTension(const riser_sim::LineOutputs& out, const ros::Time& stamp) {
+void LineMessages::fillTension(const riser_sim::RunOutputs& out, const ros::Time& stamp) {
   tension.header.stamp = stamp;
   std::copy(out.axial_force.begin(), out.axial_force.end(), tension.axial_force.begin());
   std::copy(out.arc_length.begin(), out.arc_length.end(), tension.arc_length.begin());
@@ -63,45 +39,49 @@ void LineMessages::fillTension(const riser_sim::LineOutputs& out, const ros::Tim
   tension.max = out.max_tension;
 }
 
-void LineMessages::fillState(const riser_sim::LineOutputs& out, const ros::Time& stamp) {
+void LineMessages::fillState(const riser_sim::RunOutputs& out, const ros::Time& stamp) {
   state.header.stamp = stamp;
   for (size_t i = 0; i < out.points.size(); ++i) {
     state.points[i].x = out.points[i].x();
-    state.points[i].y = 0.0;
-    state.points[i].z = out.points[i].y();
+    state.points[i].y = out.points[i].y();
+    state.points[i].z = out.points[i].z();
   }
+  state.angles.resize(out.angles.size());  // planar: n + 1, 3D: none (the same size every call)
   std::copy(out.angles.begin(), out.angles.end(), state.angles.begin());
   std::copy(out.elongations.begin(), out.elongations.end(), state.elongations.begin());
   std::copy(out.bending_moment.begin(), out.bending_moment.end(), state.bending_moments.begin());
-  // In the x-z plane a turn from +x towards +z is about -y: the moment vector is (0, -M, 0).
-  for (size_t i = 1; i < out.angles.size(); ++i) {
-    state.curvatures[i - 1] = std::abs(out.angles[i] - out.angles[i - 1]) / segment_;
-    state.bending_moment_vectors[i - 1].x = 0.0;
-    state.bending_moment_vectors[i - 1].y = -out.bending_moment[i - 1];
-    state.bending_moment_vectors[i - 1].z = 0.0;
-  }
+  std::copy(out.curvature.begin(), out.curvature.end(), state.curvatures.begin());
+  for (size_t j = 0; j < out.bending_moment_vector.size(); ++j)
+    set(state.bending_moment_vectors[j], out.bending_moment_vector[j]);
 }
 
-void LineMessages::fillWrench(const riser_sim::LineOutputs& out, const ros::Time& stamp) {
-  wrench.header.stamp = stamp;
-  // The planar top is pinned (free rotation): the force acts at the hang-off, no moment about it.
-  wrench.wrench.force.x = out.top_force.x();
-  wrench.wrench.force.y = 0.0;
-  wrench.wrench.force.z = out.top_force.y();
-  wrench.wrench.torque.x = 0.0;
-  wrench.wrench.torque.y = 0.0;
-  wrench.wrench.torque.z = 0.0;
+void LineMessages::fillTopWrench(const riser_sim::RunOutputs& out, const Eigen::Quaterniond& vessel,
+                                 const ros::Time& stamp) {
+  top_wrench.header.stamp = stamp;
+  const Eigen::Quaterniond to_frame = body_frame_ ? vessel.conjugate() : Eigen::Quaterniond::Identity();
+  set(top_wrench.wrench.force, to_frame * out.top_force);
+  set(top_wrench.wrench.torque, to_frame * out.top_moment);
 }
 
-void LineMessages::fillTransforms(const riser_sim::LineOutputs& out, const ros::Time& stamp) {
-  const size_t nb = out.angles.size();
-  for (size_t i = 0; i <= nb; ++i) {
+void LineMessages::fillBottomWrench(const riser_sim::RunOutputs& out, const Eigen::Quaterniond& body,
+                                    const ros::Time& stamp) {
+  bottom_wrench.header.stamp = stamp;
+  const Eigen::Quaterniond to_frame = bottom_body_ ? body.conjugate() : Eigen::Quaterniond::Identity();
+  set(bottom_wrench.wrench.force, to_frame * out.bottom_force);
+  set(bottom_wrench.wrench.torque, to_frame * out.bottom_moment);
+}
+
+void LineMessages::fillTransforms(const riser_sim::RunOutputs& out, const ros::Time& stamp) {
+  const int nb = static_cast<int>(out.frames.size());
+  for (int i = 0; i <= nb; ++i) {
     geometry_msgs::TransformStamped& t = transforms[i];
     t.header.stamp = stamp;
-    t.transform.translation.x = out.points[i].x();
-    t.transform.translation.y = 0.0;
-    t.transform.translation.z = out.points[i].y();
-    t.transform.rotation = planeRotation(out.angles[std::min(i, nb - 1)]);
+    set(t.transform.translation, out.points[i]);
+    const Eigen::Quaterniond& q = out.frames[std::min(i, nb - 1)];
+    t.transform.rotation.x = q.x();
+    t.transform.rotation.y = q.y();
+    t.transform.rotation.z = q.z();
+    t.transform.rotation.w = q.w();
   }
 }
 

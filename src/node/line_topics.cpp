@@ -14,20 +14,20 @@ const std::vector<TopicRate>& dataTopicRates() {
 
 LineTopics::LineTopics(ros::NodeHandle& pnh, const NodeParams& params, bool bottom_wrench) : params_(params) {
   auto tension = pnh.advertise<riser_sim::Tension>("tension", 5);
-  add("tension", [tension](LineRun& run, const ros::Time& t) { tension.publish(run.tension(t)); });
+  add("tension", [tension](NodeRun& run, const ros::Time& t) { tension.publish(run.tension(t)); });
   auto state = pnh.advertise<riser_sim::LineState>("state", 5);
-  add("state", [state](LineRun& run, const ros::Time& t) { state.publish(run.state(t)); });
+  add("state", [state](NodeRun& run, const ros::Time& t) { state.publish(run.state(t)); });
   auto wrench = pnh.advertise<geometry_msgs::WrenchStamped>("top_wrench", 5);
   ros::Publisher bottom;
   if (bottom_wrench) bottom = pnh.advertise<geometry_msgs::WrenchStamped>("bottom_wrench", 5);
-  add("wrench", [wrench, bottom](LineRun& run, const ros::Time& t) {
+  add("wrench", [wrench, bottom](NodeRun& run, const ros::Time& t) {
     wrench.publish(run.topWrench(t));
     if (!bottom) return;
     if (const geometry_msgs::WrenchStamped* b = run.bottomWrench(t)) bottom.publish(*b);
   });
-  add("tf", [this](LineRun& run, const ros::Time& t) { tf_pub_.sendTransform(run.transforms(t)); });
+  add("tf", [this](NodeRun& run, const ros::Time& t) { tf_pub_.sendTransform(run.transforms(t)); });
   auto markers = pnh.advertise<visualization_msgs::MarkerArray>("markers", 2);
-  add("markers", [markers](LineRun& run, const ros::Time& t) {
+  add("markers", [markers](NodeRun& run, const ros::Time& t) {
     if (markers.getNumSubscribers() == 0) return;  // large: built only for a listener
     markers.publish(run.markers(t));
   });
@@ -54,7 +54,7 @@ bool LineTopics::due(const ros::Time& now) {
   return any;
 }
 
-bool LineTopics::publishDue(LineRun& run, const ros::Time& stamp) {
+bool LineTopics::publishDue(NodeRun& run, const ros::Time& stamp) {
   for (Topic& t : topics_)
     if (t.due) t.send(run, stamp);
   const bool reference = reference_ >= 0 && topics_[reference_].due;

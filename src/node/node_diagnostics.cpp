@@ -15,9 +15,13 @@ std::string num(double v, const char* format) {
 }
 
 namespace {
-const char* modeName(RunMode m) {
-  static const char* names[] = {"waiting for vessel pose", "running", "diverged", "could not start"};
-  return names[static_cast<int>(m)];
+std::string modeName(const RunView& run) {
+  if (run.mode != RunMode::kWaiting) {
+    static const char* names[] = {"", "running", "diverged", "could not start"};
+    return names[static_cast<int>(run.mode)];
+  }
+  if (run.missing_vessel && run.missing_bottom) return "waiting for vessel and bottom poses";
+  return run.missing_bottom ? "waiting for bottom pose" : "waiting for vessel pose";
 }
 }  // namespace
 
@@ -80,10 +84,17 @@ void NodeDiagnostics::addValue(const char* key, const std::string& value) {
   msg_.status[0].values.push_back(k);
 }
 
+std::string NodeDiagnostics::waitingFor(const RunView& run) const {
+  const std::string vessel = "vessel pose (" + input_.source() + ")";
+  if (!bottom_ || !run.missing_bottom) return vessel;
+  const std::string bottom = "bottom pose (" + bottom_->source() + ")";
+  return run.missing_vessel ? vessel + " and " + bottom : bottom;
+}
+
 std::string NodeDiagnostics::runningMessage(const ros::Time& now, const RunView& run, double pose_age) {
   using diagnostic_msgs::DiagnosticStatus;
   DiagnosticStatus& st = msg_.status[0];
-  LineRun& line = *run.line;
+  NodeRun& line = *run.line;
   const double ros_span = (now - win_ros_).toSec();
   const double sim_span = line.time() - win_sim_;
   const double rtf = ros_span > 0.0 ? sim_span / ros_span : NAN;
@@ -159,8 +170,7 @@ void NodeDiagnostics::publish(const ros::Time& now, const RunView& run) {
   msg_.header.stamp = now;
   st.values.clear();
   const bool stalled = clock_.stalled();
-  addValue("mode", stalled ? std::string("paused: ROS time stalled (") + modeName(run.mode) + ")"
-                           : std::string(modeName(run.mode)));
+  addValue("mode", stalled ? "paused: ROS time stalled (" + modeName(run) + ")" : modeName(run));
   addValue("vessel input", input_.source());
   addValue("poses accepted", std::to_string(input_.accepted()));
   addValue("poses rejected", std::to_string(input_.rejected()));
@@ -184,15 +194,14 @@ void NodeDiagnostics::publish(const ros::Time& now, const RunView& run) {
     if (stalled) message = "simulation held at t = " + num(run.line->time(), "%.3f") + " s";
   } else if (run.mode == RunMode::kWaiting) {
     st.level = DiagnosticStatus::WARN;
-    message = bottom_ && input_.accepted() > 0 && bottom_->accepted() == 0
-                  ? "waiting for the first valid bottom pose (" + bottom_->source() + ")"
-                  : "waiting for the first valid vessel pose (" + input_.source() + ")";
+    message = "waiting for the first valid " + waitingFor(run);
     if (!clock_.lastJump().empty()) message = clock_.lastJump() + ": simulation reset; " + message;
   } else {
     st.level = DiagnosticStatus::ERROR;
     message = (run.mode == RunMode::kDiverged ? "integration diverged: " : "") + run.reason +
               "; publishing stopped, call " + name_ + "/reset";
     addValue("reason", run.reason);
+    if (run.mode == RunMode::kStartFailed) addValue("failed start attempts", std::to_string(run.failed_starts));
   }
   if (clock_.jumps() > 0) {
     addValue("ROS time jumps back", std::to_string(clock_.jumps()));

@@ -195,6 +195,15 @@ NodeParams loadNodeParams(const ros::NodeHandle& pnh, const std::string& node_na
   nonNegative("max_out_of_plane", p.max_out_of_plane);
   p.max_position = r.number("max_position", p.max_position);
   positive("max_position", p.max_position);
+  for (const auto& [name, offset] : {std::make_pair("hangoff_offset", p.hangoff_offset),
+                                      std::make_pair("bottom_offset", p.bottom_offset)}) {
+    const double bound = std::min(kMaxOffset, p.max_position);
+    if (offset.norm() > bound)
+      throw ParamError(name, "|[" + show(offset.x()) + ", " + show(offset.y()) + ", " + show(offset.z()) + "]| = " +
+                                 show(offset.norm()) + " m is beyond " + show(bound) +
+                                 " m: the offset is a point on the body (its lever arm turns the body's attitude "
+                                 "into the point's motion); give it in metres in the body's frame");
+  }
   p.max_pose_age = r.number("max_pose_age", p.max_pose_age);
   positive("max_pose_age", p.max_pose_age);
   p.max_pose_lead = r.number("max_pose_lead", p.max_pose_lead);

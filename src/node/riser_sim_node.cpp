@@ -160,22 +160,42 @@ void RiserSimNode::tryStart(int n, int nb, const ros::Time& now) {
       (run_.mode == RunMode::kWaiting || (now - last_start_attempt_).toSec() >= 1.0)) {
     std::string message;
     if (start(s, bottom_input_ ? &b : nullptr, now, message)) ROS_INFO("%s: %s", name_.c_str(), message.c_str());
-    else ROS_ERROR("%s: %s (retrying at the next pose, at most once a second)", name_.c_str(), message.c_str());
+    else startFailed(message);
   } else if (run_.mode == RunMode::kWaiting) {
-    const bool for_bottom = vessel && !bottom;
+    // Every input that has no valid pose yet.
+    run_.missing_vessel = !vessel;
+    run_.missing_bottom = !bottom;
     long held = 0;
-    if (waiting_warn_.allow(held))
-      ROS_WARN("%s: waiting for the first valid %s pose (%s)", name_.c_str(), for_bottom ? "bottom" : "vessel",
-               (for_bottom ? bottom_input_ : input_)->source().c_str());
+    if (waiting_warn_.allow(held)) {
+      std::string what = vessel ? "" : "vessel pose (" + input_->source() + ")";
+      if (!bottom) what += (vessel ? "" : " and ") + std::string("bottom pose (") + bottom_input_->source() + ")";
+      ROS_WARN("%s: waiting for the first valid %s", name_.c_str(), what.c_str());
+    }
   }
+}
+
+void RiserSimNode::startFailed(const std::string& message) {
+  const WallClock::time_point w = WallClock::now();
+  if (++run_.failed_starts == 1) {
+    ROS_ERROR("%s: %s (retrying at the next pose, at most once a second; further failures are counted on "
+              "/diagnostics and logged every %.0f s)", name_.c_str(), message.c_str(), kStartErrorPeriod);
+  } else if (seconds(w - start_error_logged_) >= kStartErrorPeriod) {
+    ROS_ERROR("%s: still cannot start: %s (%ld failed attempts since the last message, %ld in all)", name_.c_str(),
+              message.c_str(), run_.failed_starts - start_failures_logged_, run_.failed_starts);
+  } else {
+    return;
+  }
+  start_error_logged_ = w;
+  start_failures_logged_ = run_.failed_starts;
 }
 
 bool RiserSimNode::start(const VesselSample& s, const VesselSample* bottom, const ros::Time& now,
                          std::string& message) {
   last_start_attempt_ = now;
-  std::unique_ptr<LineRun> line;
+  std::unique_ptr<NodeRun> line;
   try {
-    line = makeLineRun(scene_, s, simTime(s.stamp), params_, bottom, bottom ? simTime(bottom->stamp) : 0.0);
+    line = std::make_unique<NodeRun>(scene_, s, simTime(s.stamp), params_, bottom,
+                                     bottom ? simTime(bottom->stamp) : 0.0);
     const std::string above = line->stepAboveLimit();
     if (!above.empty()) {
       line.reset();
@@ -196,7 +216,7 @@ bool RiserSimNode::start(const VesselSample& s, const VesselSample* bottom, cons
     message = run_.reason;
     return false;
   }
-  line->shareStatics(*modes_, now);
+  modes_->setState(line->heldScene(), now);  // the top fixed at the hang-off, a driven bottom where it started
   origin_ = ros::Time::now();  // after the statics: their cost is not a backlog to catch up
   if (origin_ < now) origin_ = now;
   dropped_ = 0.0;
@@ -211,6 +231,7 @@ bool RiserSimNode::start(const VesselSample& s, const VesselSample* bottom, cons
   topics_.start(origin_);
   run_.mode = RunMode::kRunning;
   run_.reason.clear();
+  run_.failed_starts = 0;
   diag_->restartWindow(origin_, line_->time());
   diag_->clearTiming();
   message = line_->startMessage();

@@ -102,7 +102,7 @@ SeaMarkers3::SeaMarkers3(const riser_sim::Scene& scene, const std::string& frame
   if (waves_ >= 0) msg.markers[waves_].points.reserve(6 * (kMaxRows - 1));
 }
 
-void SeaMarkers3::fill(const riser_sim::spatial::LineOutputs3& out, visualization_msgs::MarkerArray& msg) const {
+void SeaMarkers3::fill(const riser_sim::RunOutputs& out, visualization_msgs::MarkerArray& msg) const {
   Vec3 lo = out.points[0], hi = out.points[0];
   for (const Vec3& p : out.points) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
   const Vec3 centre(0.5 * (lo.x() + hi.x()), 0.5 * (lo.y() + hi.y()), 0.0);

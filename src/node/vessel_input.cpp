@@ -190,6 +190,9 @@ void VesselInput::handle(const std_msgs::Header& header, const geometry_msgs::Po
   s.hangoff = pose * offset_;
   s.orientation = Eigen::Quaterniond(pose.rotation());
   if (!s.hangoff.allFinite()) return reject("attachment point is not finite (pose * " + what_ + " offset)");
+  if (s.hangoff.lpNorm<Eigen::Infinity>() > params_.max_position)
+    return reject("attachment point (" + fmt(s.hangoff.x()) + ", " + fmt(s.hangoff.y()) + ", " + fmt(s.hangoff.z()) +
+                  ") m (pose * " + what_ + " offset) is beyond ~max_position " + fmt(params_.max_position) + " m");
   {
     std::lock_guard<std::mutex> lock(mutex_);
     // ROS time went back before the last accepted stamp (a bag loop): that stamp belongs to the old

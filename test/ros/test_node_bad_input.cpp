@@ -1,3 +1,4 @@
+#include <rosgraph_msgs/Log.h>
 #include <std_srvs/Trigger.h>
 
 #include <atomic>
@@ -94,6 +95,7 @@ TEST(NodeBadInput, StepAboveTheStabilityLimitIsRefusedWithASafeStep) {
   Recorder<riser_sim::Tension> tension(nh, "/unstable/riser_sim/tension");
   Recorder<riser_sim::LineState> state(nh, "/unstable/riser_sim/state");
   Recorder<diagnostic_msgs::DiagnosticArray> diag(nh, "/diagnostics");
+  Recorder<rosgraph_msgs::Log> log(nh, "/rosout");
   ASSERT_TRUE(waitFor([&] { return pub.getNumSubscribers() > 0; }, 20.0));
   pub.publish(pose(ros::Time::now(), 0.0));
 
@@ -123,6 +125,18 @@ TEST(NodeBadInput, StepAboveTheStabilityLimitIsRefusedWithASafeStep) {
   ASSERT_TRUE(waitFor([&] { return errorCount() >= e1 + 1; }, 10.0));
   EXPECT_EQ(tension.count(), 0u);
   EXPECT_EQ(state.count(), 0u);
+
+  // Poses keep coming (20 Hz): the node retries at most once a second and counts each failure on /diagnostics,
+  // but logs its ERROR once (then once a minute with the count), not at every retry.
+  PosePublisher poses(nh, "/unstable/vessel/pose", 20.0, [](double, geometry_msgs::Pose&) {});
+  poses.start();
+  ASSERT_TRUE(waitFor([&] { return diagCount(diag, "unstable/riser_sim", "failed start attempts") >= 4; }, 15.0))
+      << "the failed starts are not counted on /diagnostics";
+  poses.stop();
+  int errors = 0;
+  for (const rosgraph_msgs::Log& m : log.all())
+    if (m.name == "/unstable/riser_sim" && m.level == rosgraph_msgs::Log::ERROR) ++errors;
+  EXPECT_LE(errors, 1) << "the same start failure logged at every retry";
 }
 
 // Divergence forced by an absurd vessel step (1e5 m in one pose: finite and within ~max_position, so

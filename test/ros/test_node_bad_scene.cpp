@@ -50,6 +50,8 @@ TEST(NodeBadScene, NodeParameterErrorsNameTheParameter) {
   expectFatal("bad_rate", "~rates/tension: must be >= 0 (0 = off), got -1");
   expectFatal("bad_input", "~vessel_input: unknown value 'gps' (accepted: pose, odom, tf)");
   expectFatal("bad_offset", "~hangoff_offset: expected [x, y, z]");
+  // A point on the vessel, not 1e20 m off it (that ran and diverged, "reduce solver.dt").
+  expectFatal("huge_offset", "~hangoff_offset: |[1e+20, 0, 0]| = 1e+20 m is beyond 1000 m");
   expectFatal("bad_motion", "~motion/stop_time: must be > 0");
   expectFatal("bad_wrench_frame", "~wrench_frame: unknown value 'vessel' (accepted: fixed, body)");
   expectFatal("planar_body_wrench", "~wrench_frame: body needs a 3D scene (space: spatial)");

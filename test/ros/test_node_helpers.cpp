@@ -8,7 +8,6 @@
 #include "riser_sim/scene_yaml.h"
 #include "riser_sim_ros/line_markers.h"
 #include "riser_sim_ros/line_messages.h"
-#include "riser_sim_ros/line_messages3.h"
 #include "riser_sim_ros/tf_listener.h"
 #include "riser_sim_ros/timing_stats.h"
 #include "riser_sim_ros/vessel_input.h"
@@ -178,29 +177,37 @@ TEST(CheckPose, HangOffIsPoseTimesOffsetProjectedOntoXZ) {
   EXPECT_NEAR(paper.y(), -3.0, 1e-12);  // world y (3 m) dropped
 }
 
-TEST(LineMessages, PaperToWorldMappingAndFrames) {
-  riser_sim::LineProperties props;
-  props.EA = 1e6;
-  props.mass_per_length = 1.0;
-  riser_sim::Model model(4.0, 2, props, riser_sim::ModelOptions(), 0.0, 9.81);
-  riser_sim::LineOutputs out;
-  out.points = {riser_sim::Vec2(0, 0), riser_sim::Vec2(1, -1), riser_sim::Vec2(2, -2), riser_sim::Vec2(3, -3)};
+// The filler maps RunOutputs onto the messages as they are: a planar state (angles, y = 0, moments about -y), its
+// frame ids, and a body-frame wrench turned by the inverse vessel attitude.
+TEST(LineMessages, FilledFromTheRunsOutputs) {
+  using riser_sim::Vec3;
+  riser_sim::RunOutputs out;
+  out.points = {Vec3(0, 0, 0), Vec3(1, 0, -1), Vec3(2, 0, -2), Vec3(3, 0, -3)};
   out.angles = {-M_PI / 4, -M_PI / 4, -M_PI / 4};
+  out.frames.assign(3, Eigen::Quaterniond(Eigen::AngleAxisd(M_PI / 4, Vec3::UnitY())));
   out.elongations = {0, 0, 0};
   out.axial_force = {30, 20, 10};
   out.arc_length = {0.5, 2, 3.5};
-  out.bending_moment = {0, 0};
-  out.top_force = riser_sim::Vec2(-5, -30);
+  out.bending_moment = {2.0, -1.0};
+  out.bending_moment_vector = {Vec3(0, -2.0, 0), Vec3(0, 1.0, 0)};
+  out.curvature = {0.0, 0.0};
+  out.top_force = Vec3(-5, 0, -30);
   out.top_tension = out.top_force.norm();
-  ASSERT_TRUE(outputsFinite(out));
-  LineMessages m(model, "world", "ns/riser");
+  ASSERT_TRUE(riser_sim::allFinite(out));
+  LineMessages m(3, "world", "ns/riser");
   m.fillState(out, ros::Time(1));
   EXPECT_EQ(m.state.points[2].x, 2.0);
   EXPECT_EQ(m.state.points[2].y, 0.0);
   EXPECT_EQ(m.state.points[2].z, -2.0);
-  m.fillWrench(out, ros::Time(1));
-  EXPECT_EQ(m.wrench.wrench.force.x, -5.0);
-  EXPECT_EQ(m.wrench.wrench.force.z, -30.0);
+  ASSERT_EQ(m.state.angles.size(), 3u);
+  EXPECT_EQ(m.state.bending_moments[1], -1.0);
+  EXPECT_EQ(m.state.bending_moment_vectors[1].y, 1.0);
+  m.fillTension(out, ros::Time(1));
+  EXPECT_EQ(m.tension.arc_length[2], 3.5);
+  m.fillTopWrench(out, Eigen::Quaterniond::Identity(), ros::Time(1));
+  EXPECT_EQ(m.top_wrench.wrench.force.x, -5.0);
+  EXPECT_EQ(m.top_wrench.wrench.force.z, -30.0);
+  EXPECT_EQ(m.top_wrench.header.frame_id, "world");
   m.fillTransforms(out, ros::Time(1));
   ASSERT_EQ(m.transforms.size(), 4u);
   EXPECT_EQ(m.transforms[0].child_frame_id, "ns/riser/rfe_0");
@@ -211,45 +218,14 @@ TEST(LineMessages, PaperToWorldMappingAndFrames) {
   EXPECT_NEAR(x_axis.x(), std::cos(-M_PI / 4), 1e-12);
   EXPECT_NEAR(x_axis.y(), 0.0, 1e-12);
   EXPECT_NEAR(x_axis.z(), std::sin(-M_PI / 4), 1e-12);
+  // In the vessel's frame: a vessel yawed 90 deg sees the world's -x pull along its +y.
+  LineMessages body(3, "world", "", true, "vessel");
+  body.fillTopWrench(out, Eigen::Quaterniond(Eigen::AngleAxisd(M_PI / 2, Vec3::UnitZ())), ros::Time(1));
+  EXPECT_EQ(body.top_wrench.header.frame_id, "vessel");
+  EXPECT_NEAR(body.top_wrench.wrench.force.x, 0.0, 1e-12);
+  EXPECT_NEAR(body.top_wrench.wrench.force.y, 5.0, 1e-12);
   out.axial_force[1] = std::nan("");
-  EXPECT_FALSE(outputsFinite(out));
-}
-
-// 3D rfe frames: x along each element, unit, finite for vertical and horizontal elements, the planar
-// frames for a line in the x-z plane, and continuous while rfe 0 turns through vertical and horizontal.
-TEST(LineFrames, AlongTheLineNeverSingularAndContinuous) {
-  using riser_sim::spatial::Vec3;
-  const auto check = [](const riser_sim::AlignedVector<Vec3>& pts, riser_sim_ros::LineFrames& f,
-                        std::vector<Eigen::Quaterniond>& q) {
-    f.update(pts, static_cast<int>(pts.size()) - 1, q);
-    for (size_t i = 0; i + 1 < pts.size(); ++i) {
-      ASSERT_TRUE(q[i].coeffs().allFinite());
-      EXPECT_NEAR(q[i].norm(), 1.0, 1e-12);
-      EXPECT_LT((q[i] * Vec3::UnitX() - (pts[i + 1] - pts[i]).normalized()).norm(), 1e-12);
-    }
-  };
-  std::vector<Eigen::Quaterniond> q(3);
-  for (const Vec3& d : {Vec3(0, 0, -1), Vec3(0, 0, 1), Vec3(0, 1, 0), Vec3(1, 0, 0), Vec3(0, -1, 0)}) {
-    riser_sim_ros::LineFrames f;
-    check({Vec3::Zero(), d, 2.0 * d, 3.0 * d}, f, q);
-  }
-  // In the x-z plane: y stays world y (the planar node's frames).
-  riser_sim_ros::LineFrames planar;
-  check({Vec3::Zero(), Vec3(1, 0, -1), Vec3(1.5, 0, -2), Vec3(1.5, 0, -3)}, planar, q);
-  for (const auto& r : q) EXPECT_LT((r * Vec3::UnitY() - Vec3::UnitY()).norm(), 1e-12);
-  // rfe 0 turns in small steps down -> horizontal -> up -> horizontal in y -> down: every frame turns by
-  // about the step, never flips.
-  riser_sim_ros::LineFrames f;
-  std::vector<Eigen::Quaterniond> prev;
-  const double step = 0.02;
-  for (int k = 0; k <= 630; ++k) {
-    const double a = k * step;
-    const Vec3 e0 = k <= 315 ? Vec3(std::sin(a), 0, -std::cos(a)) : Vec3(std::sin(a), std::sin(a) * 0.3, -std::cos(a)).normalized();
-    check({Vec3::Zero(), e0, e0 + Vec3(0, 0, -1), e0 + Vec3(0.2, 0.3, -2)}, f, q);
-    if (!prev.empty())
-      for (size_t i = 0; i < q.size(); ++i) EXPECT_LT(q[i].angularDistance(prev[i]), 3.0 * step) << k << " " << i;
-    prev = q;
-  }
+  EXPECT_FALSE(riser_sim::allFinite(out));
 }
 
 TEST(LineMarkers, ColoursAndLegendFollowTheTensionRange) {
@@ -263,15 +239,12 @@ TEST(LineMarkers, ColoursAndLegendFollowTheTensionRange) {
 }
 
 TEST(LineMarkers, SurfacesOnlyWhenTheSceneHasThem) {
-  riser_sim::LineProperties props;
-  props.EA = 1e6;
-  props.mass_per_length = 1.0;
-  riser_sim::Model model(4.0, 2, props, riser_sim::ModelOptions(), 0.0, 9.81);
-  riser_sim::LineOutputs out;
-  out.points = {riser_sim::Vec2(0, 0), riser_sim::Vec2(0, -1), riser_sim::Vec2(0, -3), riser_sim::Vec2(0, -4)};
+  riser_sim::RunOutputs out;
+  out.points = {riser_sim::Vec3(0, 0, 0), riser_sim::Vec3(0, 0, -1), riser_sim::Vec3(0, 0, -3),
+                riser_sim::Vec3(0, 0, -4)};
   out.axial_force = {30, 20, 10};
   auto names = [&](const Surfaces& s) {
-    LineMarkers m(model, "world", MarkerParams(), s);
+    LineMarkers m(4.0, 3, false, "world", MarkerParams(), s);
     m.fill(out, ros::Time(1));
     std::string all;
     for (const auto& mk : m.msg.markers) all += mk.ns + " ";

@@ -1,4 +1,4 @@
-// The node's 3D outputs without a master, through the LineRun the node steps: ~state's curvature and
+// The node's 3D outputs without a master, through the run the node steps (NodeRun): ~state's curvature and
 // bending moment (against the planar node's on the same scene, and against the analytic catenary), the
 // markers of the sea and the seabed, the twist in the rfe frames.
 #include <gtest/gtest.h>
@@ -7,8 +7,9 @@
 
 #include "riser_sim/scene_yaml.h"
 #include "riser_sim/water.h"
-#include "riser_sim_ros/line_messages3.h"
-#include "riser_sim_ros/line_run.h"
+#include "riser_sim/spatial/rfe_frames.h"
+#include "riser_sim/spatial/run_builder.h"
+#include "riser_sim_ros/node_run.h"
 #include "riser_sim_ros/modes_service.h"
 
 namespace riser_sim_ros {
@@ -18,11 +19,11 @@ using Vec3 = Eigen::Vector3d;
 
 riser_sim::Scene scene(const char* yaml) { return riser_sim::parseScene(YAML::Load(yaml)); }
 
-std::unique_ptr<LineRun> startAt(const riser_sim::Scene& scene, const Vec3& hangoff) {
+std::unique_ptr<NodeRun> startAt(const riser_sim::Scene& scene, const Vec3& hangoff) {
   VesselSample s;
   s.hangoff = hangoff;
   NodeParams params;
-  std::unique_ptr<LineRun> run = makeLineRun(scene, s, 0.0, params);
+  auto run = std::make_unique<NodeRun>(scene, s, 0.0, params);
   EXPECT_TRUE(run->evaluate());
   return run;
 }
@@ -58,7 +59,7 @@ TEST(SpatialState, CurvatureAndMomentAreThePlanarNodesInAnyVerticalPlane) {
     const Vec3 top(8.0 * std::cos(psi), 8.0 * std::sin(psi), 0.0);
     s.top.position3 = top;
     s.bottom_point3 = Vec3(0.0, 0.0, -15.0);
-    std::unique_ptr<LineRun> run = startAt(s, top);
+    std::unique_ptr<NodeRun> run = startAt(s, top);
     const riser_sim::LineState q = run->state(ros::Time(1));
     ASSERT_EQ(q.curvatures.size(), size_t(joints));
     ASSERT_EQ(q.bending_moments.size(), size_t(joints));
@@ -100,7 +101,7 @@ initial: {type: between_points}
 solver: {dt: 0.001}
 )");
   s.top.position3 = top;
-  std::unique_ptr<LineRun> run = startAt(s, top);
+  std::unique_ptr<NodeRun> run = startAt(s, top);
   const geometry_msgs::Wrench& f = run->topWrench(ros::Time(1)).wrench;  // the line's pull on the hang-off
   const double H = std::hypot(f.force.x, f.force.y), V = -f.force.z, a = H / w, sv = V / w;
   ASSERT_GT(sv, 0.0);
@@ -138,7 +139,7 @@ environment:
 seabed: {level: -100.0, stiffness_normal: 1.0e5, slope: 10.0, slope_heading: 45.0}
 solver: {dt: 0.001}
 )");
-  std::unique_ptr<LineRun> run = startAt(s, Vec3(0.0, 0.0, 2.0));
+  std::unique_ptr<NodeRun> run = startAt(s, Vec3(0.0, 0.0, 2.0));
   for (int k = 0; k < 50; ++k) ASSERT_TRUE(run->step());  // t = 0.05 s: the waves have moved
   ASSERT_TRUE(run->evaluate());
   const visualization_msgs::MarkerArray& msg = run->markers(ros::Time(1));
@@ -210,16 +211,18 @@ solver: {dt: 0.001}
   sim.setTwist(theta, omega);
   sp::Kinematics3 kin(nb);
   sim.kinematics(kin);
-  LineMessages3 twisted(run.model(), "world", "", false, "vessel"), flat(run.model(), "world", "", false, "vessel");
-  const sp::TwistFrames& frames = sim.lastEvaluation().twist.frames;
-  twisted.fillTransforms(run.outputs(), kin, sim.state().data() + run.model().dofs(), frames, ros::Time(1));
-  flat.fillTransforms(run.outputs(), kin, zero.data(), frames, ros::Time(1));
-  const auto quat = [](const geometry_msgs::TransformStamped& t) {
-    const auto& q = t.transform.rotation;
-    return Eigen::Quaterniond(q.w, q.x, q.y, q.z);
+  // The frames the run publishes (line_run.cpp: materialFrame with the spins, rfe 0 held untwisted).
+  const auto frames = [&](const double* theta, std::vector<Eigen::Quaterniond>& q) {
+    const sp::TwistFrames& f = sim.lastEvaluation().twist.frames;
+    q.resize(nb);
+    for (int i = 0; i < nb; ++i) q[i] = sp::materialFrame(kin[i].e, f.centre[i], f.ref[i], i == 0 ? 0.0 : theta[i]);
   };
+  run.outputs();  // evaluates the state: the twist charts of lastEvaluation()
+  std::vector<Eigen::Quaterniond> twisted, flat;
+  frames(sim.state().data() + run.model().dofs(), twisted);
+  frames(zero.data(), flat);
   for (int i = 0; i < nb; ++i) {
-    const Eigen::Quaterniond a = quat(flat.transforms[i]), b = quat(twisted.transforms[i]);
+    const Eigen::Quaterniond a = flat[i], b = twisted[i];
     const Vec3 e = kin[i].e.normalized();
     EXPECT_LT((b * Vec3::UnitX() - e).norm(), 1e-12);
     const Vec3 ya = a * Vec3::UnitY(), yb = b * Vec3::UnitY();
@@ -228,13 +231,12 @@ solver: {dt: 0.001}
   for (int k = 0; k < 200; ++k) ASSERT_TRUE(run.step());
   sim.kinematics(kin);
   const sp::NaturalData& d = sim.evaluate();
-  twisted.fillTransforms(run.outputs(), kin, sim.state().data() + run.model().dofs(), sim.lastEvaluation().twist.frames,
-                         ros::Time(2));
+  frames(sim.state().data() + run.model().dofs(), twisted);
   double largest = 0.0, worst = 0.0;
   for (int k = 0; k + 1 < nb; ++k) {
     const Vec3 e0 = kin[k].e.normalized(), e1 = kin[k + 1].e.normalized();
-    const Vec3 y0 = sp::minimalRotation(e0, e1, quat(twisted.transforms[k]) * Vec3::UnitY());
-    const Vec3 y1 = quat(twisted.transforms[k + 1]) * Vec3::UnitY();
+    const Vec3 y0 = sp::minimalRotation(e0, e1, twisted[k] * Vec3::UnitY());
+    const Vec3 y1 = twisted[k + 1] * Vec3::UnitY();
     const double turn = std::atan2(y0.cross(y1).dot(e1), y0.dot(y1));
     const double miss = std::abs(std::remainder(turn - d.twist.m[k], 2.0 * M_PI));
     EXPECT_LT(miss, 1e-9) << "joint " << k;
@@ -244,7 +246,7 @@ solver: {dt: 0.001}
   EXPECT_GT(largest, 0.01);  // still twisted: a real comparison
 }
 
-// The node's path (LineRun) with torsion on: the vessel swings the hang-off sideways; every frame is
+// The node's path (NodeRun) with torsion on: the vessel swings the hang-off sideways; every frame is
 // finite, unit, its x axis along its element, its y across it.
 TEST(TwistFrames, TheNodesRunPublishesMaterialFrames) {
   riser_sim::Scene s = scene(R"(
@@ -255,7 +257,7 @@ line: {length: 20.0, elements: 10, mass_per_length: 5.0, EI: 100.0, end_mass: 50
 top: {position: [0.0, 0.0, 0.0], motion: {type: external}}
 solver: {dt: 0.001}
 )");
-  std::unique_ptr<LineRun> run = startAt(s, Vec3::Zero());
+  std::unique_ptr<NodeRun> run = startAt(s, Vec3::Zero());
   VesselSample v;
   for (int k = 1; k <= 300; ++k) {
     v.hangoff = Vec3(0.5 * std::sin(0.01 * k), 0.5 * (1.0 - std::cos(0.01 * k)), 0.0);
@@ -290,7 +292,7 @@ line: {length: 20.0, elements: 10, mass_per_length: 5.0, EI: 100.0, end_mass: 50
 top: {position: [0.0, 0.0, 0.0], motion: {type: external}, flex_joint: {stiffness: 2.0e4}}
 solver: {dt: 0.001}
 )");
-  std::unique_ptr<LineRun> run = startAt(s, Vec3::Zero());
+  std::unique_ptr<NodeRun> run = startAt(s, Vec3::Zero());
   VesselSample v;
   double worst = 0.0, biggest = 0.0, fixed_gap = 1e300;
   for (int k = 1; k <= 3000; ++k) {  // 3 s: the roll over the first second, then held

@@ -146,6 +146,35 @@ TEST(NodeRovTether, BadRovPosesAreRefusedAndCounted) {
   for (const auto& m : bottom.all()) EXPECT_TRUE(finite(m));
 }
 
+// Nodes that wait: /diagnostics names every input without a valid pose yet, the bottom's alone when the vessel's
+// arrive (no_rov), both when none do (no_poses).
+TEST(NodeRovTether, WaitingNamesTheMissingInputs) {
+  ros::NodeHandle nh;
+  Recorder<diagnostic_msgs::DiagnosticArray> diag(nh, "/diagnostics");
+  std::string rov, none, mode;
+  const auto waiting = [&](const char* node, std::string& message) {
+    return waitFor([&] {
+      for (const auto& a : diag.all())
+        for (const auto& st : a.status)
+          if (st.name.rfind(node, 0) == 0 && diagValue(a, node, "mode").rfind("waiting", 0) == 0 &&
+              (std::string(node) != "no_rov/riser_sim" || diagValue(a, node, "poses accepted") != "0")) {
+            message = st.message;
+            mode = diagValue(a, node, "mode");
+            return true;
+          }
+      return false;
+    }, 20.0);
+  };
+  ASSERT_TRUE(waiting("no_rov/riser_sim", rov)) << "no waiting diagnostics with vessel poses accepted";
+  EXPECT_NE(rov.find("waiting for the first valid bottom pose (/no_rov/riser_sim/bottom_pose)"), std::string::npos)
+      << rov;
+  EXPECT_EQ(rov.find("vessel pose"), std::string::npos) << rov;
+  EXPECT_EQ(mode, "waiting for bottom pose");
+  ASSERT_TRUE(waiting("no_poses/riser_sim", none));
+  EXPECT_NE(none.find("waiting for the first valid vessel pose (/no_poses/vessel/pose) and bottom pose "
+                      "(/no_poses/riser_sim/bottom_pose)"), std::string::npos) << none;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
