@@ -9,6 +9,7 @@ shipped scenes and checks its results table against independent runs of riser_si
   - a worker killed (SIGKILL) while it runs a case: every case in the table exactly once, all ok, the killed
     case finished by another process;
   - SIGINT mid-sweep: a whole table, exit 130; the rerun runs only the missing cases;
+  - sea states from a scatter table (empty bins left out) times headings;
   - bad input: unknown sweep key (named with the closest) before anything runs; cases refused by the scene
     check listed while the rest run; a results folder of another sweep refused; an unreachable scheduler
     fails within seconds;
@@ -234,9 +235,21 @@ class Sweep(unittest.TestCase):
                     return pid, ppid, argv
             return None
 
-        cli_pid, worker_pid, argv = wait_for(running_cli, 60, "a case running in a worker", step=0.01)
+        def frozen_case():
+            """A running case, stopped (SIGSTOP) so that its worker cannot finish it before the kill."""
+            found = running_cli()
+            if not found:
+                return None
+            try:
+                os.kill(found[0], signal.SIGSTOP)
+            except ProcessLookupError:
+                return None
+            return found
+
+        cli_pid, worker_pid, argv = wait_for(frozen_case, 60, "a case running in a worker", step=0.01)
         heading = float([a for a in argv if a.startswith("environment.waves.heading=")][0].split("=")[1])
-        os.kill(worker_pid, signal.SIGKILL)  # the worker process (its nanny starts a new one)
+        os.kill(worker_pid, signal.SIGKILL)  # the worker process, mid-case (its nanny starts a new one)
+        os.kill(cli_pid, signal.SIGKILL)  # its CLI process, stopped above
         self.assertEqual(p.wait(180), 0, open(os.path.join(self.tmp, "sweep.log")).read())
         rows = read_rows(out)
         ids = [r["case_id"] for r in rows]
@@ -249,7 +262,7 @@ class Sweep(unittest.TestCase):
     # -- Ctrl-C and resume.
     def test_sigint_then_resume_runs_only_missing(self):
         out = os.path.join(self.tmp, "out")
-        sweep = heading_sweep(self.tmp, duration=2.0, stop=210, dt=0.001)  # 8 cases of 2000 steps
+        sweep = heading_sweep(self.tmp, duration=4.0, stop=210, dt=0.001)  # 8 cases of 4000 steps
         log = os.path.join(self.tmp, "sweep.log")
         p = self.start([PY, A.tool, sweep, "--out", out, "--workers", "1", "--no-plots"], log)
         table = os.path.join(out, "results.csv")
@@ -272,6 +285,27 @@ class Sweep(unittest.TestCase):
         self.assertEqual(len(rows), 8)
         self.assertEqual(len({r["case_id"] for r in rows}), 8)
         self.assertEqual(rows[:k], first)  # the first run's rows untouched
+
+    # -- Sea states from a scatter table: one case per row of non-zero weight, per heading.
+    def test_scatter_table_cases(self):
+        write(os.path.join(self.tmp, "seas.csv"), "# Hs [m], Tp [s], weight\nHs,Tp,p\n1.5,6.5,0.2\n2.5,8,0\n3.5,9.5,0.1\n")
+        sweep = write(os.path.join(self.tmp, "scatter.yaml"),
+                      "scene: %s/spatial_sea_riser.yaml\nduration: 0.2\nset: {line.elements: 6}\n"
+                      "grid: {environment.waves.heading: [0, 90]}\n"
+                      "scatter: {file: seas.csv, weight_column: p,\n"
+                      "  columns: {Hs: environment.waves.significant_height, Tp: environment.waves.peak_period}}\n"
+                      % SCENES)
+        out = os.path.join(self.tmp, "out")
+        p = tool([sweep, "--out", out, "--workers", "2", "--quiet", "--no-plots"])
+        self.assertEqual(p.returncode, 0, p.stderr)
+        got = sorted((float(r["environment.waves.heading"]), float(r["environment.waves.significant_height"]),
+                      float(r["environment.waves.peak_period"]), r["status"]) for r in read_rows(out))
+        self.assertEqual(got, [(0, 1.5, 6.5, "ok"), (0, 3.5, 9.5, "ok"), (90, 1.5, 6.5, "ok"), (90, 3.5, 9.5, "ok")])
+        for r in read_rows(out):  # the sea state reached the CLI: its command line in the case file
+            with open(os.path.join(out, "cases", r["case_id"] + ".json")) as f:
+                cmd = json.load(f)["command"]
+            self.assertIn("environment.waves.significant_height=%s" % r["environment.waves.significant_height"],
+                          " ".join(cmd))
 
     # -- Bad input.
     def test_bad_input(self):
