@@ -17,6 +17,8 @@ FINISHED = ("ok", "warning", "diverged", "failed", "refused")
 
 
 class ResultsFolder:
+    """Checked at construction (another sweep's folder is refused), written from create() on."""
+
     def __init__(self, path, fingerprint, override_cols, value_cols, manifest):
         self.path = path
         self.header = FIXED_HEAD + list(override_cols) + FIXED_TAIL + list(value_cols)
@@ -36,13 +38,17 @@ class ResultsFolder:
                     "results folder '%s' holds another sweep (fingerprint %s from %s, this one %s: the scene file, "
                     "duration, set, keep or override keys differ); give another --out or delete it"
                     % (path, old.get("fingerprint"), old.get("sweep_file", "?"), fingerprint))
-        os.makedirs(self.cases_dir, exist_ok=True)
-        if not os.path.isfile(man_path):
-            tmp = man_path + ".tmp"
-            with open(tmp, "w") as f:
-                json.dump(manifest, f, indent=1, sort_keys=True, default=str)
-            os.replace(tmp, man_path)
+        self.manifest, self.man_path = manifest, man_path
         self.done = self._read_done()
+
+    def create(self):
+        """The folder, its sweep.json and the table's header (once the sweep is about to run)."""
+        os.makedirs(self.cases_dir, exist_ok=True)
+        if not os.path.isfile(self.man_path):
+            tmp = self.man_path + ".tmp"
+            with open(tmp, "w") as f:
+                json.dump(self.manifest, f, indent=1, sort_keys=True, default=str)
+            os.replace(tmp, self.man_path)
         if not os.path.isfile(self.table):
             self._append(",".join(self.header) + "\n")
 

@@ -39,6 +39,7 @@ def run_sweep(spec, cases, folder, client, cli, guard, check=True, retry_failed=
     log = log or (lambda msg: print("riser_sim_sweep: " + msg, file=sys.stderr, flush=True))
     out = SweepOutcome()
     t0 = time.monotonic()
+    folder.create()
     done = folder.done
     pending = [c for c in cases if c.case_id not in done or (retry_failed and done[c.case_id] != "ok"
                                                              and done[c.case_id] != "warning")]

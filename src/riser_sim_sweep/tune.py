@@ -239,7 +239,8 @@ def tune_main(args):
     table = []
     for c in cases_c:
         r = rows_c[c.case_id]
-        row = {"case_id": c.case_id, "status": r["status"], "reason": r["reason"], "set": c.set_args()[1::2]}
+        row = {"case_id": c.case_id, "status": r["status"], "reason": r["reason"], "warning": r["warning"],
+               "set": c.set_args()[1::2]}
         row.update(c.overrides)
         rtf = float(r["rtf"]) if r.get("rtf") not in (None, "") else math.nan
         row["rtf"] = rtf
@@ -273,7 +274,7 @@ def tune_main(args):
         return 3
     _log("cheapest within RMS %g, max %g%s, on %s: RTF %.3g, error RMS %.3g, max %.3g%s"
          % (args.tol_rms, args.tol_max, unit, q, best["rtf"], best["rms"], best["max"],
-            "" if best["status"] == "ok" else " (CLI warning: %s)" % best["status"]))
+            "" if best["status"] == "ok" else " (the CLI warns: %s)" % best["warning"]))
     print(" ".join("--set %s" % s for s in best["set"]))
     return 0
 

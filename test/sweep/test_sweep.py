@@ -356,6 +356,7 @@ class Sweep(unittest.TestCase):
         self.assertEqual(p.returncode, 2, p.stderr)
         self.assertIn("no Dask scheduler answered within 2 s", p.stderr)
         self.assertLess(time.monotonic() - t0, 20)
+        self.assertFalse(os.path.exists(os.path.join(self.tmp, "out3")), "a results folder without a cluster")
 
     # -- --tune on the J-lay scene.
     def test_tune_jlay_setting_within_tolerance(self):
