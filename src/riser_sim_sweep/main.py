@@ -19,7 +19,10 @@ DESCRIPTION = """Runs the cases of a sweep file through riser_sim_cli on Dask an
 
 The results folder holds results.csv (one row per case: overrides, status, reason, warning, wall/CPU time,
 kept values), cases/<case_id>.json (the CLI's summary, command, stderr) and the plots. A rerun on the same
-folder runs only the cases not in the table. Keys of the sweep file: docs/sweep.md."""
+folder runs only the cases not in the table. Keys of the sweep file: docs/sweep.md.
+
+exit codes: 0 every case ok or warning, 2 bad input (nothing run but the listed cases), 3 finished with
+failed, diverged or refused cases, 130 interrupted (rerun to resume), 1 internal error"""
 
 
 def _log(msg):
