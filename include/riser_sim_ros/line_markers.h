@@ -14,7 +14,8 @@
 
 namespace riser_sim_ros {
 
-// Horizontal planes drawn when the scene has them (world z [m]).
+// Horizontal planes drawn when the scene has them (world z [m]); in a 3D scene not the water with waves nor a
+// sloped seabed (SeaMarkers draws those).
 struct Surfaces {
   std::optional<double> water_level;  // environment.water.surface
   std::optional<double> seabed;       // seabed.level

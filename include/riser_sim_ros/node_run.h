@@ -1,6 +1,6 @@
 // The run the node steps: the core's LineRun (either engine, riser_sim/line_run.h) with its top, and a driven
 // bottom, fed live from the vessel's (the ROV's) pose samples, and its outputs turned into the node's messages
-// (LineMessages, LineMarkers and, in 3D, SeaMarkers3), sized once and filled in place. The node and its topics
+// (LineMessages, LineMarkers and, in 3D, SeaMarkers), sized once and filled in place. The node and its topics
 // see only this.
 #pragma once
 #include <memory>
@@ -80,7 +80,7 @@ class NodeRun {
   bool pinned_;  // a 3D pinned bottom: ~bottom_wrench
   LineMessages msgs_;
   LineMarkers markers_;
-  std::unique_ptr<SeaMarkers3> sea_;  // 3D: its markers appended to markers_.msg
+  std::unique_ptr<SeaMarkers> sea_;  // 3D: its markers appended to markers_.msg
 };
 
 // The hang-off as the scene's coordinates: "(x 1.000, z -2.000)" planar, "(x, y, z)" in 3D.

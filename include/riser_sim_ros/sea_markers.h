@@ -23,10 +23,7 @@
 
 namespace riser_sim_ros {
 
-// The horizontal slabs LineMarkers draws for a 3D scene: the water without waves, the seabed when level.
-Surfaces surfacesOf3(const riser_sim::Scene& scene);
-
-class SeaMarkers3 {
+class SeaMarkers {
  public:
   static constexpr int kArrows = 5;
   static constexpr int kMaxRows = 201;
@@ -34,7 +31,7 @@ class SeaMarkers3 {
   enum Id { kCurrent = 100, kWaves = 100 + kArrows, kSlopedSeabed };
 
   // Appends the scene's markers to msg (LineMarkers' array, frame and stamps as its markers).
-  SeaMarkers3(const riser_sim::Scene& scene, const std::string& fixed_frame, visualization_msgs::MarkerArray& msg);
+  SeaMarkers(const riser_sim::Scene& scene, const std::string& fixed_frame, visualization_msgs::MarkerArray& msg);
   // Updates them in msg for the line in `out` (its time and horizontal extent). Allocates nothing.
   void fill(const riser_sim::RunOutputs& out, visualization_msgs::MarkerArray& msg) const;
   bool empty() const { return current_ < 0 && waves_ < 0 && seabed_ < 0; }

@@ -33,9 +33,12 @@ void formatKn(char* buf, size_t n, const char* label, double newton) {
 }  // namespace
 
 Surfaces surfacesOf(const riser_sim::Scene& scene) {
+  // A 3D scene's waves and sloped seabed are SeaMarkers' (sea_markers.h).
+  const bool spatial = scene.space == riser_sim::SpaceKind::kSpatial;
   Surfaces s;
-  if (scene.water.enabled) s.water_level = scene.water.surface;
-  if (scene.seabed.enabled) s.seabed = scene.seabed.level;
+  if (scene.water.enabled && !(spatial && scene.water.waves.active() && scene.gravity > 0.0))
+    s.water_level = scene.water.surface;
+  if (scene.seabed.enabled && !(spatial && scene.seabed.slope != 0.0)) s.seabed = scene.seabed.level;
   return s;
 }
 

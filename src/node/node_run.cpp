@@ -34,8 +34,8 @@ NodeRun::NodeRun(const riser_sim::Scene& scene, const VesselSample& s, double t,
       msgs_(scene.elements + 1, params.fixed_frame, params.tf_prefix, params.wrench_frame == "body",
             params.vessel_frame, bottom && params.wrench_frame == "body", params.bottom_frame),
       markers_(scene.length, scene.elements + 1, scene.end_mass > 0.0, params.fixed_frame, params.markers,
-               spatial() ? surfacesOf3(scene) : surfacesOf(scene)) {
-  if (spatial()) sea_ = std::make_unique<SeaMarkers3>(scene, params.fixed_frame, markers_.msg);
+               surfacesOf(scene)) {
+  if (spatial()) sea_ = std::make_unique<SeaMarkers>(scene, params.fixed_frame, markers_.msg);
 }
 
 void NodeRun::restartMotion(double t, const VesselSample& s) {

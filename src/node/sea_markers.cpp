@@ -36,14 +36,7 @@ visualization_msgs::Marker make(const std::string& frame, const std::string& ns,
 }
 }  // namespace
 
-Surfaces surfacesOf3(const riser_sim::Scene& scene) {
-  Surfaces s = surfacesOf(scene);
-  if (scene.water.enabled && scene.water.waves.active() && scene.gravity > 0.0) s.water_level.reset();
-  if (scene.seabed.enabled && scene.seabed.slope != 0.0) s.seabed.reset();
-  return s;
-}
-
-SeaMarkers3::SeaMarkers3(const riser_sim::Scene& scene, const std::string& frame, visualization_msgs::MarkerArray& msg)
+SeaMarkers::SeaMarkers(const riser_sim::Scene& scene, const std::string& frame, visualization_msgs::MarkerArray& msg)
     : length_(scene.length), surface_(scene.water.surface) {
   using visualization_msgs::Marker;
   const Vec3 gravity(0.0, 0.0, -scene.gravity);
@@ -102,7 +95,7 @@ SeaMarkers3::SeaMarkers3(const riser_sim::Scene& scene, const std::string& frame
   if (waves_ >= 0) msg.markers[waves_].points.reserve(6 * (kMaxRows - 1));
 }
 
-void SeaMarkers3::fill(const riser_sim::RunOutputs& out, visualization_msgs::MarkerArray& msg) const {
+void SeaMarkers::fill(const riser_sim::RunOutputs& out, visualization_msgs::MarkerArray& msg) const {
   Vec3 lo = out.points[0], hi = out.points[0];
   for (const Vec3& p : out.points) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
   const Vec3 centre(0.5 * (lo.x() + hi.x()), 0.5 * (lo.y() + hi.y()), 0.0);

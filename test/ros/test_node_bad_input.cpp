@@ -235,6 +235,27 @@ TEST(NodeBadInput, UnresolvedForcesWarnNamingTheRemedy) {
   for (const auto& t : tension.all()) ASSERT_TRUE(finite(t));
 }
 
+// ~max_position bounds the hang-off point too: a vessel at x = 80 m (within 100 m) with its hang-off 50 m ahead
+// puts the point at 130 m; the pose is refused naming the point, counted, and the node does not start on it.
+TEST(NodeBadInput, HangOffBeyondMaxPositionIsRefused) {
+  ros::NodeHandle nh;
+  ros::Publisher pub = nh.advertise<geometry_msgs::PoseStamped>("/far/vessel/pose", 10);
+  Recorder<riser_sim::Tension> tension(nh, "/far/riser_sim/tension");
+  Recorder<diagnostic_msgs::DiagnosticArray> diag(nh, "/diagnostics");
+  ASSERT_TRUE(waitFor([&] { return pub.getNumSubscribers() > 0; }, 20.0));
+  pub.publish(pose(ros::Time::now(), 80.0));
+  std::string why;
+  ASSERT_TRUE(waitFor([&] {
+    const auto all = diag.all();
+    for (auto it = all.rbegin(); it != all.rend(); ++it)
+      if (!(why = diagValue(*it, "far/riser_sim", "last rejection")).empty()) return true;
+    return false;
+  }, 15.0)) << "no rejection on /diagnostics";
+  EXPECT_EQ(why, "attachment point (130, 0, 0) m (pose * vessel offset) is beyond ~max_position 100 m");
+  EXPECT_EQ(diagCount(diag, "far/riser_sim", "poses accepted"), 0);
+  EXPECT_EQ(tension.count(), 0u);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
