@@ -4,7 +4,7 @@ ROOT := $(abspath .)
 WS := $(ROOT)/.ws
 SETUP := set +u; source $(WS)/devel/setup.bash
 
-.PHONY: deps fuzz-deps build check test test-sanitize fuzz fuzz-replay sim bench soak many_risers figures demo modes clean
+.PHONY: deps fuzz-deps build check test test-sanitize fuzz fuzz-replay sim bench bench-baseline soak many_risers figures demo modes clean
 
 deps:
 	@scripts/install_deps.sh
@@ -41,8 +41,13 @@ fuzz-deps: deps
 sim: build
 	@$(SETUP); bench/paper_table1.py --sim
 
+# Every benchmark; its tables go into docs/benchmarks.md (bench/update_docs.py; RISER_SIM_BENCH_DOCS=0: not).
 bench: build
 	@$(SETUP); bench/run_all.sh
+
+# The shipped scenes' step cost -> out/bench/step_cost_baseline.csv, which make bench compares against (~15 s).
+bench-baseline: build
+	@$(WS)/devel/lib/riser_sim/riser_sim_bench_step_cost --save-baseline
 
 # An hour of simulated time of the J-lay scene through /clock: memory, step time, error bounds
 # -> out/soak/soak.csv, soak.txt (docs/benchmarks.md, "Soak"). ~15-20 min.

@@ -10,6 +10,7 @@
 // --target-wall seconds (at most the full 20 s); the median of --runs runs is reported (thread CPU time
 // by default: single-threaded, so equal to wall time on an idle machine; --clock wall for wall time).
 // The dense independent formulation is O(n³): measured up to n = 100, scaled by n³ beyond (marked ~).
+// Tables: printed and written to out/bench/tables/formulations.md, formulations_exponents.md (markdown_table.h).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -23,6 +24,7 @@
 #include <vector>
 
 #include "riser_sim/scene.h"
+#include "markdown_table.h"
 #include "validation_util.h"
 
 namespace {
@@ -330,12 +332,15 @@ int main(int argc, char** argv) {
     return std::string(r->measured ? "" : "~") + clock(paper_steps * r->per_step) + (r->dt < kDt ? " *" : "");
   };
 
-  std::printf("Table 1 line (L = 100 m, m_s = 1000 kg, E = 1e11 Pa, no bending), RK4: %s time for %g s at\n"
+  const std::string command = riser_sim::bench::commandLine(argc, argv);
+  riser_sim::bench::MarkdownTable table("formulations", command);
+  riser_sim::bench::MarkdownTable exponents("formulations_exponents", command);
+  table.printf("Table 1 line (L = 100 m, m_s = 1000 kg, E = 1e11 Pa, no bending), RK4: %s time for %g s at\n"
               "h = %g s (%g steps), from the median of %d timed runs per cell (single thread; CPU time equals\n"
               "wall time on an idle machine). Paper: its Table 1 (2013 hardware, wall time).\n\n",
               use_wall ? "wall" : "CPU", kSimDuration, kDt, paper_steps, runs);
-  std::printf("| n | paper absolute | paper independent | absolute | independent | recursive | absolute / recursive |\n");
-  std::printf("|---:|---:|---:|---:|---:|---:|---:|\n");
+  table.printf("| n | paper absolute | paper independent | absolute | independent | recursive | absolute / recursive |\n");
+  table.printf("|---:|---:|---:|---:|---:|---:|---:|\n");
   for (int n : ns) {
     std::string pa = "–", pi = "–";
     for (int k = 0; k < 6; ++k)
@@ -344,29 +349,33 @@ int main(int argc, char** argv) {
     const Row* r = find("recursive", n);
     char ratio[32] = "–";
     if (a && r) std::snprintf(ratio, sizeof ratio, "%.2f", a->per_step / r->per_step);
-    std::printf("| %d | %s | %s | %s | %s | %s | %s |\n", n, pa.c_str(), pi.c_str(), cell("absolute", n).c_str(),
+    table.printf("| %d | %s | %s | %s | %s | %s | %s |\n", n, pa.c_str(), pi.c_str(), cell("absolute", n).c_str(),
                 cell("independent", n).c_str(), cell("recursive", n).c_str(), ratio);
   }
-  std::printf("\n~ not run: the measured n = %d time scaled by (n/%d)^3 (dense LDLT).\n", kIndependentMaxN,
+  table.printf("\n~ not run: the measured n = %d time scaled by (n/%d)^3 (dense LDLT).\n", kIndependentMaxN,
               kIndependentMaxN);
-  std::printf(
-              "* h = %g s is beyond RK4's stability for this line's axial mode at this n: timed at the largest\n"
+  table.printf(
+              "\\* h = %g s is beyond RK4's stability for this line's axial mode at this n: timed at the largest\n"
               "  stable h = 1e-4/2^k (see the CSV's dt_s) and reported per %g steps (cost per step does not depend on h).\n",
               kDt, paper_steps);
-  std::printf("\nGrowth exponent p of time ~ n^p (log-log least squares over the measured n):\n\n");
+  table.write();
+  std::printf("\n");
+  exponents.printf("Growth exponent p of time ~ n^p (log-log least squares over the measured n):\n\n");
   auto lastPair = [&](int k) {
     char buf[48] = "–";
     if (last[k][0]) std::snprintf(buf, sizeof buf, "%.2f (n = %d..%d)", local_p[k], last[k][0]->n, last[k][1]->n);
     return std::string(buf);
   };
-  std::printf("| formulation | measured p | n range | p at the two largest n | paper p (n = 10..100) |\n"
+  exponents.printf("| formulation | measured p | n range | p at the two largest n | paper p (n = 10..100) |\n"
               "|---|---:|---|---|---:|\n");
-  std::printf("| absolute | %.2f | %d..%d | %s | %.2f |\n", fit[0].exponent, ns.front(), fit_max_n[0],
+  exponents.printf("| absolute | %.2f | %d..%d | %s | %.2f |\n", fit[0].exponent, ns.front(), fit_max_n[0],
               lastPair(0).c_str(), paper_abs.exponent);
-  std::printf("| independent | %.2f | %d..%d | %s | %.2f |\n", fit[1].exponent, ns.front(), fit_max_n[1],
+  exponents.printf("| independent | %.2f | %d..%d | %s | %.2f |\n", fit[1].exponent, ns.front(), fit_max_n[1],
               lastPair(1).c_str(), paper_ind.exponent);
-  std::printf("| recursive | %.2f | %d..%d | %s | – |\n", fit[2].exponent, ns.front(), fit_max_n[2],
+  exponents.printf("| recursive | %.2f | %d..%d | %s | – |\n", fit[2].exponent, ns.front(), fit_max_n[2],
               lastPair(2).c_str());
+
+  exponents.write();
 
   std::error_code ec;
   const std::filesystem::path path(out);

@@ -21,13 +21,21 @@
 // 3D step itself, without the planar run's data evicting the 3D run's from the caches at every block.
 // Writes <out>/step_cost_3d.csv.
 //
+// The shipped scenes against a saved baseline (step_cost_check.h): --save-baseline writes
+// out/bench/step_cost_baseline.csv (--baseline FILE), --compare prints the ratio and a verdict per scene
+// (unchanged within --tolerance, default 3 %) and writes the table step_cost_check.
+//
 //   riser_sim_bench_step_cost [--out DIR] [--root DIR] [--target S] [--max-n N] [--quick] [--spatial]
+//   riser_sim_bench_step_cost --save-baseline|--compare [--baseline FILE] [--scenes a,b] [--rounds K]
+//                             [--target S] [--tolerance F] [--fail-on-change] [--root DIR]
+// Tables: printed and written to out/bench/tables/step_cost.md, step_cost_3d.md (markdown_table.h).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <ctime>
 #include <filesystem>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -41,6 +49,8 @@
 #include "riser_sim/spatial/forces/bending_spring.h"
 #include "riser_sim/spatial/forces/gravity.h"
 #include "riser_sim/spatial/simulator.h"
+#include "markdown_table.h"
+#include "step_cost_check.h"
 
 namespace {
 
@@ -305,14 +315,16 @@ Pair3 timePair(int n, bool implicit, double target) {
   return r;
 }
 
-void spatialRows(const std::string& out_dir, double target, int max_n, bool quick) {
+void spatialRows(const std::string& out_dir, double target, int max_n, bool quick, const std::string& command) {
+  bench::MarkdownTable t("step_cost_3d", command);
   std::vector<int> ns = {10, 100, 300, 1000};
   if (quick) ns = {10, 100};
   std::FILE* csv = std::fopen((out_dir + "/step_cost_3d.csv").c_str(), "w");
   if (csv)
     std::fprintf(csv, "integrator,n,h,us_per_step_2d,us_per_step_3d,ratio,ratio_q1,ratio_q3,newton_2d,newton_3d,"
                       "us_per_step_3d_alone\n");
-  std::printf("\n3D against 2D, the same planar line (thread CPU time per step, interleaved blocks, medians; ratio "
+  std::printf("\n");
+  t.printf("3D against 2D, the same planar line (thread CPU time per step, interleaved blocks, medians; ratio "
               "3D/2D with its quartiles over the blocks; Newton iterations per step 2D / 3D; 3D alone: the same 3D "
               "steps run again with no planar run between its blocks):\n\n| integrator | n | h [s] | 2D [us] | "
               "3D [us] | ratio | ratio q1..q3 | Newton | 3D alone [us] |\n|---|---|---|---|---|---|---|---|---|\n");
@@ -323,10 +335,10 @@ void spatialRows(const std::string& out_dir, double target, int max_n, bool quic
       if (n > max_n) continue;
       const Pair3 r = timePair(n, implicit, std::max(target, 0.5));
       if (!r.ok) {
-        std::printf("| %s | %d | - | failed: %s | | | | | |\n", name, n, r.why.c_str());
+        t.printf("| %s | %d | - | failed: %s | | | | | |\n", name, n, r.why.c_str());
         continue;
       }
-      std::printf("| %s | %d | %.3g | %.3g | %.3g | %.2f | %.2f..%.2f | %.2f / %.2f | %.3g |\n", name, n, r.h, r.us2,
+      t.printf("| %s | %d | %.3g | %.3g | %.3g | %.2f | %.2f..%.2f | %.2f / %.2f | %.3g |\n", name, n, r.h, r.us2,
                   r.us3, r.ratio, r.ratio_lo, r.ratio_hi, r.newton2, r.newton3, r.us3_alone);
       std::fflush(stdout);
       if (csv)
@@ -334,10 +346,11 @@ void spatialRows(const std::string& out_dir, double target, int max_n, bool quic
                      r.h, r.us2, r.us3, r.ratio, r.ratio_lo, r.ratio_hi, r.newton2, r.newton3, r.us3_alone);
       if (n >= 100) xs.push_back(n + 1), y2.push_back(r.us2), y3.push_back(r.us3), y3a.push_back(r.us3_alone);
     }
-    std::printf("| %s | exponent n = 100..1000 | | %.2f | %.2f | | | | %.2f |\n", name, slope(xs, y2), slope(xs, y3),
+    t.printf("| %s | exponent n = 100..1000 | | %.2f | %.2f | | | | %.2f |\n", name, slope(xs, y2), slope(xs, y3),
                 slope(xs, y3a));
   }
   if (csv) std::fclose(csv);
+  t.write();
   std::printf("\nwrote %s/step_cost_3d.csv\n", out_dir.c_str());
 }
 
@@ -347,28 +360,57 @@ int main(int argc, char** argv) {
   std::string out_dir = "out/bench", root = ".";
   double target = 0.3;
   int max_n = 1000;
-  bool quick = false, spatial_only = false;
+  bool quick = false, spatial_only = false, save_baseline = false, compare = false, target_given = false;
+  bench::StepCheckOptions check;
+  check.command = bench::commandLine(argc, argv);
   for (int i = 1; i < argc; ++i) {
     const bool more = i + 1 < argc;
     if (!std::strcmp(argv[i], "--out") && more) out_dir = argv[++i];
     else if (!std::strcmp(argv[i], "--root") && more) root = argv[++i];
-    else if (!std::strcmp(argv[i], "--target") && more) target = std::atof(argv[++i]);
+    else if (!std::strcmp(argv[i], "--target") && more) target = std::atof(argv[++i]), target_given = true;
     else if (!std::strcmp(argv[i], "--max-n") && more) max_n = std::atoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--quick")) quick = true;
     else if (!std::strcmp(argv[i], "--spatial")) spatial_only = true;
-    else {
+    else if (!std::strcmp(argv[i], "--save-baseline")) save_baseline = true;
+    else if (!std::strcmp(argv[i], "--compare")) compare = true;
+    else if (!std::strcmp(argv[i], "--baseline") && more) check.baseline = argv[++i];
+    else if (!std::strcmp(argv[i], "--rounds") && more) check.rounds = std::atoi(argv[++i]);
+    else if (!std::strcmp(argv[i], "--tolerance") && more) check.tolerance = std::atof(argv[++i]);
+    else if (!std::strcmp(argv[i], "--fail-on-change")) check.fail_on_change = true;
+    else if (!std::strcmp(argv[i], "--scenes") && more) {
+      std::string list = argv[++i], item;
+      for (std::stringstream ss(list); std::getline(ss, item, ',');)
+        if (!item.empty()) check.scenes.push_back(item);
+    } else {
       std::fprintf(stderr, "usage: riser_sim_bench_step_cost [--out DIR] [--root DIR] [--target S] [--max-n N] "
-                           "[--quick] [--spatial]\n");
+                           "[--quick] [--spatial]\n"
+                           "       riser_sim_bench_step_cost --save-baseline|--compare [--baseline FILE] "
+                           "[--scenes a,b] [--rounds K] [--target S] [--tolerance F] [--fail-on-change] [--root DIR]\n");
       return std::strcmp(argv[i], "--help") ? 2 : 0;
     }
   }
+  if (save_baseline || compare) {
+    check.root = root;
+    if (target_given) check.target = target;
+    if (save_baseline && compare) {
+      std::fprintf(stderr, "riser_sim_bench_step_cost: --save-baseline or --compare, not both\n");
+      return 2;
+    }
+    if (!(check.tolerance > 0.0 && check.tolerance < 1.0)) {
+      std::fprintf(stderr, "riser_sim_bench_step_cost: --tolerance must be in (0, 1), got %g\n", check.tolerance);
+      return 2;
+    }
+    return save_baseline ? bench::saveStepCostBaseline(check) : bench::compareStepCost(check);
+  }
+  const std::string command = bench::commandLine(argc, argv);
   std::vector<int> ns = {10, 20, 40, 100, 200, 400, 1000};
   if (quick) ns = {10, 40, 100};
   std::filesystem::create_directories(out_dir);
   if (spatial_only) {
-    spatialRows(out_dir, target, max_n, quick);
+    spatialRows(out_dir, target, max_n, quick, command);
     return 0;
   }
+  bench::MarkdownTable table("step_cost", command);
   std::FILE* csv = std::fopen((out_dir + "/step_cost.csv").c_str(), "w");
   if (!csv) {
     std::fprintf(stderr, "cannot write into %s\n", out_dir.c_str());
@@ -376,12 +418,12 @@ int main(int argc, char** argv) {
   }
   std::fprintf(csv, "scene,integrator,formulation,jacobian,n,h,steps,cpu_us_per_step,us_per_step_per_rfe\n");
   const int kConfigs_n = int(sizeof(kConfigs) / sizeof(kConfigs[0]));
-  std::printf("Cost of one step (thread CPU time, median of 3; the machine may be shared), growth exponent "
+  table.printf("Cost of one step (thread CPU time, median of 3; the machine may be shared), growth exponent "
               "over n (J-lay: the n = 400 column is n = 300, its statics limit):\n\n| scene | integrator / formulation / solve | h [s] | ");
-  for (int n : ns) std::printf("n = %d | ", n);
-  std::printf("exponent |\n|---|---|---|");
-  for (size_t k = 0; k < ns.size(); ++k) std::printf("---|");
-  std::printf("---|\n");
+  for (int n : ns) table.printf("n = %d | ", n);
+  table.printf("exponent |\n|---|---|---|");
+  for (size_t k = 0; k < ns.size(); ++k) table.printf("---|");
+  table.printf("---|\n");
   for (const char* which : {"jlay", "riser500", "table1"}) {
     const int scene_max_n = std::string(which) == "jlay" ? 300 : max_n;
     // cost[config][n index] (0: not measured, < 0: failed)
@@ -426,24 +468,25 @@ int main(int argc, char** argv) {
     for (int k = 0; k < kConfigs_n; ++k) {
       const Config& c = kConfigs[k];
       std::vector<double> xs, ys;
-      std::printf("| %s | %s / %s / %s | %s | ", which, c.integrator, c.formulation, c.jacobian,
+      table.printf("| %s | %s / %s / %s | %s | ", which, c.integrator, c.formulation, c.jacobian,
                   c.h > 0 ? std::to_string(c.h).substr(0, 4).c_str() : "0.9x limit");
       for (size_t j = 0; j < ns.size(); ++j) {
-        if (cost[k][j] == 0.0) std::printf("- | ");
-        else if (cost[k][j] < 0.0) std::printf("failed | ");
+        if (cost[k][j] == 0.0) table.printf("- | ");
+        else if (cost[k][j] < 0.0) table.printf("failed | ");
         else {
-          std::printf("%.3g us | ", 1e6 * cost[k][j]);
+          table.printf("%.3g us | ", 1e6 * cost[k][j]);
           xs.push_back(ns[j] + 1);
           ys.push_back(cost[k][j]);
         }
       }
-      std::printf("%.2f |\n", slope(xs, ys));
+      table.printf("%.2f |\n", slope(xs, ys));
     }
     std::fflush(stdout);
     ns = quick ? std::vector<int>{10, 40, 100} : std::vector<int>{10, 20, 40, 100, 200, 400, 1000};
   }
   std::fclose(csv);
+  table.write();
   std::printf("\nwrote %s/step_cost.csv\n", out_dir.c_str());
-  spatialRows(out_dir, target, max_n, quick);
+  spatialRows(out_dir, target, max_n, quick, command);
   return 0;
 }

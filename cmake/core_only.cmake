@@ -1,5 +1,5 @@
-# The ROS-free core, the CLI and their gtests without catkin (RISER_SIM_CORE_ONLY=ON): the sanitizer
-# build of scripts/test_sanitize.sh. cmake/core.cmake and cmake/cli.cmake are used as they are, with
+# The ROS-free core, the CLI, the benches and their tests without catkin (RISER_SIM_CORE_ONLY=ON): make check
+# and the sanitizer build of scripts/test_sanitize.sh. cmake/core.cmake and cmake/cli.cmake are used as they are, with
 # catkin_add_gtest and catkin's directories supplied here.
 find_package(Eigen3 REQUIRED)
 find_package(yaml-cpp REQUIRED)
@@ -24,4 +24,5 @@ endfunction()
 
 include(cmake/core.cmake)
 include(cmake/cli.cmake)
+include(cmake/bench.cmake)  # the benches (EXCLUDE_FROM_ALL) and the test of bench/update_docs.py
 include(cmake/sweep.cmake)  # riser_sim_sweep: its test (ctest test_sweep)
