@@ -6,7 +6,7 @@ set -eo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 cd "$root"
 bin=${RISER_SIM_WS:-.ws}/devel/lib/riser_sim/riser_sim_bench_step_cost
-baseline=out/bench/step_cost_baseline.csv
+baseline=${RISER_SIM_STEP_BASELINE:-out/bench/step_cost_baseline.csv}  # RISER_SIM_STEP_BASELINE: another baseline file
 echo "== Step cost of the shipped scenes against the baseline =="
 if [ ! -x "$bin" ]; then
   echo "extra_step_cost_check: $bin not built (make build)"
