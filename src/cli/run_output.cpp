@@ -35,18 +35,6 @@ std::string csvHeader(const std::vector<int>& probe_rfes, bool bottom_moves, boo
   return h;
 }
 
-bool allFinite(const RunOutputs& o, const std::vector<int>& probe_rfes) {
-  for (const Vec3* v : {&o.top_point, &o.end_point, &o.top_force, &o.bottom_force, &o.top_moment, &o.bottom_moment,
-                        &o.bottom_point})
-    if (!v->allFinite()) return false;
-  for (double v : {o.t, o.top_twist, o.top_tension, o.max_tension, o.energy, o.work, o.energy_drift,
-                   o.constraint_error})
-    if (!std::isfinite(v)) return false;
-  for (const int k : probe_rfes)
-    if (!o.springs[k].allFinite() || !std::isfinite(o.axial_force[k])) return false;
-  return true;
-}
-
 void writeCsvRow(std::FILE* f, const RunOutputs& o, const std::vector<int>& probe_rfes, bool bottom_moves,
                  bool torsion) {
   std::fprintf(f, "%.9g", o.t);

@@ -20,9 +20,8 @@ int fail(int code, const std::string& message);
 // constraint_error; x/y/z_bottom when the bottom moves, top_twist with line.torsion; then per probed rfe K
 // x/y/z_rfeK (its axial spring's point) and tension_rfeK.
 std::string csvHeader(const std::vector<int>& probe_rfes = {}, bool bottom_moves = false, bool torsion = false);
-// Every value of a row is finite (what may be written).
-bool allFinite(const RunOutputs& o, const std::vector<int>& probe_rfes);
-// Writes one row (%.9g) in csvHeader()'s order. The caller checks allFinite() first: no NaN reaches the file.
+// Writes one row (%.9g) in csvHeader()'s order. The caller checks allFinite(RunOutputs) (line_run.h) first: no
+// NaN reaches the file.
 void writeCsvRow(std::FILE* f, const RunOutputs& o, const std::vector<int>& probe_rfes, bool bottom_moves,
                  bool torsion);
 

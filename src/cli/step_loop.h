@@ -25,7 +25,7 @@ inline std::string stepRun(LineRun& run, long total_steps, long every, OutputFil
                            const std::vector<int>& probe_rfes, RunOutputs& last, SteppingTime& time) {
   const bool bottom = run.bottomMoves(), torsion = run.hasTorsion();
   last = run.outputs();
-  if (!allFinite(last, probe_rfes)) return "initial state has non-finite outputs";
+  if (!allFinite(last)) return "initial state has non-finite outputs";
   if (csv.isOpen()) writeCsvRow(csv.get(), last, probe_rfes, bottom, torsion);
   std::chrono::steady_clock::duration wall{0};
   std::string stopped;
@@ -42,7 +42,7 @@ inline std::string stepRun(LineRun& run, long total_steps, long every, OutputFil
       break;
     }
     const RunOutputs& o = run.outputs();
-    if (!allFinite(o, probe_rfes)) {
+    if (!allFinite(o)) {
       stopped = "outputs are not finite";
       break;
     }
