@@ -34,13 +34,21 @@ inline std::string stamp() {
   char date[16];
   const std::time_t now = std::time(nullptr);
   std::strftime(date, sizeof date, "%Y-%m-%d", std::localtime(&now));
+  // The revision of the working directory's repository, else of the one holding the executable (.ws/devel/...).
   std::string rev;
-  if (std::FILE* p = popen("git describe --always --dirty --tags 2>/dev/null", "r")) {
-    char buf[128];
-    while (std::fgets(buf, sizeof buf, p)) rev += buf;
-    pclose(p);
+  std::error_code ec;
+  const std::string exe_dir = std::filesystem::read_symlink("/proc/self/exe", ec).parent_path().string();
+  for (const std::string& dir : {std::string("."), exe_dir}) {
+    if (dir.empty() || dir.find('\'') != std::string::npos) continue;
+    const std::string cmd = "git -C '" + dir + "' describe --always --dirty --tags 2>/dev/null";
+    if (std::FILE* p = popen(cmd.c_str(), "r")) {
+      char buf[128];
+      while (std::fgets(buf, sizeof buf, p)) rev += buf;
+      pclose(p);
+    }
+    while (!rev.empty() && (rev.back() == '\n' || rev.back() == ' ')) rev.pop_back();
+    if (!rev.empty()) break;
   }
-  while (!rev.empty() && (rev.back() == '\n' || rev.back() == ' ')) rev.pop_back();
   return model + " (" + std::to_string(std::thread::hardware_concurrency()) + " CPUs), " + date + ", " +
          (rev.empty() ? "unknown revision" : rev);
 }

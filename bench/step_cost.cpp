@@ -361,6 +361,7 @@ int main(int argc, char** argv) {
   double target = 0.3;
   int max_n = 1000;
   bool quick = false, spatial_only = false, save_baseline = false, compare = false, target_given = false;
+  bool rounds_given = false;
   bench::StepCheckOptions check;
   check.command = bench::commandLine(argc, argv);
   for (int i = 1; i < argc; ++i) {
@@ -374,7 +375,7 @@ int main(int argc, char** argv) {
     else if (!std::strcmp(argv[i], "--save-baseline")) save_baseline = true;
     else if (!std::strcmp(argv[i], "--compare")) compare = true;
     else if (!std::strcmp(argv[i], "--baseline") && more) check.baseline = argv[++i];
-    else if (!std::strcmp(argv[i], "--rounds") && more) check.rounds = std::atoi(argv[++i]);
+    else if (!std::strcmp(argv[i], "--rounds") && more) check.rounds = std::atoi(argv[++i]), rounds_given = true;
     else if (!std::strcmp(argv[i], "--tolerance") && more) check.tolerance = std::atof(argv[++i]);
     else if (!std::strcmp(argv[i], "--fail-on-change")) check.fail_on_change = true;
     else if (!std::strcmp(argv[i], "--scenes") && more) {
@@ -394,6 +395,11 @@ int main(int argc, char** argv) {
     if (target_given) check.target = target;
     if (save_baseline && compare) {
       std::fprintf(stderr, "riser_sim_bench_step_cost: --save-baseline or --compare, not both\n");
+      return 2;
+    }
+    if (compare && (rounds_given || target_given)) {
+      std::fprintf(stderr, "riser_sim_bench_step_cost: --compare replays the baseline's rounds and blocks: "
+                           "--rounds and --target belong to --save-baseline\n");
       return 2;
     }
     if (!(check.tolerance > 0.0 && check.tolerance < 1.0)) {
