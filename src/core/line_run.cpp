@@ -6,6 +6,7 @@
 
 #include "riser_sim/run_builder.h"
 #include "riser_sim/spatial/external_motion3.h"
+#include "riser_sim/spatial/forces/bending_spring.h"
 #include "riser_sim/spatial/joint_bending.h"
 #include "riser_sim/spatial/rfe_frames.h"
 #include "riser_sim/spatial/run_builder.h"
@@ -222,6 +223,7 @@ class SpatialLineRun : public LineRun {
       out_.bending_moment_vector[j] = b.moment;
       out_.bending_moment[j] = b.moment.norm();
     }
+    if (run_.model().hasBendingAxes()) addAxesMoments(sim, kin);
     fillFrames(sim, kin);
     out_.energy_drift = run_.energyDrift();
     return out_;
@@ -283,6 +285,29 @@ class SpatialLineRun : public LineRun {
     return spatial::SpatialRun(held_, std::move(in));
   }
   spatial::ExternalMotion3* motion(Holder h) { return h == Holder::kTop ? top_ : bottom_.get(); }
+
+  // Bending axes (EI_1 != EI_2, bending_axes.h): joint k's moment gains ∂/∂κ of the axes' energy
+  // (σ/4) Σ_{j=a,b} κᵀ P_j κ, that is (σ/2)(P_a + P_b) κ with κ = (θ / sin θ) n_a × n_b and P_j κ =
+  // m1 (m1·κ) - m2 (m2·κ) on rfe j's material axes (bendingJoint has the isotropic (Ē/d) κ).
+  void addAxesMoments(const spatial::SpatialSimulator& sim, const spatial::Kinematics3& kin) {
+    const double sigma = run_.model().bendingSplit();
+    const double* theta = sim.state().data() + run_.model().dofs();
+    const spatial::TwistFrames& f = sim.lastEvaluation().twist.frames;
+    for (size_t j = 0; j < out_.curvature.size(); ++j) {
+      const int a = static_cast<int>(j), b = a + 1;
+      const Vec3 na = kin[a].e.normalized(), nb = kin[b].e.normalized(), x = na.cross(nb);
+      const double s = x.norm(), turn = std::atan2(s, na.dot(nb));
+      if (s == 0.0 || turn >= M_PI - spatial::BendingSpring::kFoldedTol) continue;  // κ = 0, or folded (as the spring)
+      const Vec3 kappa = (turn / s) * x;
+      const auto split = [&](const Vec3& n, const Vec3& m1) {
+        const Vec3 m2 = n.cross(m1);
+        return Vec3(m1.dot(kappa) * m1 - m2.dot(kappa) * m2);
+      };
+      out_.bending_moment_vector[j] += 0.5 * sigma * (split(na, spatial::materialDirector(f, a, na, theta[a])) +
+                                                      split(nb, spatial::materialDirector(f, b, nb, theta[b])));
+      out_.bending_moment[j] = out_.bending_moment_vector[j].norm();
+    }
+  }
 
   // Torsion on: the material frames (the spins follow q in the state, simulator.h); a chart at its singularity
   // (the top rfe turned 180 deg from the hang-off's axis) or no torsion: the minimal-rotation frames.
