@@ -13,6 +13,8 @@ add_library(riser_sim_core
   src/core/forces/hydro_inertia.cpp
   src/core/forces/seabed.cpp
   src/core/forces/end_load.cpp
+  src/core/attachment.cpp
+  src/core/forces/attachments.cpp
   src/core/forces/internal_flow.cpp
   src/core/water.cpp
   src/core/formulation.cpp
@@ -45,6 +47,7 @@ add_library(riser_sim_core
   src/core/scene_sections.cpp
   src/core/scene_sea_sections.cpp
   src/core/scene_end_sections.cpp
+  src/core/scene_attachments.cpp
   src/core/scene_yaml.cpp
   src/core/spatial/run_builder.cpp
   src/core/spatial/external_motion3.cpp
@@ -79,6 +82,7 @@ add_library(riser_sim_core
   src/core/spatial/forces/froude_krylov.cpp
   src/core/spatial/forces/added_mass.cpp
   src/core/spatial/forces/seabed.cpp
+  src/core/spatial/forces/attachments.cpp
 )
 target_include_directories(riser_sim_core PUBLIC include ${EIGEN3_INCLUDE_DIR})
 target_link_libraries(riser_sim_core PUBLIC yaml-cpp)

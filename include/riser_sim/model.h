@@ -27,7 +27,8 @@ struct Rfe {
   double axial_stiffness = 0.0;  // c_i^l = EA / l_i [N/m]
   double axial_damping = 0.0;    // c_EA / l_i [N s/m]
   double s_begin = 0.0;          // arc length of A_i from the top, unstretched [m]
-  RigidPart part[3];             // parts (1), (2) and, on rfe n only, the end mass
+  // Parts (1), (2), then on rfe n the end mass, then point masses (Model::addPointMass; at most one per kappa).
+  RigidPart part[4];
   int num_parts = 2;
   // Sums over the parts (s_p = s0_p + kappa_p Δ): m = Σm, mk = Σ m kappa, S(Δ) = S0 + mk Δ,
   // Σ m kappa s = Sk0 + mk Δ, I_A(Δ) = Σ (m s² + J) = I0 + 2 Sk0 Δ + mk Δ².
@@ -63,7 +64,12 @@ class Model {
   double gravity() const { return gravity_; }    // g [m/s^2], acting along -y
   double bendingStiffness() const { return options_.bending ? props_.EI / d_ : 0.0; }  // c^b [N m/rad]
   double bendingDamping() const { return options_.bending ? props_.bending_damping / d_ : 0.0; }
-  double totalMass() const;  // line + contents + end mass [kg]
+  double totalMass() const;  // line + contents + end mass + point masses [kg]
+  // A point mass [kg] fixed to rfe i at s0 [m] from A_i, on part (1) (kappa 0) or (2) (kappa 1): an attachment
+  // (attachment.h). Merged into a point part of rfe i with the same kappa (exact: the rfe's mass, first and
+  // second moments are sums). Throws std::invalid_argument on an rfe, place or kappa that is not there.
+  void addPointMass(int i, double mass, double s0, double kappa);
+  double pointMass() const { return point_mass_; }  // Σ of the point masses [kg]
 
   // Bottom end condition (pinned: the end of rfe n is held at a fixed point).
   BottomBoundary bottom() const { return bottom_; }
@@ -81,6 +87,7 @@ class Model {
   LineProperties props_;
   ModelOptions options_;
   double end_mass_, gravity_;
+  double point_mass_ = 0.0;
   std::vector<Rfe> rfe_;
   BottomBoundary bottom_ = BottomBoundary::kFree;
   Vec2 bottom_point_ = Vec2::Zero();

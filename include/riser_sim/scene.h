@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "riser_sim/attachment.h"
 #include "riser_sim/choices.h"
 #include "riser_sim/line_properties.h"
 #include "riser_sim/model.h"
@@ -120,6 +121,7 @@ struct Scene {
   HydroSpec hydro;          // hydrodynamics
   SeabedSpec seabed;        // seabed
   InternalFlowSpec internal_fluid;  // internal_fluid
+  std::vector<AttachmentSpec> attachments;  // attachments: point bodies on the line (attachment.h)
 };
 
 std::shared_ptr<Model> buildModel(const Scene& scene);

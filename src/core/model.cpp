@@ -49,7 +49,34 @@ Model::Model(double length, int segments, const LineProperties& props, const Mod
 }
 
 double Model::totalMass() const {
-  return (props_.mass_per_length + props_.content_mass_per_length) * length_ + end_mass_;
+  return (props_.mass_per_length + props_.content_mass_per_length) * length_ + end_mass_ + point_mass_;
+}
+
+void Model::addPointMass(int i, double mass, double s0, double kappa) {
+  if (i < 0 || i > n_ || !(mass >= 0.0) || !(s0 >= 0.0 && s0 <= rfe_[i].length) || (kappa != 0.0 && kappa != 1.0))
+    throw std::invalid_argument("Model::addPointMass: rfe " + std::to_string(i) + ", mass " + std::to_string(mass) +
+                                " kg, s0 " + std::to_string(s0) + " m, kappa " + std::to_string(kappa) + " is not on the line");
+  Rfe& r = rfe_[i];
+  int p = r.num_parts;
+  for (int k = 2; k < r.num_parts; ++k)
+    if (r.part[k].kappa == kappa) p = k;
+  if (p == r.num_parts) {
+    if (p == 4) throw std::logic_error("Model::addPointMass: no part left on rfe " + std::to_string(i));
+    r.part[p] = RigidPart{0.0, 0.0, s0, kappa};
+    ++r.num_parts;
+  }
+  // Merged: mass-weighted centre, parallel-axis inertia.
+  RigidPart& q = r.part[p];
+  const double m = q.mass + mass, c = m > 0.0 ? (q.mass * q.s0 + mass * s0) / m : s0;
+  q.inertia += q.mass * (q.s0 - c) * (q.s0 - c) + mass * (s0 - c) * (s0 - c);
+  q.mass = m;
+  q.s0 = c;
+  r.mass += mass;
+  r.mass_k += mass * kappa;
+  r.S0 += mass * s0;
+  r.Sk0 += mass * kappa * s0;
+  r.I0 += mass * s0 * s0;
+  point_mass_ += mass;
 }
 
 void Model::addTerm(std::unique_ptr<ForceTerm> term) { terms_.push_back(std::move(term)); }

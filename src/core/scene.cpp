@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "riser_sim/forces/attachments.h"
 #include "riser_sim/forces/axial_spring.h"
 #include "riser_sim/forces/bending_spring.h"
 #include "riser_sim/forces/buoyancy.h"
@@ -32,6 +33,10 @@ std::shared_ptr<Model> buildModel(const Scene& scene) {
       model->addTerm(std::make_unique<HydroInertia>(water, h.inertia_coefficient, h.axial_added_mass));
   }
   if (scene.seabed.enabled) model->addTerm(std::make_unique<Seabed>(scene.seabed));
+  if (!scene.attachments.empty()) {  // their masses are parts of their rfes; the rest is their term
+    addAttachmentMasses(*model, scene.attachments);
+    model->addTerm(std::make_unique<Attachments>(*model, scene.attachments, scene.water, scene.seabed, scene.gravity));
+  }
   const InternalFlowSpec& f = scene.internal_fluid;
   if (f.density > 0.0 && (f.velocity != 0.0 || f.acceleration != 0.0))
     f.model == FlowModelKind::kPaper ? model->addTerm(std::make_unique<InternalFlow>(f, scene.line.internalArea()))

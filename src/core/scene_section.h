@@ -204,6 +204,8 @@ void parseEnvironment(const Section& root, Scene& s);
 void parseHydrodynamics(const Section& root, Scene& s);
 void parseSeabed(const Section& root, Scene& s);
 void parseInternalFluid(const Section& root, Scene& s);
+// The attachments (scene_attachments.cpp): after the line, the sea and the seabed.
+void parseAttachments(const Section& root, Scene& s);
 
 // The ends' sections (scene_end_sections.cpp): top, bottom.
 void parseTop(const Section& root, Scene& s);

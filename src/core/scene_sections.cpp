@@ -306,6 +306,7 @@ const SectionEntry kSections[] = {
     {"line", parseLine},   {"top", parseTop},           {"bottom", parseBottom}, {"initial", parseInitial},
     {"environment", parseEnvironment}, {"solver", parseSolver}, {"run", parseRun},
     {"hydrodynamics", parseHydrodynamics}, {"seabed", parseSeabed}, {"internal_fluid", parseInternalFluid},
+    {"attachments", parseAttachments},
 };
 
 }  // namespace

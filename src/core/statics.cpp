@@ -243,6 +243,50 @@ std::string currentLimit(const Model& model, const StaticsProblem& p, const Stat
 
 }  // namespace
 
+// The continuation in the attachments' loads (StaticTerms::scaleAttachments): from none (solved by `start`) up
+// to the scene's in steps (from the last state: Newton stays on the path) halved when Newton fails; the end is
+// checked as any solution (its stability included). failure: empty on success.
+template <class Start>
+Attempt rampAttachments(const Model& model, const StaticsProblem& problem, StaticTerms& terms, StaticResidual& F,
+                        double t, Budget& budget, Start&& start) {
+  StaticsProblem loose = problem;
+  loose.tolerance = std::max(problem.tolerance, 1e-6);
+  terms.scaleAttachments(0.0);
+  std::string none_failures;
+  Attempt c = start(loose, none_failures);
+  double s = 0.0, step = 0.25;
+  Kinematics kin(model.bodies());
+  if (c.converged) {
+    while (s < 1.0 && step > 1e-3 && !budget.out) {
+      const double next = std::min(s + step, 1.0);
+      terms.scaleAttachments(next);
+      VecX x = c.x;
+      int it = 0;
+      double r = INFINITY;
+      budget.stage = "with the attachments' loads ramped up, at " + std::to_string(next) + " of them";
+      const bool ok = newton(F, x, next < 1.0 ? loose : problem, it, r, budget);
+      c.iterations += it;
+      if (ok) c.x = x, c.residual = r, s = next, step = std::min(2.0 * step, 0.5);
+      else step *= 0.5;
+    }
+  }
+  terms.scaleAttachments(1.0);
+  std::ostringstream o;
+  if (!c.converged) {
+    o << "(without them: " << none_failures << ")";
+  } else if (s < 1.0) {
+    o << "(the stable equilibria end at " << s << " of their loads)";
+  } else {
+    F.toKinematics(c.x, kin);
+    const EquilibriumCheck ch = checkEquilibrium(model, problem, kin, F.endForce(c.x), t);
+    if (!ch.ok)
+      o << "to a valid equilibrium: its solution (" << c.iterations << " iterations, residual " << c.residual
+        << ") fails the check " << ch.message;
+  }
+  c.failure = o.str();
+  return c;
+}
+
 StaticsResult solveStatics(const Model& model, const StaticsProblem& problem, double t) {
   using Kind = StaticsProblem::Kind;
   StaticsResult res;
@@ -361,6 +405,15 @@ StaticsResult solveStatics(const Model& model, const StaticsProblem& problem, do
     c.failure = o.str();
     if (c.failure.empty()) a = c;
     else failures += "; with the current ramped up from still water " + c.failure;
+  }
+  if (!a.failure.empty() && problem.continuation && terms.hasAttachments() && !budget.out) {
+    // Continuation in the attachments (buoys and clumps can pull Newton onto a folded balance): the line
+    // without their loads, then the loads ramped up along the path of stable equilibria.
+    const Attempt c = rampAttachments(model, problem, terms, F, t, budget, [&](const StaticsProblem& p, std::string& f) {
+      return attempts(p, false, f);
+    });
+    if (c.failure.empty()) a = c;
+    else failures += "; with the attachments' loads ramped up from none " + c.failure;
   }
   res.converged = a.failure.empty();
   res.iterations = a.iterations;

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "riser_sim/chain_kinematics.h"
+#include "riser_sim/forces/attachments.h"
 #include "riser_sim/forces/morison_drag.h"
 #include "riser_sim/forces/seabed.h"
 
@@ -16,6 +17,8 @@ StaticTerms::StaticTerms(const Model& model, double t) : model_(model), t_(t) {
     if (steady) owned_.push_back(std::move(steady));
   }
   terms_ = original_;
+  for (size_t k = 0; k < original_.size(); ++k)
+    if (dynamic_cast<const Attachments*>(original_[k])) attachments_ = int(k);
   const WaterSpec* w = nullptr;
   for (const auto& term : model.terms())
     if (const auto* d = dynamic_cast<const MorisonDrag*>(term.get())) w = &d->water().spec();
@@ -37,6 +40,17 @@ void StaticTerms::scaleCurrent(double factor) {
     owned_.push_back(std::move(scaled));
     terms_[k] = owned_.back().get();
   }
+}
+
+void StaticTerms::scaleAttachments(double factor) {
+  if (attachments_ < 0) return;
+  const auto* a = static_cast<const Attachments*>(original_[attachments_]);
+  if (factor == 1.0) {
+    terms_[attachments_] = original_[attachments_];
+    return;
+  }
+  owned_.push_back(a->scaled(factor));
+  terms_[attachments_] = owned_.back().get();
 }
 
 double StaticTerms::seabedLevel() const {

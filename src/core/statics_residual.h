@@ -22,6 +22,9 @@ class StaticTerms {
   void scaleSeabed(double factor);  // normal stiffness x factor (1: as the scene says)
   // The current's velocity x factor (1: as the scene says), for the continuation in the current.
   void scaleCurrent(double factor);
+  // The attachments' loads x factor (Attachments::scaled: their weight included), for the continuation in them.
+  void scaleAttachments(double factor);
+  bool hasAttachments() const { return attachments_ >= 0; }
   bool hasCurrent() const { return has_current_; }
   double currentFactor() const { return current_factor_; }  // some term sees a non-zero steady current
 
@@ -30,6 +33,7 @@ class StaticTerms {
   double t_;
   bool has_current_ = false;
   double current_factor_ = 1.0;
+  int attachments_ = -1;  // index of the attachments' term
   std::vector<std::unique_ptr<ForceTerm>> owned_;
   std::vector<const ForceTerm*> terms_;
   std::vector<const ForceTerm*> original_;

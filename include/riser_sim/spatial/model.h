@@ -25,6 +25,9 @@ class SpatialModel {
   SpatialModel& operator=(const SpatialModel&) = delete;
 
   const Model& line() const { return line_; }  // the discretisation (its own terms are not used)
+  // A point mass on rfe i (Model::addPointMass): an attachment (attachment.h).
+  void addPointMass(int i, double mass, double s0, double kappa) { line_.addPointMass(i, mass, s0, kappa); }
+  Model& mutableLine() { return line_; }  // for the builders' attachments (addAttachmentMasses)
   int bodies() const { return line_.bodies(); }
   int dofs() const { return kDofPerBody3 * bodies(); }
   const Rfe& rfe(int i) const { return line_.rfe(i); }

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "riser_sim/spatial/force_term.h"
+#include "riser_sim/spatial/forces/attachments.h"
 #include "riser_sim/spatial/forces/axial_spring.h"
 #include "riser_sim/spatial/forces/bending_spring.h"
 #include "riser_sim/spatial/forces/buoyancy.h"
@@ -138,6 +139,10 @@ std::shared_ptr<SpatialModel> buildSpatialModel(const Scene& scene) {
       model->addTerm(std::make_unique<AddedMassTerm>(water, h.inertia_coefficient - 1.0, h.axial_added_mass));
   }
   if (scene.seabed.enabled) model->addTerm(std::make_unique<Seabed3>(scene.seabed, model->gravity()));
+  if (!scene.attachments.empty()) {  // as the planar buildModel
+    addAttachmentMasses(model->mutableLine(), scene.attachments);
+    model->addTerm(std::make_unique<Attachments3>(*model, scene.attachments, scene.water, scene.seabed));
+  }
   if (scene.torsion.enabled) {
     const TorsionSpec& t = scene.torsion;
     model->setTorsion(TorsionProperties{t.stiffness, t.polar_inertia, t.damping, t.end_polar_inertia, t.free_top,
