@@ -1,6 +1,7 @@
 # ROS-free core: Eigen + yaml-cpp only.
 add_library(riser_sim_core
   src/core/line_properties.cpp
+  src/core/line_sections.cpp
   src/core/model.cpp
   src/core/rfe_inertia.cpp
   src/core/top_motion.cpp
@@ -45,6 +46,8 @@ add_library(riser_sim_core
   src/core/spatial/rfe_frames.cpp
   src/core/spatial/joint_bending.cpp
   src/core/scene_sections.cpp
+  src/core/scene_line_sections.cpp
+  src/core/line_sections_check.cpp
   src/core/scene_sea_sections.cpp
   src/core/scene_end_sections.cpp
   src/core/scene_attachments.cpp

@@ -7,6 +7,7 @@
 #include "riser_sim/attachment.h"
 #include "riser_sim/choices.h"
 #include "riser_sim/line_properties.h"
+#include "riser_sim/line_sections.h"
 #include "riser_sim/model.h"
 #include "riser_sim/simulator.h"
 #include "riser_sim/statics.h"
@@ -99,6 +100,10 @@ struct Scene {
   double length = 0.0;   // line.length [m]
   int elements = 0;      // line.elements: n segments (n + 1 rfes)
   LineProperties line;
+  // line.sections from the top (empty: one uniform section, the line's); the sections' lengths add up to
+  // length and their elements to elements. line.bend_stiffener: EI(s) near an end.
+  std::vector<LineSection> sections;
+  std::vector<BendStiffener> stiffeners;
   ModelOptions options;
   double end_mass = 0.0;  // line.end_mass [kg]
   TorsionSpec torsion;    // line.torsion
@@ -124,6 +129,10 @@ struct Scene {
   std::vector<AttachmentSpec> attachments;  // attachments: point bodies on the line (attachment.h)
 };
 
+// The scene's line as sections (one when line.sections is absent), the internal fluid's mass in each.
+std::vector<LineSection> lineSections(const Scene& scene);
+// Some section has a C_M or C_a,t of its own (the added-mass terms are built for it).
+bool sectionsAddMass(const Scene& scene);
 std::shared_ptr<Model> buildModel(const Scene& scene);
 std::unique_ptr<TopMotion> buildTopMotion(const TopMotionSpec& spec);
 // Static problem for the scene's initial state (top at the motion's position at t = 0).

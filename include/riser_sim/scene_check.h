@@ -13,4 +13,7 @@ namespace riser_sim {
 // The first problem, naming its scene key (e.g. "solver.jacobian"), or none.
 std::optional<SetupError> checkScene(const Scene& scene);
 
+// The line's sections and stiffener (line.sections[k].EA, line.bend_stiffener.length, ...), part of checkScene.
+std::optional<SetupError> checkLineSections(const Scene& scene);
+
 }  // namespace riser_sim

@@ -102,11 +102,11 @@ class PlanarLineRun : public LineRun {
       // x towards z in the x-z plane: a turn by -φ about y.
       out_.frames[k] = Eigen::Quaterniond(Eigen::AngleAxisd(-phi, Vec3::UnitY()));
     }
-    const double d = model.segmentLength();
     for (size_t j = 0; j < out_.bending_moment.size(); ++j) {  // a turn from +x towards +z is about -y
       out_.bending_moment[j] = o.bending_moment[j];
       out_.bending_moment_vector[j] = Vec3(0.0, -o.bending_moment[j], 0.0);
-      out_.curvature[j] = std::abs(o.angles[j + 1] - o.angles[j]) / d;
+      // joint j (between rfes j and j+1) bends segment j
+      out_.curvature[j] = std::abs(o.angles[j + 1] - o.angles[j]) / model.segmentLength(static_cast<int>(j));
     }
     out_.energy_drift = sim_.energyDrift();
     return out_;
@@ -180,9 +180,6 @@ class SpatialLineRun : public LineRun {
     const int nb = model.bodies();
     sizeOutputs(out_, nb, false);
     for (int i = 0; i < nb; ++i) out_.arc_length[i] = model.rfe(i).s_begin + 0.5 * model.rfe(i).length;
-    stiffness_ = model.bendingStiffness();
-    damping_ = model.bendingDamping();
-    segment_ = model.line().segmentLength();
     kin_.resize(nb);
   }
   bool spatial() const override { return true; }
@@ -218,7 +215,10 @@ class SpatialLineRun : public LineRun {
       out_.elongations[k] = kin[k].delta;
     }
     for (size_t j = 0; j < out_.curvature.size(); ++j) {
-      const spatial::BendingJoint b = spatial::bendingJoint(kin[j], kin[j + 1], stiffness_, damping_, segment_);
+      const int i = static_cast<int>(j) + 1;  // spring i, between rfes j and j+1, bends segment j
+      const spatial::SpatialModel& model = run_.model();
+      const spatial::BendingJoint b = spatial::bendingJoint(kin[j], kin[j + 1], model.bendingStiffness(i),
+                                                            model.bendingDamping(i), model.line().segmentLength(i - 1));
       out_.curvature[j] = b.curvature;
       out_.bending_moment_vector[j] = b.moment;
       out_.bending_moment[j] = b.moment.norm();
@@ -332,7 +332,6 @@ class SpatialLineRun : public LineRun {
   RunOutputs out_;
   spatial::LineFrames line_frames_;
   spatial::Kinematics3 kin_;  // of the last outputs()
-  double stiffness_ = 0.0, damping_ = 0.0, segment_ = 1.0;  // c = EI/d [N m/rad], c_d [N m s/rad], d [m]
 };
 
 }  // namespace

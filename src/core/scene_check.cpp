@@ -5,6 +5,7 @@
 namespace riser_sim {
 
 std::optional<SetupError> checkScene(const Scene& scene) {
+  if (const auto error = checkLineSections(scene)) return error;
   if (const auto error = checkSolverValues(scene.solver)) return error;
   if (scene.space == SpaceKind::kSpatial) {
     if (const auto issue = spatial::unsupported(scene)) return SetupError{issue->key, issue->message};

@@ -207,6 +207,11 @@ void parseInternalFluid(const Section& root, Scene& s);
 // The attachments (scene_attachments.cpp): after the line, the sea and the seabed.
 void parseAttachments(const Section& root, Scene& s);
 
+// line.sections and line.bend_stiffener (scene_line_sections.cpp): read at the end of the line block;
+// finishLineSections smears buoyancy modules once the hydrodynamics block is read.
+void parseLineSections(const Section& line, Scene& s);
+void finishLineSections(Scene& s);
+
 // The ends' sections (scene_end_sections.cpp): top, bottom.
 void parseTop(const Section& root, Scene& s);
 void parseBottom(const Section& root, Scene& s);

@@ -153,10 +153,11 @@ void parseLine(const Section& root, Scene& s) {
   const Section line = root.section(
       "line", {"length", "elements", "outer_diameter", "inner_diameter", "youngs_modulus", "density", "EA", "EI",
                "mass_per_length", "end_mass", "bending", "axial_flexibility", "axial_damping", "axial_damping_ratio",
-               "bending_damping", "torsion", "bending_axis"});
-  s.length = line.number("length");
+               "bending_damping", "torsion", "bending_axis", "sections", "bend_stiffener"});
+  const bool sectioned = line.has("sections");  // then length and elements may come from the sections
+  s.length = sectioned && !line.has("length") ? 1.0 : line.number("length");
   requirePositive(line.key("length"), s.length);
-  s.elements = line.integer("elements");
+  s.elements = sectioned && !line.has("elements") ? 1 : line.integer("elements");
   if (s.elements < 1) throw SceneError(line.key("elements"), "must be >= 1, got " + std::to_string(s.elements));
   if (s.elements > kMaxSceneElements)
     throw SceneError(line.key("elements"), "must be <= " + std::to_string(kMaxSceneElements) + ", got " +
@@ -181,6 +182,7 @@ void parseLine(const Section& root, Scene& s) {
   requireNonNegative(line.key("end_mass"), s.end_mass);
   parseTorsion(line, s);
   parseBendingAxes(line, s);
+  parseLineSections(line, s);
 }
 
 void parseInitial(const Section& root, Scene& s) {
@@ -320,6 +322,7 @@ Scene parseScene(const YAML::Node& node) {
   s.name = root.text("name", "");
   s.space = root.choice("space", SpaceKind::kPlanar);  // first: it decides what a vector may be
   for (const auto& entry : kSections) entry.parse(root, s);
+  finishLineSections(s);
   checkCombination(s);
   return s;
 }

@@ -278,8 +278,8 @@ const LineOutputs& Simulator::outputs() {
   }
   out_.points[nb] = kin[nb - 1].end();
   for (int i = 1; i < nb; ++i)
-    out_.bending_moment[i - 1] = model_->bendingStiffness() * (kin[i].phi - kin[i - 1].phi) +
-                                 model_->bendingDamping() * (kin[i].phi_dot - kin[i - 1].phi_dot);
+    out_.bending_moment[i - 1] = model_->bendingStiffness(i) * (kin[i].phi - kin[i - 1].phi) +
+                                 model_->bendingDamping(i) * (kin[i].phi_dot - kin[i - 1].phi_dot);
   out_.top_force = re.top;
   out_.bottom_force = re.bottom;
   out_.top_tension = re.top.norm();

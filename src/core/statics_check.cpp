@@ -61,7 +61,7 @@ std::string seabedGeometry(const Model& model, const StaticsProblem& p, const St
   if (!(k > 0.0) || p.kind == Kind::kHanging || !(netWeightPerLength(model, terms, p.top) > 0.0))
     return "";
   const double h = p.top.y() - level;
-  const bool chain = !(model.bendingStiffness() > 0.0);
+  const bool chain = !model.hasBending();
   std::ostringstream o;
   if (p.kind == Kind::kEndDisplaced && chain && h > 0.0 && h + std::abs(p.end_dx) < L)
     o << "initial.end_dx: " << p.end_dx << " m, but the line (line.length " << L << " m) is longer than the way "

@@ -135,7 +135,7 @@ solver: {dt: 0.001}
   spatial::Kinematics3 kin(model.bodies());
   sim.kinematics(kin);
   const double* theta = sim.state().data() + model.dofs();
-  const double c = model.bendingStiffness(), d = model.line().segmentLength();
+  const double c = model.bendingStiffness(1), d = model.line().segmentLength();  // uniform line
   double from_moments = 0.0, isotropic = 0.0;
   for (size_t j = 0; j < o.curvature.size(); ++j) {
     const Vec3 na = kin[j].e.normalized(), nb = kin[j + 1].e.normalized(), x = na.cross(nb);

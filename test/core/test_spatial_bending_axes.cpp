@@ -120,7 +120,7 @@ TEST(SpatialBendingAxes, PrincipalBendsCostTheirAxisStiffness) {
     data.resize(2);
     initTwistFrames(kin, data.frames, m->bendingAxis());
     const double th[2] = {0.0, spin};
-    return 0.5 * m->bendingStiffness() * theta * theta + bendingAxesEnergy(*m, kin, th, data.frames);
+    return 0.5 * m->bendingStiffness(1) * theta * theta + bendingAxesEnergy(*m, kin, th, data.frames);
   };
   const double v1 = 0.5 * kEI1 / d * theta * theta, v2 = 0.5 * kEI2 / d * theta * theta, vm = 0.5 * (v1 + v2);
   std::printf("[bending axes] bend 0.3 rad about axis 1: %.12g J (EI_1: %.12g), axis 2: %.12g (EI_2: %.12g), "

@@ -78,7 +78,7 @@ TEST(SpatialForces, BendingAtZeroAndNearFoldedAngle) {
   EXPECT_TRUE(Q.allFinite());
   // Near π the force on e_1 is c θ / |e_0| ≈ c π (tangent, lever of unit length).
   const Vec3 q1 = Q.segment<3>(kDofPerBody3 * 0 + kE);
-  EXPECT_NEAR(q1.norm(), m->bendingStiffness() * (M_PI - 1e-9), 1e-6 * m->bendingStiffness());
+  EXPECT_NEAR(q1.norm(), m->bendingStiffness(1) * (M_PI - 1e-9), 1e-6 * m->bendingStiffness(1));
 }
 
 // θ/sinθ by its series (sin²θ <= 0.01) against asin(x)/x from libm: the series' truncation is 1.2e-18 there
@@ -101,7 +101,7 @@ TEST(SpatialForces, BendingSeriesAgainstAsin) {
 TEST(SpatialForces, BendingForceIsKThetaAcrossTheSeriesSwitch) {
   auto m = spatial_test::spatialModel(spec(), Vec3(0, 0, -9.81));
   spatial::BendingSpring spring;
-  const double k = m->bendingStiffness(), switch_angle = std::asin(0.1);
+  const double k = m->bendingStiffness(1), switch_angle = std::asin(0.1);
   for (double theta : {1e-6, 1e-3, 0.05, switch_angle - 1e-9, switch_angle + 1e-9, 0.3, 2.0}) {
     Kinematics3 kin(m->bodies());
     for (int i = 0; i < m->bodies(); ++i) kin[i].e = Vec3(0, 0, -1), kin[i].len = m->rfe(i).length;

@@ -1,6 +1,7 @@
 // Buoyancy of the displaced water, ρ_w A_w g per submerged length (paper eq. 11, 16), for parts fully or
 // partly below the free surface, applied at the centroid of the submerged portion.
-// V = -ρ_w g A_w ∫ min(y - y_s, 0) dξ. (Wall and internal-fluid weights are the Gravity term.)
+// V = -ρ_w g A_w ∫ min(y - y_s, 0) dξ, A_w of each part's line section. (Wall and internal-fluid weights are
+// the Gravity term.)
 #pragma once
 #include "riser_sim/force_term.h"
 #include "riser_sim/water.h"
@@ -17,6 +18,7 @@ class Buoyancy : public ForceTerm {
   double power(const Model&, const TermData*, const Kinematics&, double) const override { return 0.0; }  // conservative
 
  private:
+  double liftPerLength(const Model& model, int i, int p) const;
   WaterSpec water_;
 };
 

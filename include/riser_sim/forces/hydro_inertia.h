@@ -10,18 +10,20 @@ namespace riser_sim {
 
 class HydroInertia : public ForceTerm {
  public:
-  // inertia_coefficient C_M (across the line), axial_added_mass C_a,t (along it).
-  HydroInertia(const WaterKinematics& water, double inertia_coefficient, double axial_added_mass = 0.0)
-      : water_(water), cm_(inertia_coefficient), ca_t_(axial_added_mass) {}
+  // inertia_coefficient C_M (across the line), axial_added_mass C_a,t (along it); a line section's own values
+  // (line_sections.h) replace them on its parts. section_added_mass: some section has added mass of its own.
+  HydroInertia(const WaterKinematics& water, double inertia_coefficient, double axial_added_mass = 0.0,
+               bool section_added_mass = false)
+      : water_(water), cm_(inertia_coefficient), ca_t_(axial_added_mass), section_added_mass_(section_added_mass) {}
   std::string name() const override { return "hydro_inertia"; }
   std::unique_ptr<ForceTerm> steadyTerm(double t) const override {
-    return std::make_unique<HydroInertia>(water_.steady(t), cm_, ca_t_);
+    return std::make_unique<HydroInertia>(water_.steady(t), cm_, ca_t_, section_added_mass_);
   }
   std::unique_ptr<ForceTerm> steadyTerm(double t, double current_factor) const override {
-    return std::make_unique<HydroInertia>(water_.steady(t, current_factor), cm_, ca_t_);
+    return std::make_unique<HydroInertia>(water_.steady(t, current_factor), cm_, ca_t_, section_added_mass_);
   }
   void addForces(const Model& model, const TermData*, const Kinematics& kin, double t, VecX& Q) const override;
-  bool hasInertia() const override { return cm_ != 1.0 || ca_t_ != 0.0; }
+  bool hasInertia() const override { return cm_ != 1.0 || ca_t_ != 0.0 || section_added_mass_; }
   void addInertia(const Model& model, const Kinematics& kin, double t, AlignedVector<Mat4>& M,
                   VecX& h) const override;
   double power(const Model& model, const TermData*, const Kinematics& kin, double t) const override;
@@ -34,6 +36,7 @@ class HydroInertia : public ForceTerm {
   double sweep(const Model& model, const Kinematics& kin, double t, VecX* Q) const;
   WaterKinematics water_;
   double cm_, ca_t_;
+  bool section_added_mass_;
 };
 
 }  // namespace riser_sim

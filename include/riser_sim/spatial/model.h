@@ -20,6 +20,9 @@ class SpatialModel {
   // gravity: acceleration vector [m/s^2], default (0, 0, -9.81)-like; the held planar Model gets |gravity|.
   SpatialModel(double length, int segments, const LineProperties& props, const ModelOptions& options,
                double end_mass, const Vec3& gravity);
+  // Sections from the top and bend stiffeners (line_sections.h), as the planar Model.
+  SpatialModel(const std::vector<LineSection>& sections, const std::vector<BendStiffener>& stiffeners,
+               const ModelOptions& options, double end_mass, const Vec3& gravity);
   ~SpatialModel();
   SpatialModel(const SpatialModel&) = delete;
   SpatialModel& operator=(const SpatialModel&) = delete;
@@ -33,8 +36,9 @@ class SpatialModel {
   const Rfe& rfe(int i) const { return line_.rfe(i); }
   const ModelOptions& options() const { return line_.options(); }
   const Vec3& gravity() const { return gravity_; }
-  double bendingStiffness() const { return line_.bendingStiffness(); }  // c = EI/d [N m/rad]
-  double bendingDamping() const { return line_.bendingDamping(); }      // c_d [N m s/rad]
+  // Spring and damper between rfes i-1 and i (Model::bendingStiffness(i)) [N m/rad], [N m s/rad].
+  double bendingStiffness(int i) const { return line_.bendingStiffness(i); }
+  double bendingDamping(int i) const { return line_.bendingDamping(i); }
 
   // Bottom end: free, or the end of rfe n pinned at a point [m]: fixed (setBottom), or moving along a
   // prescribed path (setBottomMotion: A_{n+1} = p_b(t), held as the top's A_0 = p(t)).
@@ -50,8 +54,9 @@ class SpatialModel {
     return bottom_motion_ ? bottom_motion_->at(t) : PointMotion3{bottom_point_, Vec3::Zero(), Vec3::Zero()};
   }
 
-  // Torsion (torsion.h): off unless set; on adds a spin angle and rate per rfe to the state.
-  // Throws std::invalid_argument unless GJ > 0, ρ I_p > 0, damping >= 0, end polar inertia >= 0.
+  // Torsion (torsion.h): off unless set; on adds a spin angle and rate per rfe to the state. Throws
+  // std::invalid_argument unless GJ > 0, ρ I_p > 0, damping >= 0, end polar inertia >= 0 and the segments are
+  // of one length (the twist springs are GJ/d).
   void setTorsion(const TorsionProperties& t);
   bool hasTorsion() const { return has_torsion_; }
   const TorsionProperties& torsion() const { return torsion_; }
@@ -59,7 +64,7 @@ class SpatialModel {
   // Bending stiffness about the rfes' material axes (bending_axes.h): EI_1 about axis 1, EI_2 about axis 2
   // [N m^2]; the line's EI must be their mean (the isotropic BendingSpring carries it). axis1: axis 1 at the
   // hang-off at t = 0 (world; its part normal to the top rfe is taken). Needs setTorsion first (the axes turn
-  // with the spin). Throws std::invalid_argument naming what is wrong.
+  // with the spin) and a uniform line (Model::uniform()). Throws std::invalid_argument naming what is wrong.
   void setBendingAxes(double EI1, double EI2, const Vec3& axis1);
   bool hasBendingAxes() const { return has_axes_; }
   double bendingSplit() const { return split_; }  // σ = (EI_1 - EI_2) / (2d) [N m/rad]

@@ -2,10 +2,11 @@
 
 namespace riser_sim {
 
+// Spring i between rfes i-1 and i: c_i = 1 / ∫ ds/EI over segment i-1 (Model::bendingStiffness(i)).
 void BendingSpring::addForces(const Model& model, const TermData*, const Kinematics& kin, double, VecX& Q) const {
-  const double k = model.bendingStiffness(), c = model.bendingDamping();
   for (int i = 1; i < model.bodies(); ++i) {
-    const double m = k * (kin[i].phi - kin[i - 1].phi) + c * (kin[i].phi_dot - kin[i - 1].phi_dot);
+    const double m = model.bendingStiffness(i) * (kin[i].phi - kin[i - 1].phi) +
+                     model.bendingDamping(i) * (kin[i].phi_dot - kin[i - 1].phi_dot);
     Q[4 * i + kPhi] -= m;
     Q[4 * (i - 1) + kPhi] += m;
   }
@@ -15,7 +16,7 @@ double BendingSpring::potentialEnergy(const Model& model, const TermData*, const
   double v = 0.0;
   for (int i = 1; i < model.bodies(); ++i) {
     const double dphi = kin[i].phi - kin[i - 1].phi;
-    v += 0.5 * model.bendingStiffness() * dphi * dphi;
+    v += 0.5 * model.bendingStiffness(i) * dphi * dphi;
   }
   return v;
 }
@@ -24,7 +25,7 @@ double BendingSpring::power(const Model& model, const TermData*, const Kinematic
   double p = 0.0;
   for (int i = 1; i < model.bodies(); ++i) {
     const double w = kin[i].phi_dot - kin[i - 1].phi_dot;
-    p -= model.bendingDamping() * w * w;
+    p -= model.bendingDamping(i) * w * w;
   }
   return p;
 }
@@ -33,10 +34,10 @@ double BendingSpring::power(const Model& model, const TermData*, const Kinematic
 
 namespace riser_sim {
 
-// ½ k (φ_i - φ_{i-1})²: +k on both diagonals, -k between the neighbours (same for the damping).
+// ½ k_i (φ_i - φ_{i-1})²: +k_i on both diagonals, -k_i between the neighbours (same for the damping).
 bool BendingSpring::addStiffness(const Model& model, const TermData*, const Kinematics&, double, StiffnessBlocks& S) const {
-  const double k = model.bendingStiffness(), c = model.bendingDamping();
   for (int i = 1; i < model.bodies(); ++i) {
+    const double k = model.bendingStiffness(i), c = model.bendingDamping(i);
     S.K_diag[i](kPhi, kPhi) += k;
     S.K_diag[i - 1](kPhi, kPhi) += k;
     S.K_sub[i](kPhi, kPhi) -= k;

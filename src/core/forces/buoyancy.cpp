@@ -13,20 +13,25 @@ WetPart wetPart(const Model& model, const BodyKinematics& b, int i, int part, do
   return WetPart{frac * len, start + cen * len, kappa, frac};
 }
 
+// ρ_w g A_w of part p of rfe i (its section's displaced area) [N/m].
+double Buoyancy::liftPerLength(const Model& model, int i, int p) const {
+  return water_.density * model.partSection(i, p).props.externalArea() * model.gravity();
+}
+
 void Buoyancy::addForces(const Model& model, const TermData*, const Kinematics& kin, double, VecX& Q) const {
-  const double f = water_.density * model.line().externalArea() * model.gravity();
   for (int i = 0; i < model.bodies(); ++i)
     for (int p = 0; p < 2; ++p) {
+      const double f = liftPerLength(model, i, p);
       const WetPart w = wetPart(model, kin[i], i, p, water_.surface);
       if (w.length > 0.0) Q.segment<4>(4 * i) += pointForce(kin[i], w.s0, w.kappa, Vec2(0.0, f * w.length));
     }
 }
 
 double Buoyancy::potentialEnergy(const Model& model, const TermData*, const Kinematics& kin) const {
-  const double f = water_.density * model.line().externalArea() * model.gravity();
   double v = 0.0;
   for (int i = 0; i < model.bodies(); ++i)
     for (int p = 0; p < 2; ++p) {
+      const double f = liftPerLength(model, i, p);
       const WetPart w = wetPart(model, kin[i], i, p, water_.surface);
       v -= f * w.length * (kin[i].point(w.s0, w.kappa).y() - water_.surface);
     }
@@ -40,10 +45,10 @@ namespace riser_sim {
 // The geometric part of the lift on each wet part (the change of the wet length at the surface is left
 // to the explicit side).
 bool Buoyancy::addStiffness(const Model& model, const TermData*, const Kinematics& kin, double, StiffnessBlocks& S) const {
-  const double f = water_.density * model.line().externalArea() * model.gravity();
   const Mat2 zero = Mat2::Zero();
   for (int i = 0; i < model.bodies(); ++i)
     for (int p = 0; p < 2; ++p) {
+      const double f = liftPerLength(model, i, p);
       const WetPart w = wetPart(model, kin[i], i, p, water_.surface);
       if (w.length > 0.0)
         addPointStiffness(kin[i], w.s0, w.kappa, Vec2(0.0, f * w.length), zero, zero, S.K_diag[i], S.C_diag[i]);

@@ -115,7 +115,9 @@ Relaxed3 relaxToRest(const Scene& scene, const Kinematics3& guess_in, const Vec3
   // buoyancy of the whole line; the current and the pins stiffen it). α = 2 ω1 damps it critically and every
   // faster mode at α/2; a mode slower than the estimate would creep (at ω²/α), so ω1 errs low.
   const Model& line = model->line();
-  const double lift = still.water.enabled ? still.water.density * line.line().externalArea() * scene.length : 0.0;
+  double volume = 0.0;  // the line's displaced volume [m^3]
+  for (int k = 0; k < line.sectionCount(); ++k) volume += line.section(k).props.externalArea() * line.section(k).length;
+  const double lift = still.water.enabled ? still.water.density * volume : 0.0;
   const double g_wet = scene.gravity * std::max(1.0 - lift / line.totalMass(), 0.05);
   const double w1 = std::sqrt(std::max(g_wet, 1e-3) / scene.length);
   model->addTerm(std::make_unique<MassDamping>(2.0 * w1));

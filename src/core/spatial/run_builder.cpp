@@ -117,26 +117,27 @@ std::unique_ptr<TopMotion3> buildTopMotion3(const TopMotionSpec& spec) {
 }
 
 std::shared_ptr<SpatialModel> buildSpatialModel(const Scene& scene) {
-  LineProperties props = scene.line;
-  props.content_mass_per_length = scene.internal_fluid.density * props.internalArea();
-  auto model = std::make_shared<SpatialModel>(scene.length, scene.elements, props, scene.options, scene.end_mass,
+  auto model = std::make_shared<SpatialModel>(lineSections(scene), scene.stiffeners, scene.options, scene.end_mass,
                                               Vec3(0.0, 0.0, -scene.gravity));
   model->setBottom(scene.bottom, scene.bottom_point3);
   // Only the terms the scene needs (as the planar buildModel).
   if (scene.gravity != 0.0) model->addTerm(std::make_unique<Gravity>());
   if (scene.options.axial_flexibility) model->addTerm(std::make_unique<AxialSpring>());
-  if (scene.options.bending && (scene.line.EI > 0.0 || scene.line.bending_damping > 0.0))
-    model->addTerm(std::make_unique<BendingSpring>());
+  if (scene.options.bending && model->line().hasBending()) model->addTerm(std::make_unique<BendingSpring>());
   if (scene.water.enabled) {  // the sea's terms, as the planar buildModel builds them
     const Water3 water(scene.water, model->gravity());
     if (scene.gravity != 0.0) model->addTerm(std::make_unique<Buoyancy3>(water));
     const HydroSpec& h = scene.hydro;
-    if (h.enabled && (h.drag_normal > 0.0 || h.drag_tangential > 0.0))
+    bool section_drag = false;
+    for (const LineSection& s : scene.sections) section_drag = section_drag || s.hydro.drag_normal > 0.0 || s.hydro.drag_tangential > 0.0;
+    if (h.enabled && (h.drag_normal > 0.0 || h.drag_tangential > 0.0 || section_drag))
       model->addTerm(std::make_unique<MorisonDrag3>(water, h.drag_tangential, h.drag_normal));
     if (h.enabled && water.moving())
       model->addTerm(std::make_unique<FroudeKrylov3>(water, h.inertia_coefficient, 1.0 + h.axial_added_mass));
-    if (h.enabled && (h.inertia_coefficient != 1.0 || h.axial_added_mass != 0.0))
-      model->addTerm(std::make_unique<AddedMassTerm>(water, h.inertia_coefficient - 1.0, h.axial_added_mass));
+    const bool section_mass = sectionsAddMass(scene);
+    if (h.enabled && (h.inertia_coefficient != 1.0 || h.axial_added_mass != 0.0 || section_mass))
+      model->addTerm(std::make_unique<AddedMassTerm>(water, h.inertia_coefficient - 1.0, h.axial_added_mass,
+                                                     section_mass));
   }
   if (scene.seabed.enabled) model->addTerm(std::make_unique<Seabed3>(scene.seabed, model->gravity()));
   if (!scene.attachments.empty()) {  // as the planar buildModel

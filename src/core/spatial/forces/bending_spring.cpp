@@ -31,9 +31,9 @@ void BendingSpring::addForces(const SpatialModel& model, const Kinematics3& kin,
 }
 
 double BendingSpring::addForcesAndPower(const SpatialModel& model, const Kinematics3& kin, double, VecX& Q) const {
-  const double k = model.bendingStiffness(), c = model.bendingDamping();
   double p = 0.0;
   for (int i = 1; i < model.bodies(); ++i) {
+    const double k = model.bendingStiffness(i), c = model.bendingDamping(i);
     const Vec3& a = kin[i - 1].e;
     const Vec3& b = kin[i].e;
     double* qa = Q.data() + kDofPerBody3 * (i - 1);
@@ -71,14 +71,14 @@ double BendingSpring::potentialEnergy(const SpatialModel& model, const Kinematic
   double v = 0.0;
   for (int i = 1; i < model.bodies(); ++i) {
     const double theta = angle(kin[i - 1].e, kin[i].e);
-    v += 0.5 * model.bendingStiffness() * theta * theta;
+    v += 0.5 * model.bendingStiffness(i) * theta * theta;
   }
   return v;
 }
 
 double BendingSpring::power(const SpatialModel& model, const Kinematics3& kin, double) const {
   double p = 0.0;
-  for (int i = 1; i < model.bodies(); ++i) p -= model.bendingDamping() * (kin[i].omega() - kin[i - 1].omega()).squaredNorm();
+  for (int i = 1; i < model.bodies(); ++i) p -= model.bendingDamping(i) * (kin[i].omega() - kin[i - 1].omega()).squaredNorm();
   return p;
 }
 
@@ -99,9 +99,9 @@ Mat3 cross(const Vec3& a) {
 // C_ba = c_d [b]×[a]×, and through e (not symmetric): K_bb = c_d [b]×[b']× - [τ]×, K_aa = c_d [a]×[a']× + [τ]×,
 // K_ba = -c_d [b]×[a']×, K_ab = -c_d [a]×[b']×.
 void BendingSpring::addStiffness(const SpatialModel& model, const Kinematics3& kin, double, SpatialStiffness& S) const {
-  const double k = model.bendingStiffness(), c = model.bendingDamping();
   const Mat3 I3 = Mat3::Identity();
   for (int i = 1; i < model.bodies(); ++i) {
+    const double k = model.bendingStiffness(i), c = model.bendingDamping(i);
     const Vec3& a = kin[i - 1].e;
     const Vec3& b = kin[i].e;
     const double theta = angle(a, b);

@@ -4,26 +4,26 @@ namespace riser_sim {
 namespace spatial {
 
 namespace {
-// ρ_w |g| A_w [N/m]: the lift per submerged length.
-double liftPerLength(const SpatialModel& model, const Water3& water) {
-  return water.spec().density * model.line().line().externalArea() * model.gravity().norm();
+// ρ_w |g| A_w [N/m]: the lift per submerged length of part p of rfe i (its section's displaced area).
+double liftPerLength(const SpatialModel& model, const Water3& water, int i, int p) {
+  return water.spec().density * model.line().partSection(i, p).props.externalArea() * model.gravity().norm();
 }
 }  // namespace
 
 void Buoyancy3::addForces(const SpatialModel& model, const Kinematics3& kin, double, VecX& Q) const {
-  const double f = liftPerLength(model, water_);
   for (int i = 0; i < model.bodies(); ++i)
     for (int p = 0; p < 2; ++p) {
+      const double f = liftPerLength(model, water_, i, p);
       const WetPart3 w = wetPart3(model.line(), kin[i], i, p, water_);
       if (w.length > 0.0) addPointForce(kin[i], w.s0, w.kappa, (f * w.length) * water_.up(), Q.data() + kDofPerBody3 * i);
     }
 }
 
 double Buoyancy3::potentialEnergy(const SpatialModel& model, const Kinematics3& kin, double) const {
-  const double f = liftPerLength(model, water_);
   double v = 0.0;
   for (int i = 0; i < model.bodies(); ++i)
     for (int p = 0; p < 2; ++p) {
+      const double f = liftPerLength(model, water_, i, p);
       const WetPart3 w = wetPart3(model.line(), kin[i], i, p, water_);
       if (w.length > 0.0) v -= f * w.length * water_.height(kin[i].point(w.s0, w.kappa));
     }
@@ -33,8 +33,8 @@ double Buoyancy3::potentialEnergy(const SpatialModel& model, const Kinematics3& 
 // Q = [F; κ e·F; s F] with F constant: -∂Q_Δ/∂e = -κ Fᵀ, -∂Q_e/∂Δ = -κ F.
 void Buoyancy3::addStiffness(const SpatialModel& model, const Kinematics3& kin, double, SpatialStiffness& S) const {
   if (!model.options().axial_flexibility) return;
-  const double f = liftPerLength(model, water_);
   for (int i = 0; i < model.bodies(); ++i) {
+    const double f = liftPerLength(model, water_, i, 1);
     const WetPart3 w = wetPart3(model.line(), kin[i], i, 1, water_);  // part 0 has κ = 0
     if (!(w.length > 0.0)) continue;
     const Vec3 F = (f * w.length) * water_.up();

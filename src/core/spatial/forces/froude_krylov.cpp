@@ -5,7 +5,6 @@ namespace spatial {
 
 double FroudeKrylov3::sweep(const SpatialModel& model, const Kinematics3& kin, double t, VecX* Q) const {
   if (!water_.moving()) return 0.0;
-  const double rhoA = water_.spec().density * model.line().line().externalArea();
   double pw = 0.0;
   for (int i = 0; i < model.bodies(); ++i)
     for (int p = 0; p < 2; ++p) {
@@ -14,8 +13,12 @@ double FroudeKrylov3::sweep(const SpatialModel& model, const Kinematics3& kin, d
       if (!(w.length > 0.0)) continue;
       Vec3 vw, aw;
       water_.at(b.point(w.s0, w.kappa), t, vw, aw);
+      const LineSection& sec = model.line().partSection(i, p);
+      const double rhoA = water_.spec().density * sec.props.externalArea();
+      const double cm_n = orLine(sec.hydro.inertia_coefficient, cm_n_);
+      const double cm_t = 1.0 + orLine(sec.hydro.axial_added_mass, cm_t_ - 1.0);
       const Vec3 along = b.e.dot(aw) * b.e;
-      const Vec3 F = (rhoA * w.length) * (cm_n_ * (aw - along) + cm_t_ * along);
+      const Vec3 F = (rhoA * w.length) * (cm_n * (aw - along) + cm_t * along);
       if (Q) addPointForce(b, w.s0, w.kappa, F, Q->data() + kDofPerBody3 * i);
       pw += F.dot(b.velocity(w.s0, w.kappa));
     }
