@@ -13,6 +13,24 @@ import time
 
 from .keep import KeepSpec
 
+try:  # Linux: a CLI process dies with the thread that waits for it (a killed worker, a closed cluster)
+    import ctypes
+    import signal
+    _LIBC = ctypes.CDLL(None, use_errno=True)
+    _PR_SET_PDEATHSIG = 1
+except (OSError, AttributeError):
+    _LIBC = None
+
+
+def _die_with_parent(parent):
+    """preexec_fn: SIGKILL when the starting thread ends; the thread waits for the process, so only the
+    worker's death or shutdown ends it early."""
+    if _LIBC is not None:
+        _LIBC.prctl(_PR_SET_PDEATHSIG, signal.SIGKILL)
+        if os.getppid() != parent:
+            os._exit(1)
+
+
 EXIT_STATUS = {0: "ok", 2: "refused", 3: "diverged", 4: "failed"}
 
 
@@ -53,7 +71,9 @@ def run_case(task):
         out_path, err_path = os.path.join(tmp, "stdout"), os.path.join(tmp, "stderr")
         t0 = time.monotonic()
         with open(out_path, "wb") as out, open(err_path, "wb") as err:
-            p = subprocess.Popen(cmd, stdout=out, stderr=err, stdin=subprocess.DEVNULL)
+            parent = os.getpid()
+            p = subprocess.Popen(cmd, stdout=out, stderr=err, stdin=subprocess.DEVNULL,
+                                 preexec_fn=lambda: _die_with_parent(parent))
             _, wstatus, usage = os.wait4(p.pid, 0)
             p.returncode = os.waitstatus_to_exitcode(wstatus)
         wall = time.monotonic() - t0
