@@ -52,6 +52,9 @@ struct RunOutputs {
   AlignedVector<Vec3> bending_moment_vector;
   std::vector<double> bending_moment;
   std::vector<double> curvature;
+  // Per attachment (scene order, attachment.h): its centre [m] and the force on it, its weight included and its
+  // inertia not [N]. Empty without attachments.
+  AlignedVector<Vec3> attachment_points, attachment_forces;
 };
 
 // Every field of o is finite (what may be published).

@@ -154,6 +154,12 @@ int main(int argc, char** argv) {
     if (run->bottomMoves())
       j.add("x_bottom", last.bottom_point.x()).add("y_bottom", last.bottom_point.y()).add("z_bottom", last.bottom_point.z());
     if (run->hasTorsion()) j.add("top_twist", last.top_twist);
+    for (size_t k = 0; k < last.attachment_points.size(); ++k) {  // attachments (scene order), at the end
+      const std::string a = "attachment" + std::to_string(k);
+      j.add(a + "_name", scene.attachments[k].name);
+      xyz(j, a, last.attachment_points[k]);
+      xyz(j, a + "_force", last.attachment_forces[k]);
+    }
     j.add("tension_top", last.top_tension)
         .add("tension_max", last.max_tension)
         .add("max_constraint_error", run->maxConstraintError())

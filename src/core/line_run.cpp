@@ -4,8 +4,10 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "riser_sim/forces/attachments.h"
 #include "riser_sim/run_builder.h"
 #include "riser_sim/spatial/external_motion3.h"
+#include "riser_sim/spatial/forces/attachments.h"
 #include "riser_sim/spatial/forces/bending_spring.h"
 #include "riser_sim/spatial/joint_bending.h"
 #include "riser_sim/spatial/rfe_frames.h"
@@ -34,7 +36,7 @@ bool allFinite(const RunOutputs& o) {
     if (!std::isfinite(x)) return false;
   return finite3(o.springs) && finite3(o.points) && finite3(o.bending_moment_vector) && finite(o.axial_force) &&
          finite(o.elongations) && finite(o.arc_length) && finite(o.angles) && finite(o.bending_moment) &&
-         finite(o.curvature);
+         finite(o.curvature) && finite3(o.attachment_points) && finite3(o.attachment_forces);
 }
 
 namespace {
@@ -70,6 +72,12 @@ class PlanarLineRun : public LineRun {
     start_.end_force = inSpace(init.statics.end_force);
     if (inputs.top) motion_ = static_cast<ExternalMotion*>(&sim_.topMotion());
     sizeOutputs(out_, sim_.model().bodies(), true);
+    attachments_ = dynamic_cast<const Attachments*>(sim_.model().findTerm("attachments"));
+    if (attachments_) {
+      out_.attachment_points.assign(attachments_->count(), Vec3::Zero());
+      out_.attachment_forces.assign(attachments_->count(), Vec3::Zero());
+      kin_.resize(sim_.model().bodies());
+    }
   }
   bool spatial() const override { return false; }
   bool step() override { return sim_.step(); }
@@ -107,6 +115,13 @@ class PlanarLineRun : public LineRun {
       out_.bending_moment_vector[j] = Vec3(0.0, -o.bending_moment[j], 0.0);
       // joint j (between rfes j and j+1) bends segment j
       out_.curvature[j] = std::abs(o.angles[j + 1] - o.angles[j]) / model.segmentLength(static_cast<int>(j));
+    }
+    if (attachments_) {
+      sim_.kinematics(kin_);
+      for (int k = 0; k < attachments_->count(); ++k) {
+        out_.attachment_points[k] = inSpace(attachments_->position(kin_, k));
+        out_.attachment_forces[k] = inSpace(attachments_->force(model, kin_, o.t, k));
+      }
     }
     out_.energy_drift = sim_.energyDrift();
     return out_;
@@ -154,6 +169,8 @@ class PlanarLineRun : public LineRun {
   Simulator& sim_;
   ExternalMotion* motion_ = nullptr;  // a live top, owned by sim_
   RunOutputs out_;
+  const Attachments* attachments_ = nullptr;  // the scene's attachments' term (or none)
+  Kinematics kin_;  // the state's, for the attachments' outputs
 };
 
 class SpatialLineRun : public LineRun {
@@ -181,6 +198,12 @@ class SpatialLineRun : public LineRun {
     sizeOutputs(out_, nb, false);
     for (int i = 0; i < nb; ++i) out_.arc_length[i] = model.rfe(i).s_begin + 0.5 * model.rfe(i).length;
     kin_.resize(nb);
+    for (const auto& term : model.terms())
+      if (const auto* a = dynamic_cast<const spatial::Attachments3*>(term.get())) attachments_ = a;
+    if (attachments_) {
+      out_.attachment_points.assign(attachments_->count(), Vec3::Zero());
+      out_.attachment_forces.assign(attachments_->count(), Vec3::Zero());
+    }
   }
   bool spatial() const override { return true; }
   bool step() override { return run_.step(); }
@@ -225,6 +248,11 @@ class SpatialLineRun : public LineRun {
     }
     if (run_.model().hasBendingAxes()) addAxesMoments(sim, kin);
     fillFrames(sim, kin);
+    if (attachments_)
+      for (int k = 0; k < attachments_->count(); ++k) {
+        out_.attachment_points[k] = attachments_->position(kin, k);
+        out_.attachment_forces[k] = attachments_->force(run_.model(), kin, o.t, k);
+      }
     out_.energy_drift = run_.energyDrift();
     return out_;
   }
@@ -332,6 +360,7 @@ class SpatialLineRun : public LineRun {
   RunOutputs out_;
   spatial::LineFrames line_frames_;
   spatial::Kinematics3 kin_;  // of the last outputs()
+  const spatial::Attachments3* attachments_ = nullptr;  // the scene's attachments' term (or none)
 };
 
 }  // namespace
