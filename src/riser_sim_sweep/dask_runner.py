@@ -126,7 +126,8 @@ def run_tasks(client, fn, items, on_result, guard, label):
             else:
                 exc = fut.exception()
                 name = type(exc).__name__
-                why = ("its worker died %s times running it" % "several") if name == "KilledWorker" else str(exc)
+                why = ("its worker died every time it ran (distributed.scheduler.allowed-failures)"
+                       if name == "KilledWorker" else str(exc))
                 result = {"case_id": tag.case_id, "status": "failed", "reason": "%s: %s" % (name, why),
                           "values": {}}
             with guard.hold():

@@ -126,7 +126,8 @@ def load_sweep(path):
             raise SweepError("duration: expected a number of seconds >= 0, got %r" % (duration,))
         duration = float(duration)
     base = doc.get("set") or {}
-    check_keys("set", base, set(base))
+    if not isinstance(base, dict):
+        raise SweepError("set: expected a mapping {scene key: value}")
     for k in base:
         override_key("set", k)
     grid = {}

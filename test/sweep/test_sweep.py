@@ -197,7 +197,6 @@ class Sweep(unittest.TestCase):
         workers = [self.start(["/usr/bin/dask-worker", addr, "--nthreads", "1", "--no-dashboard", "--no-nanny",
                                "--name", "w%d" % i], os.path.join(self.tmp, "w%d.log" % i), start_new_session=True)
                    for i in range(2)]
-        from distributed import Client
         c = wait_for(lambda: self._try_client(addr), 60, "the scheduler at %s" % addr, step=0.2)
         try:
             wait_for(lambda: len(c.scheduler_info()["workers"]) == 2, 60, "2 workers", step=0.1)
