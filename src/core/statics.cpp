@@ -243,15 +243,16 @@ std::string currentLimit(const Model& model, const StaticsProblem& p, const Stat
 
 }  // namespace
 
-// The continuation in the attachments' loads (StaticTerms::scaleAttachments): from none (solved by `start`) up
-// to the scene's in steps (from the last state: Newton stays on the path) halved when Newton fails; the end is
-// checked as any solution (its stability included). failure: empty on success.
-template <class Start>
-Attempt rampAttachments(const Model& model, const StaticsProblem& problem, StaticTerms& terms, StaticResidual& F,
-                        double t, Budget& budget, Start&& start) {
+// A continuation in loads (scale(s): the attachments' loads, StaticTerms::scaleAttachments, or the buoyancy,
+// scaleBuoyancy): from none (solved by `start`) up to the scene's in steps (from the last state: Newton stays on
+// the path) halved when Newton fails; the end is checked as any solution (its stability included). failure:
+// empty on success.
+template <class Start, class Scale>
+Attempt rampLoads(const Model& model, const StaticsProblem& problem, StaticTerms& terms, StaticResidual& F,
+                  double t, Budget& budget, Start&& start, Scale&& scale, const std::string& what) {
   StaticsProblem loose = problem;
   loose.tolerance = std::max(problem.tolerance, 1e-6);
-  terms.scaleAttachments(0.0);
+  scale(0.0);
   std::string none_failures;
   Attempt c = start(loose, none_failures);
   double s = 0.0, step = 0.25;
@@ -259,18 +260,18 @@ Attempt rampAttachments(const Model& model, const StaticsProblem& problem, Stati
   if (c.converged) {
     while (s < 1.0 && step > 1e-3 && !budget.out) {
       const double next = std::min(s + step, 1.0);
-      terms.scaleAttachments(next);
+      scale(next);
       VecX x = c.x;
       int it = 0;
       double r = INFINITY;
-      budget.stage = "with the attachments' loads ramped up, at " + std::to_string(next) + " of them";
+      budget.stage = "with " + what + " ramped up, at " + std::to_string(next) + " of the scene's";
       const bool ok = newton(F, x, next < 1.0 ? loose : problem, it, r, budget);
       c.iterations += it;
       if (ok) c.x = x, c.residual = r, s = next, step = std::min(2.0 * step, 0.5);
       else step *= 0.5;
     }
   }
-  terms.scaleAttachments(1.0);
+  scale(1.0);
   std::ostringstream o;
   if (!c.converged) {
     o << "(without them: " << none_failures << ")";
@@ -409,11 +410,20 @@ StaticsResult solveStatics(const Model& model, const StaticsProblem& problem, do
   if (!a.failure.empty() && problem.continuation && terms.hasAttachments() && !budget.out) {
     // Continuation in the attachments (buoys and clumps can pull Newton onto a folded balance): the line
     // without their loads, then the loads ramped up along the path of stable equilibria.
-    const Attempt c = rampAttachments(model, problem, terms, F, t, budget, [&](const StaticsProblem& p, std::string& f) {
-      return attempts(p, false, f);
-    });
+    const Attempt c = rampLoads(
+        model, problem, terms, F, t, budget, [&](const StaticsProblem& p, std::string& f) { return attempts(p, false, f); },
+        [&](double s) { terms.scaleAttachments(s); }, "the attachments' loads");
     if (c.failure.empty()) a = c;
     else failures += "; with the attachments' loads ramped up from none " + c.failure;
+  }
+  if (!a.failure.empty() && problem.continuation && terms.hasBuoyantSection() && !budget.out) {
+    // Continuation in the buoyancy (a lazy wave's buoyant section pulls Newton from the catenary guess onto an
+    // upturned balance): the line without lift, heavy everywhere, then the lift ramped up to the water's.
+    const Attempt c = rampLoads(
+        model, problem, terms, F, t, budget, [&](const StaticsProblem& p, std::string& f) { return attempts(p, false, f); },
+        [&](double s) { terms.scaleBuoyancy(s); }, "the buoyancy");
+    if (c.failure.empty()) a = c;
+    else failures += "; with the buoyancy ramped up from none " + c.failure;
   }
   res.converged = a.failure.empty();
   res.iterations = a.iterations;

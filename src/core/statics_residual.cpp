@@ -4,6 +4,7 @@
 
 #include "riser_sim/chain_kinematics.h"
 #include "riser_sim/forces/attachments.h"
+#include "riser_sim/forces/buoyancy.h"
 #include "riser_sim/forces/morison_drag.h"
 #include "riser_sim/forces/seabed.h"
 
@@ -19,6 +20,8 @@ StaticTerms::StaticTerms(const Model& model, double t) : model_(model), t_(t) {
   terms_ = original_;
   for (size_t k = 0; k < original_.size(); ++k)
     if (dynamic_cast<const Attachments*>(original_[k])) attachments_ = int(k);
+  for (size_t k = 0; k < original_.size(); ++k)
+    if (dynamic_cast<const Buoyancy*>(original_[k])) buoyancy_ = int(k);
   const WaterSpec* w = nullptr;
   for (const auto& term : model.terms())
     if (const auto* d = dynamic_cast<const MorisonDrag*>(term.get())) w = &d->water().spec();
@@ -51,6 +54,28 @@ void StaticTerms::scaleAttachments(double factor) {
   }
   owned_.push_back(a->scaled(factor));
   terms_[attachments_] = owned_.back().get();
+}
+
+void StaticTerms::scaleBuoyancy(double factor) {
+  if (buoyancy_ < 0) return;
+  if (factor == 1.0) {
+    terms_[buoyancy_] = original_[buoyancy_];
+    return;
+  }
+  WaterSpec w = static_cast<const Buoyancy*>(original_[buoyancy_])->water();
+  w.density *= factor;
+  owned_.push_back(std::make_unique<Buoyancy>(w));
+  terms_[buoyancy_] = owned_.back().get();
+}
+
+bool StaticTerms::hasBuoyantSection() const {
+  if (buoyancy_ < 0) return false;
+  const double rho = static_cast<const Buoyancy*>(original_[buoyancy_])->water().density;
+  for (int k = 0; k < model_.sectionCount(); ++k) {
+    const LineProperties& p = model_.section(k).props;
+    if (rho * p.externalArea() > p.mass_per_length + p.content_mass_per_length) return true;
+  }
+  return false;
 }
 
 double StaticTerms::seabedLevel() const {

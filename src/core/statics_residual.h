@@ -25,6 +25,10 @@ class StaticTerms {
   // The attachments' loads x factor (Attachments::scaled: their weight included), for the continuation in them.
   void scaleAttachments(double factor);
   bool hasAttachments() const { return attachments_ >= 0; }
+  // The buoyancy x factor (the water's density in it), for the continuation in the lift of buoyant sections.
+  void scaleBuoyancy(double factor);
+  // The buoyancy's term lifts some line section more than it weighs (a lazy wave's modules).
+  bool hasBuoyantSection() const;
   bool hasCurrent() const { return has_current_; }
   double currentFactor() const { return current_factor_; }  // some term sees a non-zero steady current
 
@@ -34,6 +38,7 @@ class StaticTerms {
   bool has_current_ = false;
   double current_factor_ = 1.0;
   int attachments_ = -1;  // index of the attachments' term
+  int buoyancy_ = -1;     // index of the buoyancy's term
   std::vector<std::unique_ptr<ForceTerm>> owned_;
   std::vector<const ForceTerm*> terms_;
   std::vector<const ForceTerm*> original_;

@@ -16,6 +16,7 @@ class Buoyancy : public ForceTerm {
   bool addStiffness(const Model& model, const TermData*, const Kinematics& kin, double t, StiffnessBlocks& S) const override;
   double potentialEnergy(const Model& model, const TermData*, const Kinematics& kin) const override;
   double power(const Model&, const TermData*, const Kinematics&, double) const override { return 0.0; }  // conservative
+  const WaterSpec& water() const { return water_; }
 
  private:
   double liftPerLength(const Model& model, int i, int p) const;
