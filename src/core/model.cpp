@@ -9,8 +9,8 @@ namespace riser_sim {
 
 Model::Model(double length, int segments, const LineProperties& props, const ModelOptions& options,
              double end_mass, double gravity)
-    : Model(std::vector<LineSection>{LineSection{length, segments, props, SectionHydro(), BuoyancyModules()}}, {}, options, end_mass,
-            gravity) {}
+    : Model(std::vector<LineSection>{LineSection{length, segments, props, SectionHydro(), BuoyancyModules()}}, {},
+            options, end_mass, gravity) {}
 
 Model::Model(const std::vector<LineSection>& sections, const std::vector<BendStiffener>& stiffeners,
              const ModelOptions& options, double end_mass, double gravity)

@@ -14,7 +14,8 @@ namespace riser_sim {
 
 std::vector<LineSection> lineSections(const Scene& scene) {
   std::vector<LineSection> sections = scene.sections;
-  if (sections.empty()) sections.push_back(LineSection{scene.length, scene.elements, scene.line, SectionHydro(), BuoyancyModules()});
+  if (sections.empty())
+    sections.push_back(LineSection{scene.length, scene.elements, scene.line, SectionHydro(), BuoyancyModules()});
   for (LineSection& s : sections)
     s.props.content_mass_per_length = scene.internal_fluid.density * s.props.internalArea();
   return sections;

@@ -129,7 +129,8 @@ std::shared_ptr<SpatialModel> buildSpatialModel(const Scene& scene) {
     if (scene.gravity != 0.0) model->addTerm(std::make_unique<Buoyancy3>(water));
     const HydroSpec& h = scene.hydro;
     bool section_drag = false;
-    for (const LineSection& s : scene.sections) section_drag = section_drag || s.hydro.drag_normal > 0.0 || s.hydro.drag_tangential > 0.0;
+    for (const LineSection& s : scene.sections)
+      section_drag = section_drag || s.hydro.drag_normal > 0.0 || s.hydro.drag_tangential > 0.0;
     if (h.enabled && (h.drag_normal > 0.0 || h.drag_tangential > 0.0 || section_drag))
       model->addTerm(std::make_unique<MorisonDrag3>(water, h.drag_tangential, h.drag_normal));
     if (h.enabled && water.moving())

@@ -27,7 +27,9 @@ class AddedMassTerm : public SpatialForceTerm {
 
  private:
   double sweep(const SpatialModel& model, const Kinematics3& kin, bool energy) const;
-  double caN(const LineSection& s) const { return std::isnan(s.hydro.inertia_coefficient) ? ca_n_ : s.hydro.inertia_coefficient - 1.0; }
+  double caN(const LineSection& s) const {
+    return std::isnan(s.hydro.inertia_coefficient) ? ca_n_ : s.hydro.inertia_coefficient - 1.0;
+  }
   double caT(const LineSection& s) const { return orLine(s.hydro.axial_added_mass, ca_t_); }
   Water3 water_;
   double ca_n_, ca_t_;
