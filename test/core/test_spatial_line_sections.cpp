@@ -4,7 +4,8 @@
 // - energy balance E - E0 = W of a sectioned line with damping and a moving top, planar and 3D;
 // - the planar statics of a sectioned line in water is an equilibrium of the 3D model to the digits the two
 //   engines agree on for a uniform line (test_spatial_planar: 1e-9 m), and sections all equal give the
-//   uniform line's 3D equilibrium to round-off.
+//   uniform line's 3D equilibrium to round-off;
+// - a sectioned line's steps allocate nothing, in both engines.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -18,6 +19,7 @@
 #include "spatial_force_checks.h"
 #include "spatial_test_util.h"
 #include "validation_util.h"
+#include "alloc_counter.h"
 
 namespace riser_sim {
 namespace {
@@ -173,6 +175,32 @@ TEST(SpatialLineSections, EqualSectionsAreTheUniformLine3D) {
   double diff = 0.0;
   for (size_t i = 0; i < ku.size(); ++i) diff = std::max(diff, (ku[i].A - ke[i].A).norm());
   EXPECT_LT(diff, 1e-12 * u.length);  // the same arithmetic but for the energy scale's sum
+}
+
+// The per-step path reads the per-part sections and per-joint springs the Model resolved at construction.
+TEST(SpatialLineSections, StepsAllocateNothing) {
+  Scene s = sectionedScene(SpaceKind::kSpatial);
+  s.bottom = BottomBoundary::kFree;
+  s.water.current.velocity = Vec2(0.5, 0.0);
+  const auto m = buildSpatialModel(s);
+  std::vector<Vec3> dirs(m->bodies(), Vec3(0.3, 0.2, -1.0));
+  SpatialSimulator sim(m, std::make_unique<PlanarMotion3>(spatial_test::topSway(Vec2(0.5, 0.3), 1.0)),
+                       IntegratorKind::kRk4);
+  sim.reset(rigidChain(m->line(), Vec3::Zero(), dirs, Vec3::Zero(), Vec3::Zero()), 0.0);
+  ASSERT_TRUE(sim.step(1e-4));
+  long before = g_allocations.load();
+  for (int k = 0; k < 50; ++k) ASSERT_TRUE(sim.step(1e-4));
+  EXPECT_EQ(g_allocations.load() - before, 0) << "3D";
+  Scene p = sectionedScene(SpaceKind::kPlanar);
+  p.top.type = MotionKind::kSinusoid;
+  p.top.amplitude = Vec2(1.0, 0.5);
+  p.solver.integrator = IntegratorKind::kRk4;
+  p.solver.dt = 1e-4;
+  auto sim2 = buildSimulator(p);
+  ASSERT_TRUE(sim2->step());
+  before = g_allocations.load();
+  for (int k = 0; k < 50; ++k) ASSERT_TRUE(sim2->step());
+  EXPECT_EQ(g_allocations.load() - before, 0) << "planar";
 }
 
 }  // namespace
