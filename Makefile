@@ -4,27 +4,31 @@ ROOT := $(abspath .)
 WS := $(ROOT)/.ws
 SETUP := set +u; source $(WS)/devel/setup.bash
 
-.PHONY: deps fuzz-deps build check test test-sanitize fuzz fuzz-replay sim bench bench-baseline soak many_risers figures demo modes clean
+.PHONY: deps fuzz-deps build check test format test-sanitize fuzz fuzz-replay sim bench bench-baseline soak many_risers figures demo modes clean
 
 deps:
-	@scripts/install_deps.sh
+	@tools/install_deps.sh
 
 build: deps
-	@scripts/build.sh -j2 all riser_sim_benches
+	@tools/build.sh -j2 all riser_sim_benches
 
 # The edit-test loop: build the core + CLI without catkin and run their gtests (~2 min cold, seconds after).
 # CHECK_ARGS go to ctest, e.g. make check CHECK_ARGS='-R statics'.
 check: deps
-	@scripts/check.sh $(CHECK_ARGS)
+	@tools/check.sh $(CHECK_ARGS)
 
 # Every test: gtests, rostests, the core's gtests under sanitizers (docs/hardening.md). The fuzzer's seeds and
 # regressions replay as gtests; RISER_SIM_FUZZ_SECONDS=30 make test adds a fuzz run.
 test: deps
-	@scripts/test.sh
+	@tools/test.sh
+
+# Applies .clang-format (clang-format 14) to every C++ file; make test fails on a file that differs.
+format: deps
+	@tools/format.sh
 
 # The core's and the CLI's gtests under ASan + UBSan (part of `make test` too; docs/hardening.md).
 test-sanitize: deps
-	@scripts/test_sanitize.sh
+	@tools/test_sanitize.sh
 
 # libFuzzer on the scene loader for FUZZ_SECONDS (default 120); crashers -> out/fuzz/crashers.
 FUZZ_SECONDS ?= 120
@@ -69,10 +73,10 @@ modes: build
 
 # The paper's section 4 runs and plots -> out/figures/*.csv, *.png, numbers.txt (docs/figures.md).
 figures: build
-	@RISER_SIM_WS=$(WS) scripts/figures.sh
+	@RISER_SIM_WS=$(WS) tools/figures.sh
 
 demo:
-	@scripts/demo.sh
+	@tools/demo.sh
 
 clean:
 	rm -rf $(WS) out

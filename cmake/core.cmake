@@ -89,7 +89,7 @@ add_library(riser_sim_core
 )
 target_include_directories(riser_sim_core PUBLIC include ${EIGEN3_INCLUDE_DIR})
 target_link_libraries(riser_sim_core PUBLIC yaml-cpp)
-# The stepping code at -O3 whatever the build type, except the sanitizer build (scripts/test_sanitize.sh:
+# The stepping code at -O3 whatever the build type, except the sanitizer build (tools/test_sanitize.sh:
 # its -O1 must win; -O3 under ASan compiled the core ~1.8x slower).
 set(RISER_SIM_OPT $<$<NOT:$<CONFIG:Sanitize>>:-O3>)
 target_compile_options(riser_sim_core PRIVATE ${RISER_SIM_OPT} -fno-semantic-interposition)
@@ -119,7 +119,7 @@ if(CATKIN_ENABLE_TESTING)
   endif()
   target_compile_definitions(riser_sim_test_pch PRIVATE RISER_SIM_SOURCE_DIR="${CMAKE_CURRENT_SOURCE_DIR}")
   # RISER_SIM_TEST_OPT: the test drivers' optimisation (after the build type's, so it wins), the core library
-  # keeping its own (scripts/test_sanitize.sh's RISER_SIM_SANITIZE_TEST_OPT). On the PCH target too: gcc and
+  # keeping its own (tools/test_sanitize.sh's RISER_SIM_SANITIZE_TEST_OPT). On the PCH target too: gcc and
   # clang refuse a PCH built at another optimisation level (__OPTIMIZE__).
   set(RISER_SIM_TEST_OPT "" CACHE STRING "Optimisation of the core's test drivers (empty: the build type's)")
   target_compile_options(riser_sim_test_pch PRIVATE ${RISER_SIM_TEST_OPT})
@@ -128,7 +128,7 @@ if(CATKIN_ENABLE_TESTING)
   file(GLOB RISER_SIM_CORE_TESTS ${CMAKE_CURRENT_SOURCE_DIR}/test/core/test_*.cpp)
   foreach(test_src ${RISER_SIM_CORE_TESTS})
     get_filename_component(test_name ${test_src} NAME_WE)
-    # RISER_SIM_TESTS (a list of test names) builds only those: the sanitizer build (scripts/test_sanitize.sh).
+    # RISER_SIM_TESTS (a list of test names) builds only those: the sanitizer build (tools/test_sanitize.sh).
     # RISER_SIM_SKIP_TESTS leaves those out (make test: the ones it runs under the sanitizers instead).
     if((RISER_SIM_TESTS AND NOT test_name IN_LIST RISER_SIM_TESTS) OR test_name IN_LIST RISER_SIM_SKIP_TESTS)
       continue()

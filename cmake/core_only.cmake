@@ -1,5 +1,5 @@
 # The ROS-free core, the CLI, the benches and their tests without catkin (RISER_SIM_CORE_ONLY=ON): make check
-# and the sanitizer build of scripts/test_sanitize.sh. cmake/core.cmake and cmake/cli.cmake are used as they are, with
+# and the sanitizer build of tools/test_sanitize.sh. cmake/core.cmake and cmake/cli.cmake are used as they are, with
 # catkin_add_gtest and catkin's directories supplied here.
 find_package(Eigen3 REQUIRED)
 find_package(yaml-cpp REQUIRED)

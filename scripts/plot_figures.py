@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Plots of the paper's section 4 runs (out/figures/*.csv from scripts/figures.sh) and the numbers
+"""Plots of the paper's section 4 runs (out/figures/*.csv from tools/figures.sh) and the numbers
 quoted in docs/figures.md (written to out/figures/numbers.txt)."""
 import os
 import sys

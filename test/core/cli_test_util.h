@@ -20,7 +20,7 @@
 #endif
 
 // RISER_SIM_ASAN: built with AddressSanitizer. gcc defines __SANITIZE_ADDRESS__; clang-14 (the sanitizer
-// build's compiler, scripts/test_sanitize.sh) does not, it has __has_feature(address_sanitizer).
+// build's compiler, tools/test_sanitize.sh) does not, it has __has_feature(address_sanitizer).
 #if defined(__SANITIZE_ADDRESS__)
 #define RISER_SIM_ASAN 1
 #elif defined(__has_feature)

@@ -4,7 +4,7 @@
 # riser_sim riser_sim.launch starts the node (a private roscore), (3) a downstream catkin package finds
 # riser_sim, includes the core's headers and links the core, (4) riser_sim_sweep runs a 2-case sweep. One
 # JUnit test case each (install/*.xml under the results folder $1). Exit 1 when any fails.
-# RISER_SIM_WS: the workspace (built first by scripts/build.sh); RISER_SIM_SKIP_TESTS as for the build.
+# RISER_SIM_WS: the workspace (built first by tools/build.sh); RISER_SIM_SKIP_TESTS as for the build.
 set -uo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 ws=${RISER_SIM_WS:-$root/.ws}
@@ -31,7 +31,7 @@ clean() {
 }
 
 start=$SECONDS
-RISER_SIM_SKIP_TESTS="${RISER_SIM_SKIP_TESTS:-}" "$root/scripts/build.sh" -j2 install >>"$log" 2>&1
+RISER_SIM_SKIP_TESTS="${RISER_SIM_SKIP_TESTS:-}" "$root/tools/build.sh" -j2 install >>"$log" 2>&1
 if [ $? -ne 0 ] || [ ! -f "$ws/install/setup.bash" ]; then
   record catkin_make_install 1 "catkin_make install failed (see $log)"
 else

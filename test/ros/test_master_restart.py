@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Master restart and security checks of riser_sim_node, outside rostest (the test kills and
 restarts the master, which rostest owns). Writes a JUnit file (one test case per check) for
-catkin_test_results; registered in cmake/node.cmake, run by scripts/test.sh.
+catkin_test_results; registered in cmake/node.cmake, run by tools/test.sh.
 
 On a private master (free port, temporary ROS_HOME): starts the node as the launch files do
 (ROS_HOSTNAME=localhost) with HOME, ROS_HOME and its working directory in empty temporary directories,

@@ -16,7 +16,7 @@ find "$pkg" -maxdepth 1 -xtype l -delete  # entries removed from the root
 cd "$ws"
 # ROS setup scripts read unset variables; keep -u off while sourcing them.
 set +u
-# RISER_SIM_SKIP_TESTS (space-separated core gtests not to build; scripts/test.sh) is passed every time, so
+# RISER_SIM_SKIP_TESTS (space-separated core gtests not to build; tools/test.sh) is passed every time, so
 # a later build without it builds them all again.
 skip=${RISER_SIM_SKIP_TESTS:-}
 catkin_make -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCMAKE_BUILD_TYPE=Release -DRISER_SIM_SKIP_TESTS="${skip// /;}" "$@"

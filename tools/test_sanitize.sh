@@ -5,13 +5,13 @@
 # faster than -O2 and the tests ran no slower. RISER_SIM_SANITIZE_TEST_OPT (cmake/core.cmake's RISER_SIM_TEST_OPT)
 # sets the test drivers' level alone; default: the build's -O1. -O0 compiled them in 53 s of CPU instead of 143 s
 # but five of them ran in 70 s instead of 29 s (docs/hardening.md): not the default.
-# Compiler: clang++-14 (scripts/install_deps.sh installs it and its sanitizer runtime, libclang-rt-14-dev):
+# Compiler: clang++-14 (tools/install_deps.sh installs it and its sanitizer runtime, libclang-rt-14-dev):
 # under ASan it compiles the core in less CPU than gcc (docs/hardening.md). Without a clang that can link a
 # sanitized program, g++ (with a message). RISER_SIM_SANITIZE_CXX names the compiler (e.g. g++).
-#   scripts/test_sanitize.sh [RESULTS_DIR]
+#   tools/test_sanitize.sh [RESULTS_DIR]
 # Writes one JUnit XML per test binary to RESULTS_DIR (sanitize-<test>.xml; a binary stopped by a
 # sanitizer gets a failing one), prints "N passed, N failed" and exits non-zero on any failure.
-# RISER_SIM_SANITIZE_TESTS: the test binaries built and run (default: those of scripts/sanitize_tests.txt,
+# RISER_SIM_SANITIZE_TESTS: the test binaries built and run (default: those of tools/sanitize_tests.txt,
 # every test in them; `make test` builds the others in Release only). 'all' builds and runs every one with
 # the filter below.
 # RISER_SIM_SANITIZE_FILTER: gtest filter. With all binaries the default leaves out the long runs that only repeat per-step
@@ -40,7 +40,7 @@ mkdir -p "$build" && echo "$cxx" >"$build/.riser_sim_cxx"
 flags="${RISER_SIM_SANITIZE_OPT:--O1} -g1 -fno-omit-frame-pointer -D_GLIBCXX_ASSERTIONS"
 flags+=" -fsanitize=address,undefined -fno-sanitize-recover=all"
 
-default_tests=$(grep -v '^#' "$root/scripts/sanitize_tests.txt" | tr '\n' ' ')
+default_tests=$(grep -v '^#' "$root/tools/sanitize_tests.txt" | tr '\n' ' ')
 tests=${RISER_SIM_SANITIZE_TESTS:-$default_tests}
 [ "$tests" = all ] && tests=""
 cmake -S "$root" -B "$build" -DCMAKE_CXX_COMPILER="$cxx" -DRISER_SIM_CORE_ONLY=ON -DCMAKE_BUILD_TYPE=Sanitize -DRISER_SIM_TESTS="${tests// /;}" \
@@ -117,5 +117,5 @@ first=" test_extremes test_formulations_agree test_energy test_hydro_dynamics te
   done
 } | xargs -P "${RISER_SIM_SANITIZE_JOBS:-2}" -I{} bash -c 'run_one "$1"' _ {}
 rc=$?
-/usr/bin/python3 "$root/scripts/count_results.py" "$results" --line-only
+/usr/bin/python3 "$root/tools/count_results.py" "$results" --line-only
 [ $rc -eq 0 ] || exit 1

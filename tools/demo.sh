@@ -106,10 +106,10 @@ fi
 
 # ---- outside: deps, build, then the run under a virtual X server ----
 log "installing dependencies"
-RISER_SIM_GUI_DEPS=1 "$root/scripts/install_deps.sh"
+RISER_SIM_GUI_DEPS=1 "$root/tools/install_deps.sh"
 log "building in $RISER_SIM_WS"
-"$root/scripts/build.sh" -j2 >"$out/build.log" 2>&1 || { tail -n 40 "$out/build.log"; log "build failed (see $out/build.log)"; exit 1; }
-xvfb-run -a -s "-screen 0 ${W}x${H}x24" bash "$root/scripts/demo.sh" --in-xvfb
+"$root/tools/build.sh" -j2 >"$out/build.log" 2>&1 || { tail -n 40 "$out/build.log"; log "build failed (see $out/build.log)"; exit 1; }
+xvfb-run -a -s "-screen 0 ${W}x${H}x24" bash "$root/tools/demo.sh" --in-xvfb
 
 [ -s "$out/demo.bag" ] || { log "no bag was written"; exit 1; }
 [ -s "$out/demo.mp4" ] || { log "no video was written (see $out/ffmpeg.log)"; exit 1; }

@@ -8,9 +8,10 @@ PKGS=(build-essential cmake catkin ros-core-dev libroscpp-dev librostest-dev pyt
   python3-yaml python3-geometry-msgs python3-visualization-msgs python3-tf2-msgs python3-diagnostic-msgs
   python3-rostopic python3-rosservice python3-rosmaster python3-roslaunch
   libnodeletlib-dev libnodelet-dev libnodeletlib-tools pluginlib-dev libclass-loader-dev
-  clang-14 libclang-rt-14-dev python3-distributed)
-# clang-14 compiles the sanitizer build of make test (scripts/test_sanitize.sh) and the scene fuzzer (make
+  clang-14 libclang-rt-14-dev clang-format-14 python3-distributed)
+# clang-14 compiles the sanitizer build of make test (tools/test_sanitize.sh) and the scene fuzzer (make
 # fuzz); its ASan/UBSan/libFuzzer runtime is libclang-rt-14-dev, only recommended by clang-14.
+# clang-format-14: the code's format (.clang-format; tools/format.sh, checked by make test).
 # python3-distributed: riser_sim_sweep's Dask clusters (docs/sweep.md; it brings python3-dask).
 if [ "${RISER_SIM_GUI_DEPS:-0}" = 1 ]; then PKGS+=(rviz xvfb xauth ffmpeg); fi
 missing=()

@@ -6,11 +6,11 @@ set -uo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 ws=${RISER_SIM_WS:-$root/.ws}
 phase() { echo "time: $1 done at ${SECONDS} s"; }  # where CI's minutes go
-# The core gtests of scripts/sanitize_tests.txt run under the sanitizers below, not in Release (each test file
+# The core gtests of tools/sanitize_tests.txt run under the sanitizers below, not in Release (each test file
 # is compiled once); RISER_SIM_SANITIZE=0 builds and runs them all here.
 skip=""
-[ "${RISER_SIM_SANITIZE:-1}" != 0 ] && skip=$(grep -v '^#' "$root/scripts/sanitize_tests.txt" | tr '\n' ' ')
-RISER_SIM_SKIP_TESTS="$skip" "$root/scripts/build.sh" -j2 all tests || { echo "0 passed, 1 failed"; exit 1; }
+[ "${RISER_SIM_SANITIZE:-1}" != 0 ] && skip=$(grep -v '^#' "$root/tools/sanitize_tests.txt" | tr '\n' ' ')
+RISER_SIM_SKIP_TESTS="$skip" "$root/tools/build.sh" -j2 all tests || { echo "0 passed, 1 failed"; exit 1; }
 phase "catkin build"
 cd "$ws"
 # The sanitizer (and fuzzer) builds (~14 min of CPU) compile at the lowest priority while the tests below
@@ -18,7 +18,7 @@ cd "$ws"
 prebuild_pid=""
 if [ "${RISER_SIM_SANITIZE:-1}" != 0 ] || [ "${RISER_SIM_FUZZ_SECONDS:-0}" != 0 ]; then
   (
-    [ "${RISER_SIM_SANITIZE:-1}" != 0 ] && RISER_SIM_SANITIZE_BUILD_ONLY=1 nice -n 19 "$root/scripts/test_sanitize.sh"
+    [ "${RISER_SIM_SANITIZE:-1}" != 0 ] && RISER_SIM_SANITIZE_BUILD_ONLY=1 nice -n 19 "$root/tools/test_sanitize.sh"
     [ "${RISER_SIM_FUZZ_SECONDS:-0}" != 0 ] && nice -n 19 make -C "$root" --no-print-directory -j2 -f test/fuzz/Makefile build
   ) >"$ws/prebuild.log" 2>&1 &
   prebuild_pid=$!
@@ -42,7 +42,7 @@ phase "sanitizer and fuzzer builds"
 # next to catkin's, so the line below counts them. RISER_SIM_SANITIZE=0 skips this step.
 rc_san=0
 if [ "${RISER_SIM_SANITIZE:-1}" != 0 ]; then
-  "$root/scripts/test_sanitize.sh" "$ws/build/test_results/sanitize" >"$ws/test_sanitize.log" 2>&1
+  "$root/tools/test_sanitize.sh" "$ws/build/test_results/sanitize" >"$ws/test_sanitize.log" 2>&1
   rc_san=$?
   grep -E "^sanitize: |ERROR: |runtime error:" "$ws/test_sanitize.log" | head -n 40
   echo "sanitizers: $(tail -n 1 "$ws/test_sanitize.log") (see $ws/test_sanitize.log)"
@@ -69,13 +69,16 @@ if [ "$fuzz_s" != 0 ]; then
   echo "fuzz: $(grep -E "^Done [0-9]+ runs" "$ws/fuzz.log" | tail -n 1) (see $ws/fuzz.log)"
   phase "fuzz"
 fi
-/usr/bin/python3 "$root/scripts/count_results.py" build/test_results
+# The code's format (.clang-format): one JUnit case, failed naming the files that differ (make format fixes them).
+"$root/tools/format.sh" --check build/test_results/format | tail -n 21
+rc_fmt=${PIPESTATUS[0]}
+/usr/bin/python3 "$root/tools/count_results.py" build/test_results
 rc_count=$?
 catkin_test_results build/test_results >/dev/null 2>&1
 rc_res=$?
-if [ $rc_run -ne 0 ] || [ $rc_res -ne 0 ] || [ $rc_count -ne 0 ] || [ $rc_san -ne 0 ] || [ $rc_fuzz -ne 0 ]; then
+if [ $rc_run -ne 0 ] || [ $rc_fmt -ne 0 ] || [ $rc_res -ne 0 ] || [ $rc_count -ne 0 ] || [ $rc_san -ne 0 ] || [ $rc_fuzz -ne 0 ]; then
   echo "(see $ws/run_tests.log)"
-  /usr/bin/python3 "$root/scripts/count_results.py" build/test_results --line-only
+  /usr/bin/python3 "$root/tools/count_results.py" build/test_results --line-only
   exit 1
 fi
-/usr/bin/python3 "$root/scripts/count_results.py" build/test_results --line-only
+/usr/bin/python3 "$root/tools/count_results.py" build/test_results --line-only
