@@ -35,6 +35,15 @@ std::string usage() {
          "  --probe-rfe K       adds CSV columns x/y/z_rfeK (middle of rfe K, at the arc length\n"
          "                      of its axial spring) and tension_rfeK (axial force in rfe K) [N];\n"
          "                      K = 0..line.elements                               [repeatable]\n"
+         "  --range-graph FILE  range graph: per station along the line, the least and largest value\n"
+         "                      over every step of the run (the initial state included):\n"
+         "                      s,tension_min,tension_max,clearance_min,clearance_max,s_joint,\n"
+         "                      moment_min,moment_max,curvature_min,curvature_max; one row per rfe\n"
+         "                      (n + 1): s its middle's unstretched arc length from the top [m],\n"
+         "                      tension its axial force [N], clearance of its middle above the\n"
+         "                      seabed [m] (columns only with a seabed); s_joint [m], the bending\n"
+         "                      moment [N m] (planar signed, 3D its size) and curvature [1/m] of the\n"
+         "                      joint at the rfe's far end (empty on the last row)\n"
          "  --summary           print one JSON line with the results at the end (stdout)\n"
          "  --quiet             no progress text on stderr\n"
          "  --modes K           statics + the K lowest natural modes about it (table on stdout);\n"
@@ -97,6 +106,9 @@ CliOptions parseOptions(int argc, char** argv) {
       if (text.empty() || *end != '\0' || k < 0 || k > 1000000)
         throw UsageError("--probe-rfe: expected an rfe index >= 0, got '" + text + "'");
       o.probe_rfes.push_back(static_cast<int>(k));
+    } else if (arg == "--range-graph") {
+      o.range_graph = takeValue();
+      if (o.range_graph.empty()) throw UsageError("--range-graph: empty file name");
     } else if (arg == "--modes-csv") {
       o.modes_csv = takeValue();
       if (o.modes_csv.empty()) throw UsageError("--modes-csv: empty file name");

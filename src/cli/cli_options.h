@@ -19,6 +19,7 @@ struct CliOptions {
   int modes = 0;                       // --modes K: statics + lowest K natural modes (0: off)
   std::string modes_csv;               // --modes-csv FILE: mode shapes (needs --modes)
   std::vector<int> probe_rfes;         // --probe-rfe K: CSV columns of rfe K (checked against n later)
+  std::string range_graph;             // --range-graph FILE: min/max envelopes along the line (range_graph.h)
 };
 
 // Exit codes (usage() and docs/overview.md list them).

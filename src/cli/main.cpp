@@ -14,6 +14,7 @@
 #include "modal_output.h"
 #include "output_file.h"
 #include "riser_sim/line_run.h"
+#include "riser_sim/range_graph.h"
 #include "riser_sim/scene.h"
 #include "riser_sim/scene_yaml.h"
 #include "run_output.h"
@@ -101,6 +102,9 @@ int main(int argc, char** argv) {
     if (!csv.open("--csv", opt.csv)) return fail(kExitBadInput, csv.error());
     std::fprintf(csv.get(), "%s\n", csvHeader(opt.probe_rfes, run->bottomMoves(), run->hasTorsion()).c_str());
   }
+  OutputFile range_file;  // written at the end; opened first so that a bad path fails before the run
+  if (!opt.range_graph.empty() && !range_file.open("--range-graph", opt.range_graph))
+    return fail(kExitBadInput, range_file.error());
 
   // Whole steps: the run ends at the first step at or past the duration (none for duration 0: the statics
   // alone); a row every `every` steps.
@@ -111,7 +115,20 @@ int main(int argc, char** argv) {
 
   RunOutputs last;
   SteppingTime time;
-  const std::string diverged = stepRun(*run, total_steps, every, csv, opt.probe_rfes, last, time);
+  // The range graph, fed every step: with --range-graph, and with --summary (its extremes' keys).
+  std::unique_ptr<RangeGraph> range;
+  const bool want_range = !opt.range_graph.empty() || opt.summary;
+  std::string diverged;
+  try {
+    diverged = stepRun(*run, total_steps, every, csv, opt.probe_rfes, last, time, want_range ? &range : nullptr,
+                       seabedPlane(scene));
+  } catch (const std::exception& e) {
+    return fail(kExitInternal, e.what());
+  }
+  if (range_file.isOpen() && range) {  // the range of what ran, also when the run diverged
+    writeRangeGraph(range_file.get(), *range);
+    if (!range_file.close()) return fail(kExitWriteFailed, range_file.error());
+  }
 
   const double wall_s = time.wall_s, cpu_s = time.cpu_s;
   const double sim_s = run->time();
@@ -160,8 +177,14 @@ int main(int argc, char** argv) {
       xyz(j, a, last.attachment_points[k]);
       xyz(j, a + "_force", last.attachment_forces[k]);
     }
-    j.add("tension_top", last.top_tension)
-        .add("tension_max", last.max_tension)
+    j.add("tension_top", last.top_tension).add("tension_max", last.max_tension);
+    if (range) {  // over every step of the run
+      j.add("tension_max_s", range->tensionMaxS())
+          .add("curvature_max", range->curvatureMax())
+          .add("curvature_max_s", range->curvatureMaxS());
+      if (range->hasSeabed()) j.add("touchdown_s_min", range->touchdownMin()).add("touchdown_s_max", range->touchdownMax());
+    }
+    j
         .add("max_constraint_error", run->maxConstraintError())
         .add("energy_drift", last.energy_drift)
         .add("force_noise_top", run->forceNoise().total().top)

@@ -51,6 +51,25 @@ void writeCsvRow(std::FILE* f, const RunOutputs& o, const std::vector<int>& prob
   std::fputc('\n', f);
 }
 
+std::string rangeGraphHeader(bool seabed) {
+  return std::string("s,tension_min,tension_max") + (seabed ? ",clearance_min,clearance_max" : "") +
+         ",s_joint,moment_min,moment_max,curvature_min,curvature_max";
+}
+
+void writeRangeGraph(std::FILE* f, const RangeGraph& g) {
+  std::fprintf(f, "%s\n", rangeGraphHeader(g.hasSeabed()).c_str());
+  const size_t nb = g.stations().size();
+  for (size_t i = 0; i < nb; ++i) {
+    std::fprintf(f, "%.9g,%.9g,%.9g", g.stations()[i], g.tension().min[i], g.tension().max[i]);
+    if (g.hasSeabed()) std::fprintf(f, ",%.9g,%.9g", g.clearance().min[i], g.clearance().max[i]);
+    if (i + 1 < nb)
+      std::fprintf(f, ",%.9g,%.9g,%.9g,%.9g,%.9g\n", g.jointStations()[i], g.moment().min[i], g.moment().max[i],
+                   g.curvature().min[i], g.curvature().max[i]);
+    else
+      std::fputs(",,,,,\n", f);
+  }
+}
+
 std::string stabilityMessage(bool explicit_fixed_step, const std::string& scheme, double omega_max,
                              double stable_dt, double dt) {
   char buf[320];

@@ -6,6 +6,7 @@
 
 #include "output_file.h"
 #include "riser_sim/line_run.h"
+#include "riser_sim/range_graph.h"
 
 namespace riser_sim {
 namespace cli {
@@ -24,6 +25,11 @@ std::string csvHeader(const std::vector<int>& probe_rfes = {}, bool bottom_moves
 // NaN reaches the file.
 void writeCsvRow(std::FILE* f, const RunOutputs& o, const std::vector<int>& probe_rfes, bool bottom_moves,
                  bool torsion);
+
+// The range graph's CSV (--range-graph): rangeGraphHeader(), then one row per rfe (%.9g); the joint columns
+// hold the joint at the rfe's far end, empty on the last row; clearance columns only with a seabed.
+std::string rangeGraphHeader(bool seabed);
+void writeRangeGraph(std::FILE* f, const RangeGraph& g);
 
 // Steps between CSV rows: output_dt / dt rounded, at least 1, at most total_steps (an output_dt beyond
 // the run gives its first and last rows only; the ratio can exceed a long).
