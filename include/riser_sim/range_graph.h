@@ -38,12 +38,12 @@ class RangeGraph {
 
   long samples() const { return samples_; }
   bool hasSeabed() const { return seabed_.exists; }
-  const std::vector<double>& stations() const { return s_; }      // rfe middles [m], n + 1
+  const std::vector<double>& stations() const { return s_; }             // rfe middles [m], n + 1
   const std::vector<double>& jointStations() const { return s_joint_; }  // joints 1..n [m], n
-  const Envelope& tension() const { return tension_; }       // effective tension (axial force) per rfe [N]
-  const Envelope& clearance() const { return clearance_; }   // of each rfe's middle above the seabed [m]
-  const Envelope& moment() const { return moment_; }         // bending moment per joint (planar signed, 3D |M|) [N m]
-  const Envelope& curvature() const { return curvature_; }   // per joint [1/m]
+  const Envelope& tension() const { return tension_; }                   // effective tension (axial force) per rfe [N]
+  const Envelope& clearance() const { return clearance_; }               // of each rfe's middle above the seabed [m]
+  const Envelope& moment() const { return moment_; }        // bending moment per joint (planar signed, 3D |M|) [N m]
+  const Envelope& curvature() const { return curvature_; }  // per joint [1/m]
 
   // Arc length of the station with the largest tension over the run [m].
   double tensionMaxS() const;

@@ -55,7 +55,12 @@ TEST(CliRangeGraph, EnvelopesHoldEveryRowOfTheRun) {
   ASSERT_GT(series.size(), 40u);
   for (size_t i = 0; i < rows.size(); ++i) {
     ASSERT_EQ(rows[i].size(), 8u);
-    EXPECT_NEAR(rows[i][0], i == 0 ? 0.3125 : i + 1 == rows.size() ? 9.6875 : 1.25 * i, 1e-12) << "rfe middles (half-length ends)";
+    EXPECT_NEAR(rows[i][0],
+                i == 0                 ? 0.3125
+                : i + 1 == rows.size() ? 9.6875
+                                       : 1.25 * i,
+                1e-12)
+        << "rfe middles (half-length ends)";
     EXPECT_LE(rows[i][1], rows[i][2]);
     if (i + 1 < rows.size()) {
       EXPECT_NEAR(rows[i][3], 0.625 + 1.25 * i, 1e-12);
@@ -87,8 +92,8 @@ TEST(CliRangeGraph, EnvelopesHoldEveryRowOfTheRun) {
 // touch-down keys (demo_riser_3d rests its last ~30 m on the seabed).
 TEST(CliRangeGraph, StaticsAloneAndSeabed) {
   const std::string path = tempPath("range_bed.csv");
-  const CliRun r = runCli("--scene " + kScenes + "demo_riser_3d.yaml --duration 0 --quiet --summary --range-graph " +
-                          path);
+  const CliRun r =
+      runCli("--scene " + kScenes + "demo_riser_3d.yaml --duration 0 --quiet --summary --range-graph " + path);
   ASSERT_EQ(r.code, 0) << r.err;
   std::string header;
   const auto rows = rangeRows(readFile(path), header);

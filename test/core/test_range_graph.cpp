@@ -24,15 +24,26 @@ Scene scene(const std::string& file, const std::vector<std::string>& overrides =
 
 // A 100 m chain (EI 0) of 20 kg/m, D 0.1 m, with a 50 kg end mass, hanging at rest in water, n rfes.
 std::vector<std::string> chainInWater(int n) {
-  return {"line.length=100.0", "line.elements=" + std::to_string(n), "line.EA=1.0e8", "line.mass_per_length=20.0",
-          "line.end_mass=50.0", "line.outer_diameter=0.1", "environment.water={density: 1025.0, surface: 10.0}",
-          "initial={type: hanging}", "solver.dt=1.0e-4"};
+  return {"line.length=100.0",
+          "line.elements=" + std::to_string(n),
+          "line.EA=1.0e8",
+          "line.mass_per_length=20.0",
+          "line.end_mass=50.0",
+          "line.outer_diameter=0.1",
+          "environment.water={density: 1025.0, surface: 10.0}",
+          "initial={type: hanging}",
+          "solver.dt=1.0e-4"};
 }
 
 // A chain in air pinned at (0, 0) and (60, -50), 100 m long: a catenary with its vertex inside the span.
 std::vector<std::string> catenary(int n) {
-  return {"line.length=100.0", "line.elements=" + std::to_string(n), "line.EA=1.0e6", "line.mass_per_length=2.0",
-          "line.end_mass=0.0", "bottom={type: pinned, position: [60.0, -50.0]}", "initial={type: between_points}"};
+  return {"line.length=100.0",
+          "line.elements=" + std::to_string(n),
+          "line.EA=1.0e6",
+          "line.mass_per_length=2.0",
+          "line.end_mass=0.0",
+          "bottom={type: pinned, position: [60.0, -50.0]}",
+          "initial={type: between_points}"};
 }
 
 TEST(RangeGraph, LineAtRestKeepsItsStaticProfile) {
@@ -40,7 +51,8 @@ TEST(RangeGraph, LineAtRestKeepsItsStaticProfile) {
   // Bound: the statics' residual (initial.tolerance 1e-9 of the weight) starts a motion of that relative size;
   // 1e-7 of the top tension (and of the largest |M| and κ) leaves two decades for the integrator's round-off.
   for (const auto& [file, over] : std::vector<std::pair<std::string, std::vector<std::string>>>{
-           {"hanging_chain.yaml", chainInWater(10)}, {"demo_riser_3d.yaml", {"environment.waves=null", "environment.current=null"}}}) {
+           {"hanging_chain.yaml", chainInWater(10)},
+           {"demo_riser_3d.yaml", {"environment.waves=null", "environment.current=null"}}}) {
     SCOPED_TRACE(file);
     auto run = buildLineRun(scene(file, over));
     const RunOutputs start = run->outputs();
