@@ -164,6 +164,25 @@ TEST(RangeGraph, AddAllocatesNothing) {
   }
 }
 
+// The clearance is the height above the seabed plane along its normal: on the sloped plane of docs/scene_keys.md,
+// z_b(x, y) = level + tan θ (x cos ψ + y sin ψ), a point h above z_b is h cos θ from it (θ = 10°, ψ = 30°).
+TEST(RangeGraph, ClearanceAboveASlopedSeabed) {
+  const Scene sc = scene("demo_riser_3d.yaml", {"seabed.slope=10.0", "seabed.slope_heading=30.0"});
+  const SeabedPlane bed = seabedPlane(sc);
+  ASSERT_TRUE(bed.exists);
+  const double th = 10.0 * kPi / 180.0, psi = 30.0 * kPi / 180.0, level = sc.seabed.level;
+  for (const Vec3& xy : {Vec3(0.0, 0.0, 0.0), Vec3(80.0, 0.0, 0.0), Vec3(-20.0, 35.0, 0.0)}) {
+    const double zb = level + std::tan(th) * (xy.x() * std::cos(psi) + xy.y() * std::sin(psi));
+    for (const double h : {-0.5, 0.0, 7.0}) {
+      const Vec3 p(xy.x(), xy.y(), zb + h);
+      EXPECT_NEAR(bed.clearance(p), h * std::cos(th), 1e-12 * (1.0 + std::abs(level) + xy.norm()));
+    }
+  }
+  const SeabedPlane level_bed = seabedPlane(scene("demo_riser_3d.yaml"));
+  EXPECT_NEAR(level_bed.clearance(Vec3(3.0, 4.0, level + 2.0)), 2.0, 1e-12);
+  EXPECT_FALSE(seabedPlane(scene("hanging_chain.yaml")).exists);
+}
+
 TEST(RangeGraph, RefusesMismatchedOutputs) {
   RunOutputs o;
   o.arc_length = {0.5, 1.5};
