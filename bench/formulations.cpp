@@ -34,8 +34,7 @@ using namespace riser_sim;
 // The paper's Table 1 (20 s simulated at h = 1e-4 s) [s], n = 10, 20, 30, 40, 50, 100.
 const int kPaperN[] = {10, 20, 30, 40, 50, 100};
 const double kPaperAbsolute[] = {37, 60 + 23, 2 * 60 + 20, 3 * 60 + 30, 4 * 60 + 52, 14 * 60 + 23};
-const double kPaperIndependent[] = {35, 3 * 60 + 18, 10 * 60 + 6, 23 * 60 + 13, 43 * 60 + 13,
-                                    5 * 3600 + 32 * 60 + 25};
+const double kPaperIndependent[] = {35, 3 * 60 + 18, 10 * 60 + 6, 23 * 60 + 13, 43 * 60 + 13, 5 * 3600 + 32 * 60 + 25};
 constexpr double kSimDuration = 20.0;  // [s] the paper's run length
 constexpr double kDt = 1e-4;           // [s] the paper's step
 constexpr int kIndependentMaxN = 100;  // dense O(n³) solve: measured up to here, extrapolated beyond
@@ -45,10 +44,10 @@ Scene table1Scene(int n) { return validation::table1Scene(n, kDt); }
 struct Row {
   std::string formulation;
   int n = 0;
-  double per_step = 0.0;  // median time per RK4 step on the reported clock [s]
+  double per_step = 0.0;                           // median time per RK4 step on the reported clock [s]
   double wall_per_step = 0.0, cpu_per_step = 0.0;  // medians of both clocks [s]
-  double dt = kDt;        // step used for the timing [s] (the paper's unless unstable there)
-  long steps = 0;         // steps per timed run
+  double dt = kDt;                                 // step used for the timing [s] (the paper's unless unstable there)
+  long steps = 0;                                  // steps per timed run
   int runs = 0;
   bool measured = true;  // false: extrapolated from the fit
 };
@@ -113,8 +112,8 @@ Row timeOne(const std::shared_ptr<Model>& model, const Scene& scene, const Kinem
     row.runs = runs;
     return row;
   }
-  throw std::runtime_error(f + " n = " + std::to_string(model->segments()) + ": diverges even at h = " +
-                           std::to_string(settings.dt));
+  throw std::runtime_error(f + " n = " + std::to_string(model->segments()) +
+                           ": diverges even at h = " + std::to_string(settings.dt));
 }
 
 // Least-squares slope and intercept of log(t) against log(n).
@@ -136,13 +135,18 @@ Fit fitPowerLaw(const std::vector<double>& n, const std::vector<double>& t) {
 }
 
 // --positions: x_s(20), y_s(20) of the full Table 1 runs (h = 1e-4 s, 20 s) for n = 10..50.
-const double kPaperXs[2][5] = {{-49.547, -49.551, -49.552, -49.552, -49.552}, {-49.549, -49.552, -49.553, -49.553, -49.553}};
-const double kPaperYs[2][5] = {{-86.750, -86.763, -86.765, -86.765, -86.765}, {-86.750, -86.762, -86.765, -86.765, -86.765}};
+const double kPaperXs[2][5] = {{-49.547, -49.551, -49.552, -49.552, -49.552},
+                               {-49.549, -49.552, -49.553, -49.553, -49.553}};
+const double kPaperYs[2][5] = {{-86.750, -86.763, -86.765, -86.765, -86.765},
+                               {-86.750, -86.762, -86.765, -86.765, -86.765}};
 
 int positionsTable(const std::vector<std::string>& forms, const std::string& out) {
-  std::printf("Table 1 end mass position after 20 s (h = %g s) [m]: paper (absolute; independent) and the three\n"
-              "formulations here; last column: largest distance of independent/recursive from absolute.\n\n", kDt);
-  std::printf("| n | paper abs x_s, y_s | paper ind x_s, y_s | absolute | independent | recursive | max distance [m] |\n");
+  std::printf(
+      "Table 1 end mass position after 20 s (h = %g s) [m]: paper (absolute; independent) and the three\n"
+      "formulations here; last column: largest distance of independent/recursive from absolute.\n\n",
+      kDt);
+  std::printf(
+      "| n | paper abs x_s, y_s | paper ind x_s, y_s | absolute | independent | recursive | max distance [m] |\n");
   std::printf("|---:|---|---|---|---|---|---:|\n");
   std::FILE* csv = std::fopen(out.c_str(), "w");
   if (!csv) {
@@ -237,9 +241,10 @@ int main(int argc, char** argv) {
       }
       use_wall = c == "wall";
     } else {
-      std::fprintf(stderr,
-                   "usage: riser_sim_bench_formulations [--runs N>=1] [--target-wall S>0] [--clock cpu|wall] [--out FILE] "
-                   "[--quick] [--positions]\n");
+      std::fprintf(
+          stderr,
+          "usage: riser_sim_bench_formulations [--runs N>=1] [--target-wall S>0] [--clock cpu|wall] [--out FILE] "
+          "[--quick] [--positions]\n");
       return a == "--help" || a == "-h" ? 0 : 2;
     }
   }
@@ -304,8 +309,9 @@ int main(int argc, char** argv) {
     for (const Row& r : rows)
       if (r.formulation == forms[k] && r.measured && (!last[k][1] || r.n > last[k][1]->n))
         last[k][0] = last[k][1], last[k][1] = &r;
-    if (last[k][0]) local_p[k] = std::log(last[k][1]->per_step / last[k][0]->per_step) /
-                                 std::log(double(last[k][1]->n) / last[k][0]->n);
+    if (last[k][0])
+      local_p[k] =
+          std::log(last[k][1]->per_step / last[k][0]->per_step) / std::log(double(last[k][1]->n) / last[k][0]->n);
   }
   // Independent beyond kIndependentMaxN: the dense LDLT's n³ from the largest measured n.
   const Row* ind_last = last[1][1];
@@ -335,11 +341,13 @@ int main(int argc, char** argv) {
   const std::string command = riser_sim::bench::commandLine(argc, argv);
   riser_sim::bench::MarkdownTable table("formulations", command);
   riser_sim::bench::MarkdownTable exponents("formulations_exponents", command);
-  table.printf("Table 1 line (L = 100 m, m_s = 1000 kg, E = 1e11 Pa, no bending), RK4: %s time for %g s at\n"
-              "h = %g s (%g steps), from the median of %d timed runs per cell (single thread; CPU time equals\n"
-              "wall time on an idle machine). Paper: its Table 1 (2013 hardware, wall time).\n\n",
-              use_wall ? "wall" : "CPU", kSimDuration, kDt, paper_steps, runs);
-  table.printf("| n | paper absolute | paper independent | absolute | independent | recursive | absolute / recursive |\n");
+  table.printf(
+      "Table 1 line (L = 100 m, m_s = 1000 kg, E = 1e11 Pa, no bending), RK4: %s time for %g s at\n"
+      "h = %g s (%g steps), from the median of %d timed runs per cell (single thread; CPU time equals\n"
+      "wall time on an idle machine). Paper: its Table 1 (2013 hardware, wall time).\n\n",
+      use_wall ? "wall" : "CPU", kSimDuration, kDt, paper_steps, runs);
+  table.printf(
+      "| n | paper absolute | paper independent | absolute | independent | recursive | absolute / recursive |\n");
   table.printf("|---:|---:|---:|---:|---:|---:|---:|\n");
   for (int n : ns) {
     std::string pa = "–", pi = "–";
@@ -350,14 +358,14 @@ int main(int argc, char** argv) {
     char ratio[32] = "–";
     if (a && r) std::snprintf(ratio, sizeof ratio, "%.2f", a->per_step / r->per_step);
     table.printf("| %d | %s | %s | %s | %s | %s | %s |\n", n, pa.c_str(), pi.c_str(), cell("absolute", n).c_str(),
-                cell("independent", n).c_str(), cell("recursive", n).c_str(), ratio);
+                 cell("independent", n).c_str(), cell("recursive", n).c_str(), ratio);
   }
   table.printf("\n~ not run: the measured n = %d time scaled by (n/%d)^3 (dense LDLT).\n", kIndependentMaxN,
-              kIndependentMaxN);
+               kIndependentMaxN);
   table.printf(
-              "\\* h = %g s is beyond RK4's stability for this line's axial mode at this n: timed at the largest\n"
-              "  stable h = 1e-4/2^k (see the CSV's dt_s) and reported per %g steps (cost per step does not depend on h).\n",
-              kDt, paper_steps);
+      "\\* h = %g s is beyond RK4's stability for this line's axial mode at this n: timed at the largest\n"
+      "  stable h = 1e-4/2^k (see the CSV's dt_s) and reported per %g steps (cost per step does not depend on h).\n",
+      kDt, paper_steps);
   table.write();
   std::printf("\n");
   exponents.printf("Growth exponent p of time ~ n^p (log-log least squares over the measured n):\n\n");
@@ -366,14 +374,15 @@ int main(int argc, char** argv) {
     if (last[k][0]) std::snprintf(buf, sizeof buf, "%.2f (n = %d..%d)", local_p[k], last[k][0]->n, last[k][1]->n);
     return std::string(buf);
   };
-  exponents.printf("| formulation | measured p | n range | p at the two largest n | paper p (n = 10..100) |\n"
-              "|---|---:|---|---|---:|\n");
+  exponents.printf(
+      "| formulation | measured p | n range | p at the two largest n | paper p (n = 10..100) |\n"
+      "|---|---:|---|---|---:|\n");
   exponents.printf("| absolute | %.2f | %d..%d | %s | %.2f |\n", fit[0].exponent, ns.front(), fit_max_n[0],
-              lastPair(0).c_str(), paper_abs.exponent);
+                   lastPair(0).c_str(), paper_abs.exponent);
   exponents.printf("| independent | %.2f | %d..%d | %s | %.2f |\n", fit[1].exponent, ns.front(), fit_max_n[1],
-              lastPair(1).c_str(), paper_ind.exponent);
+                   lastPair(1).c_str(), paper_ind.exponent);
   exponents.printf("| recursive | %.2f | %d..%d | %s | – |\n", fit[2].exponent, ns.front(), fit_max_n[2],
-              lastPair(2).c_str());
+                   lastPair(2).c_str());
 
   exponents.write();
 

@@ -235,7 +235,8 @@ Pair3 timePair(int n, bool implicit, double target) {
   m2->addTerm(std::make_unique<Gravity>());
   m2->addTerm(std::make_unique<AxialSpring>());
   m2->addTerm(std::make_unique<BendingSpring>());
-  auto m3 = std::make_shared<spatial::SpatialModel>(l.length, n, l.props, l.options, l.end_mass, spatial::Vec3(0, 0, -l.g));
+  auto m3 =
+      std::make_shared<spatial::SpatialModel>(l.length, n, l.props, l.options, l.end_mass, spatial::Vec3(0, 0, -l.g));
   m3->addTerm(std::make_unique<spatial::Gravity>());
   m3->addTerm(std::make_unique<spatial::AxialSpring>());
   m3->addTerm(std::make_unique<spatial::BendingSpring>());
@@ -321,13 +322,15 @@ void spatialRows(const std::string& out_dir, double target, int max_n, bool quic
   if (quick) ns = {10, 100};
   std::FILE* csv = std::fopen((out_dir + "/step_cost_3d.csv").c_str(), "w");
   if (csv)
-    std::fprintf(csv, "integrator,n,h,us_per_step_2d,us_per_step_3d,ratio,ratio_q1,ratio_q3,newton_2d,newton_3d,"
-                      "us_per_step_3d_alone\n");
+    std::fprintf(csv,
+                 "integrator,n,h,us_per_step_2d,us_per_step_3d,ratio,ratio_q1,ratio_q3,newton_2d,newton_3d,"
+                 "us_per_step_3d_alone\n");
   std::printf("\n");
-  t.printf("3D against 2D, the same planar line (thread CPU time per step, interleaved blocks, medians; ratio "
-              "3D/2D with its quartiles over the blocks; Newton iterations per step 2D / 3D; 3D alone: the same 3D "
-              "steps run again with no planar run between its blocks):\n\n| integrator | n | h [s] | 2D [us] | "
-              "3D [us] | ratio | ratio q1..q3 | Newton | 3D alone [us] |\n|---|---|---|---|---|---|---|---|---|\n");
+  t.printf(
+      "3D against 2D, the same planar line (thread CPU time per step, interleaved blocks, medians; ratio "
+      "3D/2D with its quartiles over the blocks; Newton iterations per step 2D / 3D; 3D alone: the same 3D "
+      "steps run again with no planar run between its blocks):\n\n| integrator | n | h [s] | 2D [us] | "
+      "3D [us] | ratio | ratio q1..q3 | Newton | 3D alone [us] |\n|---|---|---|---|---|---|---|---|---|\n");
   for (const bool implicit : {false, true}) {
     const char* name = implicit ? "midpoint structured (2D recursive)" : "rk4 (2D absolute)";
     std::vector<double> xs, y2, y3, y3a;
@@ -339,15 +342,15 @@ void spatialRows(const std::string& out_dir, double target, int max_n, bool quic
         continue;
       }
       t.printf("| %s | %d | %.3g | %.3g | %.3g | %.2f | %.2f..%.2f | %.2f / %.2f | %.3g |\n", name, n, r.h, r.us2,
-                  r.us3, r.ratio, r.ratio_lo, r.ratio_hi, r.newton2, r.newton3, r.us3_alone);
+               r.us3, r.ratio, r.ratio_lo, r.ratio_hi, r.newton2, r.newton3, r.us3_alone);
       std::fflush(stdout);
       if (csv)
-        std::fprintf(csv, "%s,%d,%.6g,%.6g,%.6g,%.4g,%.4g,%.4g,%.3g,%.3g,%.6g\n", implicit ? "midpoint" : "rk4", n,
-                     r.h, r.us2, r.us3, r.ratio, r.ratio_lo, r.ratio_hi, r.newton2, r.newton3, r.us3_alone);
+        std::fprintf(csv, "%s,%d,%.6g,%.6g,%.6g,%.4g,%.4g,%.4g,%.3g,%.3g,%.6g\n", implicit ? "midpoint" : "rk4", n, r.h,
+                     r.us2, r.us3, r.ratio, r.ratio_lo, r.ratio_hi, r.newton2, r.newton3, r.us3_alone);
       if (n >= 100) xs.push_back(n + 1), y2.push_back(r.us2), y3.push_back(r.us3), y3a.push_back(r.us3_alone);
     }
     t.printf("| %s | exponent n = 100..1000 | | %.2f | %.2f | | | | %.2f |\n", name, slope(xs, y2), slope(xs, y3),
-                slope(xs, y3a));
+             slope(xs, y3a));
   }
   if (csv) std::fclose(csv);
   t.write();
@@ -366,27 +369,40 @@ int main(int argc, char** argv) {
   check.command = bench::commandLine(argc, argv);
   for (int i = 1; i < argc; ++i) {
     const bool more = i + 1 < argc;
-    if (!std::strcmp(argv[i], "--out") && more) out_dir = argv[++i];
-    else if (!std::strcmp(argv[i], "--root") && more) root = argv[++i];
-    else if (!std::strcmp(argv[i], "--target") && more) target = std::atof(argv[++i]), target_given = true;
-    else if (!std::strcmp(argv[i], "--max-n") && more) max_n = std::atoi(argv[++i]);
-    else if (!std::strcmp(argv[i], "--quick")) quick = true;
-    else if (!std::strcmp(argv[i], "--spatial")) spatial_only = true;
-    else if (!std::strcmp(argv[i], "--save-baseline")) save_baseline = true;
-    else if (!std::strcmp(argv[i], "--compare")) compare = true;
-    else if (!std::strcmp(argv[i], "--baseline") && more) check.baseline = argv[++i];
-    else if (!std::strcmp(argv[i], "--rounds") && more) check.rounds = std::atoi(argv[++i]), rounds_given = true;
-    else if (!std::strcmp(argv[i], "--tolerance") && more) check.tolerance = std::atof(argv[++i]);
-    else if (!std::strcmp(argv[i], "--fail-on-change")) check.fail_on_change = true;
+    if (!std::strcmp(argv[i], "--out") && more)
+      out_dir = argv[++i];
+    else if (!std::strcmp(argv[i], "--root") && more)
+      root = argv[++i];
+    else if (!std::strcmp(argv[i], "--target") && more)
+      target = std::atof(argv[++i]), target_given = true;
+    else if (!std::strcmp(argv[i], "--max-n") && more)
+      max_n = std::atoi(argv[++i]);
+    else if (!std::strcmp(argv[i], "--quick"))
+      quick = true;
+    else if (!std::strcmp(argv[i], "--spatial"))
+      spatial_only = true;
+    else if (!std::strcmp(argv[i], "--save-baseline"))
+      save_baseline = true;
+    else if (!std::strcmp(argv[i], "--compare"))
+      compare = true;
+    else if (!std::strcmp(argv[i], "--baseline") && more)
+      check.baseline = argv[++i];
+    else if (!std::strcmp(argv[i], "--rounds") && more)
+      check.rounds = std::atoi(argv[++i]), rounds_given = true;
+    else if (!std::strcmp(argv[i], "--tolerance") && more)
+      check.tolerance = std::atof(argv[++i]);
+    else if (!std::strcmp(argv[i], "--fail-on-change"))
+      check.fail_on_change = true;
     else if (!std::strcmp(argv[i], "--scenes") && more) {
       std::string list = argv[++i], item;
       for (std::stringstream ss(list); std::getline(ss, item, ',');)
         if (!item.empty()) check.scenes.push_back(item);
     } else {
-      std::fprintf(stderr, "usage: riser_sim_bench_step_cost [--out DIR] [--root DIR] [--target S] [--max-n N] "
-                           "[--quick] [--spatial]\n"
-                           "       riser_sim_bench_step_cost --save-baseline|--compare [--baseline FILE] "
-                           "[--scenes a,b] [--rounds K] [--target S] [--tolerance F] [--fail-on-change] [--root DIR]\n");
+      std::fprintf(stderr,
+                   "usage: riser_sim_bench_step_cost [--out DIR] [--root DIR] [--target S] [--max-n N] "
+                   "[--quick] [--spatial]\n"
+                   "       riser_sim_bench_step_cost --save-baseline|--compare [--baseline FILE] "
+                   "[--scenes a,b] [--rounds K] [--target S] [--tolerance F] [--fail-on-change] [--root DIR]\n");
       return std::strcmp(argv[i], "--help") ? 2 : 0;
     }
   }
@@ -398,8 +414,9 @@ int main(int argc, char** argv) {
       return 2;
     }
     if (compare && (rounds_given || target_given)) {
-      std::fprintf(stderr, "riser_sim_bench_step_cost: --compare replays the baseline's rounds and blocks: "
-                           "--rounds and --target belong to --save-baseline\n");
+      std::fprintf(stderr,
+                   "riser_sim_bench_step_cost: --compare replays the baseline's rounds and blocks: "
+                   "--rounds and --target belong to --save-baseline\n");
       return 2;
     }
     if (!(check.tolerance > 0.0 && check.tolerance < 1.0)) {
@@ -424,8 +441,10 @@ int main(int argc, char** argv) {
   }
   std::fprintf(csv, "scene,integrator,formulation,jacobian,n,h,steps,cpu_us_per_step,us_per_step_per_rfe\n");
   const int kConfigs_n = int(sizeof(kConfigs) / sizeof(kConfigs[0]));
-  table.printf("Cost of one step (thread CPU time, median of 3; the machine may be shared), growth exponent "
-              "over n (J-lay: the n = 400 column is n = 300, its statics limit):\n\n| scene | integrator / formulation / solve | h [s] | ");
+  table.printf(
+      "Cost of one step (thread CPU time, median of 3; the machine may be shared), growth exponent "
+      "over n (J-lay: the n = 400 column is n = 300, its statics limit):\n\n| scene | integrator / formulation / solve "
+      "| h [s] | ");
   for (int n : ns) table.printf("n = %d | ", n);
   table.printf("exponent |\n|---|---|---|");
   for (size_t k = 0; k < ns.size(); ++k) table.printf("---|");
@@ -475,10 +494,12 @@ int main(int argc, char** argv) {
       const Config& c = kConfigs[k];
       std::vector<double> xs, ys;
       table.printf("| %s | %s / %s / %s | %s | ", which, c.integrator, c.formulation, c.jacobian,
-                  c.h > 0 ? std::to_string(c.h).substr(0, 4).c_str() : "0.9x limit");
+                   c.h > 0 ? std::to_string(c.h).substr(0, 4).c_str() : "0.9x limit");
       for (size_t j = 0; j < ns.size(); ++j) {
-        if (cost[k][j] == 0.0) table.printf("- | ");
-        else if (cost[k][j] < 0.0) table.printf("failed | ");
+        if (cost[k][j] == 0.0)
+          table.printf("- | ");
+        else if (cost[k][j] < 0.0)
+          table.printf("failed | ");
         else {
           table.printf("%.3g us | ", 1e6 * cost[k][j]);
           xs.push_back(ns[j] + 1);

@@ -53,7 +53,7 @@ struct Measured {
   Setup setup;
   bool ok = false;
   std::string why;
-  long warmup_steps = 0;     // stepped before the rounds (3, then enough to size the blocks)
+  long warmup_steps = 0;  // stepped before the rounds (3, then enough to size the blocks)
   long steps_per_block = 0;
   int rounds = 0;
   double us_per_step = 0.0;  // median over the rounds [µs]
@@ -173,7 +173,9 @@ constexpr size_t kColumns = 13;
 
 std::vector<Measured> readBaseline(const std::string& path, std::string& stamp_line) {
   std::ifstream f(path);
-  if (!f) throw std::runtime_error("no baseline " + path + " (make bench-baseline, or riser_sim_bench_step_cost --save-baseline)");
+  if (!f)
+    throw std::runtime_error("no baseline " + path +
+                             " (make bench-baseline, or riser_sim_bench_step_cost --save-baseline)");
   std::vector<Measured> rows;
   std::string line;
   bool header = false;
@@ -195,7 +197,8 @@ std::vector<Measured> readBaseline(const std::string& path, std::string& stamp_l
     std::string cell;
     while (std::getline(ss, cell, ',')) c.push_back(cell);
     if (c.size() != kColumns)
-      throw std::runtime_error(path + ":" + std::to_string(lineno) + ": " + std::to_string(kColumns) + " columns expected");
+      throw std::runtime_error(path + ":" + std::to_string(lineno) + ": " + std::to_string(kColumns) +
+                               " columns expected");
     Measured m;
     try {
       m.setup = {c[0], c[1], c[3], std::stoi(c[2]), std::stod(c[4])};
@@ -246,10 +249,12 @@ int saveStepCostBaseline(const StepCheckOptions& o) {
                                           : std::filesystem::path(o.baseline).parent_path());
   std::ofstream f(o.baseline);
   f << "# " << o.command << " on " << stamp() << "\n" << kHeader << "\n";
-  std::printf("Step cost baseline (thread CPU per step, median of %d interleaved rounds; s.e. = standard error of "
-              "the median):\n\n"
-              "| scene | n | integrator | dt [s] | steps per block | CPU per step [us] | s.e. | per kernel pass | s.e. |\n"
-              "|---|---|---|---|---|---|---|---|---|\n", o.rounds);
+  std::printf(
+      "Step cost baseline (thread CPU per step, median of %d interleaved rounds; s.e. = standard error of "
+      "the median):\n\n"
+      "| scene | n | integrator | dt [s] | steps per block | CPU per step [us] | s.e. | per kernel pass | s.e. |\n"
+      "|---|---|---|---|---|---|---|---|---|\n",
+      o.rounds);
   int failed = 0;
   for (const Live& l : live) {
     const Measured& m = l.m;
@@ -296,8 +301,7 @@ int compareStepCost(const StepCheckOptions& o) {
   }
   std::vector<std::string> names = o.scenes, not_in_base;
   if (names.empty()) {
-    for (const std::string& s : shippedScenes(o.root))
-      (by_name.count(s) ? names : not_in_base).push_back(s);
+    for (const std::string& s : shippedScenes(o.root)) (by_name.count(s) ? names : not_in_base).push_back(s);
   } else {
     for (const std::string& s : o.scenes)
       if (!by_name.count(s)) not_in_base.push_back(s);
@@ -316,12 +320,14 @@ int compareStepCost(const StepCheckOptions& o) {
   measure(live, rounds);
 
   MarkdownTable t("step_cost_check", o.command);
-  t.printf("Step cost of the shipped scenes against the baseline (%s): thread CPU per step, median of %d "
-           "interleaved rounds; normalised = per pass of a fixed kernel timed before each block; ratios now / "
-           "baseline ± 2 standard errors; verdict on the normalised ratio, tolerance %.0f %%.\n\n",
-           base_stamp.c_str(), rounds, 100.0 * o.tolerance);
-  t.printf("| scene | n | integrator, dt [s] | baseline [us] | now [us] | ratio (CPU) | ratio (normalised) | verdict |\n"
-           "|---|---|---|---|---|---|---|---|\n");
+  t.printf(
+      "Step cost of the shipped scenes against the baseline (%s): thread CPU per step, median of %d "
+      "interleaved rounds; normalised = per pass of a fixed kernel timed before each block; ratios now / "
+      "baseline ± 2 standard errors; verdict on the normalised ratio, tolerance %.0f %%.\n\n",
+      base_stamp.c_str(), rounds, 100.0 * o.tolerance);
+  t.printf(
+      "| scene | n | integrator, dt [s] | baseline [us] | now [us] | ratio (CPU) | ratio (normalised) | verdict |\n"
+      "|---|---|---|---|---|---|---|---|\n");
   int unchanged = 0, other = 0;
   std::string not_unchanged;
   for (const Live& l : live) {
@@ -351,8 +357,10 @@ int compareStepCost(const StepCheckOptions& o) {
       verdict = "inconclusive";
       std::snprintf(why, sizeof why, " (± %.1f %% of noise)", 200.0 * se);
     }
-    if (std::string(verdict) == "**unchanged**") ++unchanged;
-    else ++other, not_unchanged += " " + m.setup.scene;
+    if (std::string(verdict) == "**unchanged**")
+      ++unchanged;
+    else
+      ++other, not_unchanged += " " + m.setup.scene;
     const double r_cpu = m.us_per_step / b.us_per_step;
     t.printf("| %s | %d | %s, %g | %.3g | %.3g | %.3f ± %.3f | %.3f ± %.3f | %s%s |\n", m.setup.scene.c_str(),
              m.setup.elements, m.setup.integrator.c_str(), m.setup.dt, b.us_per_step, m.us_per_step, r_cpu,

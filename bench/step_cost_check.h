@@ -28,8 +28,8 @@ struct StepCheckOptions {
   double target = 0.5;              // [s] of thread CPU per scene over all rounds (--save-baseline)
   int rounds = 15;
   double tolerance = 0.03;
-  bool fail_on_change = false;      // --compare exits 3 unless every scene is unchanged
-  std::string command;              // for the table's provenance line
+  bool fail_on_change = false;  // --compare exits 3 unless every scene is unchanged
+  std::string command;          // for the table's provenance line
 };
 
 // Writes opts.baseline; 0 on success.

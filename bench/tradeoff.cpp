@@ -1,13 +1,13 @@
 // riser_sim_bench_tradeoff: speed against accuracy. For each case (bench/tradeoff_cases.cpp:
 // the paper's Table 1 line elastic and inextensible, the 170 m J-lay elastic and inextensible, the 500 m
-// riser; and the 3D swing of tradeoff_spatial.h with its own table and tradeoff_spatial.csv) it first computes the references, then sweeps integrator x formulation x n x h (or tolerance)
-// and measures each run against them: the probe point's position at the end of the run, the histories
-// of the top tension and of the largest axial force every 0.1 s (tradeoff_history.h: RMS and max error
-// against the reference's), the energy-balance error, wall and thread-CPU time (median of 3 for runs
-// under 2 s). Runs predicted to exceed --max-run seconds are skipped and listed as such. The references'
-// own convergence (each coarser reference run against the finest) is printed and written too.
-// Writes <out>/tradeoff.csv and <out>/references.csv; prints tables.
-// bench/plot_tradeoff.py draws the Pareto plots and picks the cheapest setting per accuracy target.
+// riser; and the 3D swing of tradeoff_spatial.h with its own table and tradeoff_spatial.csv) it first computes the
+// references, then sweeps integrator x formulation x n x h (or tolerance) and measures each run against them: the probe
+// point's position at the end of the run, the histories of the top tension and of the largest axial force every 0.1 s
+// (tradeoff_history.h: RMS and max error against the reference's), the energy-balance error, wall and thread-CPU time
+// (median of 3 for runs under 2 s). Runs predicted to exceed --max-run seconds are skipped and listed as such. The
+// references' own convergence (each coarser reference run against the finest) is printed and written too. Writes
+// <out>/tradeoff.csv and <out>/references.csv; prints tables. bench/plot_tradeoff.py draws the Pareto plots and picks
+// the cheapest setting per accuracy target.
 //
 //   riser_sim_bench_tradeoff [--quick] [--out DIR] [--cases a,b] [--ns a,b] [--max-run S] [--root DIR]
 #include <algorithm>
@@ -41,7 +41,7 @@ enum class Sweep {
 struct Scheme {
   const char* integrator;  // a name of riser_sim::Choices<IntegratorKind>
   Sweep sweep;
-  double rho_inf = NAN;    // solver.rho_inf of a scheme that has it (Config::rho_inf)
+  double rho_inf = NAN;  // solver.rho_inf of a scheme that has it (Config::rho_inf)
 };
 
 // The integrators swept, one line each; a new scheme is one more line. A name of the integrator table missing here is
@@ -100,9 +100,10 @@ Ref reference(const Case& c, std::FILE* csv) {
   }
   const Result& last = rs.back();
   ref.m = last.m;
-  std::printf("\n  | %s: reference run | CPU [s] | probe to finest [mm] | top T RMS | top T max | max axial RMS | "
-              "max axial max | peak top T [N] |\n  |---|---|---|---|---|---|---|---|\n",
-              c.name.c_str());
+  std::printf(
+      "\n  | %s: reference run | CPU [s] | probe to finest [mm] | top T RMS | top T max | max axial RMS | "
+      "max axial max | peak top T [N] |\n  |---|---|---|---|---|---|---|---|\n",
+      c.name.c_str());
   for (size_t k = 0; k < rs.size(); ++k) {
     const Result& r = rs[k];
     const Case::RefRun& rr = c.ref_runs[k];
@@ -115,8 +116,8 @@ Ref reference(const Case& c, std::FILE* csv) {
       ref.spread_axial = worse(ref.spread_axial, ea);
     }
     std::printf("  | %s, n = %d, h = %.3g s%s | %.1f | %.3g | %.2e | %.2e | %.2e | %.2e | %.0f |\n",
-                rr.integrator.c_str(), rr.n, r.h, k + 1 == rs.size() ? " (reference)" : "", r.cpu, 1e3 * dpos,
-                et.rms, et.max, ea.rms, ea.max, r.m.peak());
+                rr.integrator.c_str(), rr.n, r.h, k + 1 == rs.size() ? " (reference)" : "", r.cpu, 1e3 * dpos, et.rms,
+                et.max, ea.rms, ea.max, r.m.peak());
     std::fprintf(csv, "%s,%d,%s,%.6g,%s,%.9g,%.9g,%.6f,%.6f,%.3f,%.6g,%.6g,%.6g,%.6g,%.6g\n", c.name.c_str(), rr.n,
                  rr.integrator.c_str(), r.h, r.status.c_str(), r.m.probe.x(), r.m.probe.y(), r.m.peak(), r.m.rms(),
                  r.cpu, dpos, et.rms, et.max, ea.rms, ea.max);
@@ -160,7 +161,7 @@ std::vector<Config> sweep(const Case& c, bool quick, const std::string& ns) {
           break;
         case Sweep::kImplicitSteps:
           for (double h : hs) add("recursive", h);  // structured O(n) solves
-          if (n <= 40)  // the dense finite-difference Jacobian: same accuracy, cost O(p²)
+          if (n <= 40)                              // the dense finite-difference Jacobian: same accuracy, cost O(p²)
             for (double h : {0.02, 0.005}) add("recursive", h, 0.0, "dense");
           if (n <= 40)  // absolute: dense Jacobian only, Baumgarte-held joints
             for (double h : {0.01, 0.002}) add("absolute", h);
@@ -179,12 +180,18 @@ int runBench(int argc, char** argv) {
   double max_run = 20.0;
   for (int i = 1; i < argc; ++i) {
     const bool more = i + 1 < argc;
-    if (!std::strcmp(argv[i], "--quick")) quick = true;
-    else if (!std::strcmp(argv[i], "--out") && more) out_dir = argv[++i];
-    else if (!std::strcmp(argv[i], "--root") && more) root = argv[++i];
-    else if (!std::strcmp(argv[i], "--cases") && more) only = std::string(",") + argv[++i] + ",";
-    else if (!std::strcmp(argv[i], "--max-run") && more) max_run = std::atof(argv[++i]);
-    else if (!std::strcmp(argv[i], "--ns") && more) ns = std::string(",") + argv[++i] + ",";
+    if (!std::strcmp(argv[i], "--quick"))
+      quick = true;
+    else if (!std::strcmp(argv[i], "--out") && more)
+      out_dir = argv[++i];
+    else if (!std::strcmp(argv[i], "--root") && more)
+      root = argv[++i];
+    else if (!std::strcmp(argv[i], "--cases") && more)
+      only = std::string(",") + argv[++i] + ",";
+    else if (!std::strcmp(argv[i], "--max-run") && more)
+      max_run = std::atof(argv[++i]);
+    else if (!std::strcmp(argv[i], "--ns") && more)
+      ns = std::string(",") + argv[++i] + ",";
     else {
       const bool help = !std::strcmp(argv[i], "--help") || !std::strcmp(argv[i], "-h");
       std::string names;
@@ -231,8 +238,9 @@ int runBench(int argc, char** argv) {
     return 1;
   }
   // Force-history errors against the finest reference run (grid kHistoryDt; tradeoff_history.h).
-  std::fprintf(refs, "case,n,integrator,h,status,probe_x,probe_y,peak_T,rms_T,cpu_s,dist_pos_m,err_top_rms,"
-                     "err_top_max,err_axial_rms,err_axial_max\n");
+  std::fprintf(refs,
+               "case,n,integrator,h,status,probe_x,probe_y,peak_T,rms_T,cpu_s,dist_pos_m,err_top_rms,"
+               "err_top_max,err_axial_rms,err_axial_max\n");
   std::printf("references (recursive formulation; force histories every %g s, errors against the last run):\n",
               kHistoryDt);
   std::map<std::string, Ref> ref;
@@ -249,11 +257,12 @@ int runBench(int argc, char** argv) {
                "substeps,rejected,rhs,jacobians,probe_x,probe_y,err_pos_m,ref_spread_m,peak_T,rms_T,err_top_rms,"
                "err_top_max,err_axial_rms,err_axial_max,ref_top_rms,ref_top_max,ref_axial_rms,ref_axial_max,"
                "energy_drift,rk4_limit_h,us_per_step_per_rfe,reason\n");
-  std::printf("\nforce errors: RMS = rms(T - Tref) / rms(Tref), max = max|T - Tref| / max|Tref| on the %g s grid\n"
-              "\n| case | formulation | integrator | solve | n | h [s] | tol | CPU [s] | wall [s] | RTF (CPU) | "
-              "position error [m] | top T RMS | top T max | max axial RMS | max axial max | energy drift |\n"
-              "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
-              kHistoryDt);
+  std::printf(
+      "\nforce errors: RMS = rms(T - Tref) / rms(Tref), max = max|T - Tref| / max|Tref| on the %g s grid\n"
+      "\n| case | formulation | integrator | solve | n | h [s] | tol | CPU [s] | wall [s] | RTF (CPU) | "
+      "position error [m] | top T RMS | top T max | max axial RMS | max axial max | energy drift |\n"
+      "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
+      kHistoryDt);
   for (const Case& c : cases) {
     const Ref& R = ref[c.name];
     for (const Config& k : sweep(c, quick, ns)) {
@@ -268,9 +277,12 @@ int runBench(int argc, char** argv) {
       if (!std::isnan(k.rho_inf)) std::snprintf(rho, sizeof(rho), "%g", k.rho_inf);
       const std::string integ = schemeLabel(k.integrator, k.rho_inf);
       // The linear solve actually used (auto: structured on the chain formulations, dense on absolute).
-      const bool implicit = riser_sim::isImplicitIntegrator(riser_sim::toChoice<riser_sim::IntegratorKind>(k.integrator));
-      const std::string solve = !implicit ? "-" : k.jacobian != "auto" ? k.jacobian
-                                : k.formulation == "absolute" ? "dense" : "structured";
+      const bool implicit =
+          riser_sim::isImplicitIntegrator(riser_sim::toChoice<riser_sim::IntegratorKind>(k.integrator));
+      const std::string solve = !implicit                     ? "-"
+                                : k.jacobian != "auto"        ? k.jacobian
+                                : k.formulation == "absolute" ? "dense"
+                                                              : "structured";
       std::string reason = r.reason;
       for (char& ch : reason)
         if (ch == ',' || ch == '\n') ch = ';';
@@ -284,9 +296,10 @@ int runBench(int argc, char** argv) {
                    R.spread_axial.rms, R.spread_axial.max, r.drift, r.limit, per, reason.c_str());
       std::fflush(csv);
       if (ok)
-        std::printf("| %s | %s | %s | %s | %d | %.3g | %s | %.4f | %.4f | %.0f | %.2e | %.1e | %.1e | %.1e | %.1e | %.1e |\n",
-                    c.name.c_str(), k.formulation.c_str(), integ.c_str(), solve.c_str(), k.n, r.h, tol, r.cpu, r.wall,
-                    c.duration / r.cpu, err, et.rms, et.max, ea.rms, ea.max, r.drift);
+        std::printf(
+            "| %s | %s | %s | %s | %d | %.3g | %s | %.4f | %.4f | %.0f | %.2e | %.1e | %.1e | %.1e | %.1e | %.1e |\n",
+            c.name.c_str(), k.formulation.c_str(), integ.c_str(), solve.c_str(), k.n, r.h, tol, r.cpu, r.wall,
+            c.duration / r.cpu, err, et.rms, et.max, ea.rms, ea.max, r.drift);
       else
         std::printf("| %s | %s | %s | %s | %d | %.3g | %s | %s: %.70s |\n", c.name.c_str(), k.formulation.c_str(),
                     integ.c_str(), solve.c_str(), k.n, r.h, tol, r.status.c_str(), reason.c_str());

@@ -98,8 +98,10 @@ std::vector<Case> allCases(const std::string& root) {
                            : "docs/validation.md: Richardson from n = 80/160";
     // Force histories: rk4 at n = 200, well inside its limit (elastic) / at 2.5 ms (no axial mode);
     // n = 100 and the step doubled show its convergence.
-    if (axial) c.ref_runs = {{100, "rk4", -0.5}, {200, "rk4", -0.5}, {200, "rk4", -0.25}};
-    else c.ref_runs = {{100, "rk4", 5e-3}, {200, "rk4", 5e-3}, {200, "rk4", 2.5e-3}};
+    if (axial)
+      c.ref_runs = {{100, "rk4", -0.5}, {200, "rk4", -0.5}, {200, "rk4", -0.25}};
+    else
+      c.ref_runs = {{100, "rk4", 5e-3}, {200, "rk4", 5e-3}, {200, "rk4", 2.5e-3}};
     cases.push_back(c);
     if (axial) cases.push_back(table1Damped(c));
   }
@@ -107,8 +109,7 @@ std::vector<Case> allCases(const std::string& root) {
   for (bool axial : {true, false}) {
     Case c;
     c.name = axial ? "jlay_elastic" : "jlay_inextensible";
-    c.title = std::string("170 m J-lay (Table 3), ") + (axial ? "elastic" : "inextensible") +
-              " (middle point at 27 s)";
+    c.title = std::string("170 m J-lay (Table 3), ") + (axial ? "elastic" : "inextensible") + " (middle point at 27 s)";
     c.scene = [jlay, axial](int n) { return fromFile(jlay, n, axial); };
     c.duration = 27.0;  // one period of the surge x_0 = 10 cos(2 pi t / 27)
     c.probe_s = 85.0;   // middle of the line (its end lies on the seabed)

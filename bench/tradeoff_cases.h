@@ -20,7 +20,7 @@ using riser_sim::Vec2;
 
 // What a run is measured by.
 struct Measures {
-  Vec2 probe = Vec2::Zero();        // probe point at the end of the run [m]
+  Vec2 probe = Vec2::Zero();  // probe point at the end of the run [m]
   // Force histories on the grid t_k = k kHistoryDt (tradeoff_history.h) [N]:
   std::vector<double> top_tension;  // LineOutputs::top_tension, |force on the hang-off point|
   std::vector<double> max_axial;    // LineOutputs::max_tension: the largest axial force along the line
@@ -30,13 +30,13 @@ struct Measures {
 };
 
 struct Case {
-  std::string name;                  // e.g. "jlay_elastic"
-  std::string title;                 // for plots
+  std::string name;   // e.g. "jlay_elastic"
+  std::string title;  // for plots
   std::function<Scene(int n)> scene;
-  double duration = 20.0;            // simulated [s]
-  double probe_s = 0.0;              // probe at this unstretched arc length from the top [m]
-  bool probe_relative = false;       // probe relative to the top point (Table 1: x_s, y_s)
-  std::vector<int> ns;               // n of the sweep
+  double duration = 20.0;       // simulated [s]
+  double probe_s = 0.0;         // probe at this unstretched arc length from the top [m]
+  bool probe_relative = false;  // probe relative to the top point (Table 1: x_s, y_s)
+  std::vector<int> ns;          // n of the sweep
   // Reference runs (recursive formulation): the last one is the reference, its largest difference to
   // the others (a coarser n, a larger h) its spread. h <= 0 means -h times rk4's estimated stability limit.
   struct RefRun {

@@ -15,8 +15,8 @@ using namespace riser_sim;
 
 namespace {
 
-constexpr double kProbeWall = 0.3;    // [s] of stepping before the cost is extrapolated
-constexpr double kGridEps = 1e-7;     // [s] a step end this close to t_k is on the grid
+constexpr double kProbeWall = 0.3;  // [s] of stepping before the cost is extrapolated
+constexpr double kGridEps = 1e-7;   // [s] a step end this close to t_k is on the grid
 
 double threadCpu() {
   timespec ts;

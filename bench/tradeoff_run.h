@@ -14,10 +14,10 @@ struct Config {
   const Case* c = nullptr;
   std::string formulation, integrator;
   int n = 0;
-  double h = 0.0;    // solver.dt (dopri5: output step) [s]; <= 0: -h x rk4's estimated limit
-  double tol = 0.0;  // dopri5 only
+  double h = 0.0;                 // solver.dt (dopri5: output step) [s]; <= 0: -h x rk4's estimated limit
+  double tol = 0.0;               // dopri5 only
   std::string jacobian = "auto";  // implicit schemes: auto | structured | dense
-  double rho_inf = NAN;  // solver.rho_inf of a scheme that has it (NaN: the scene's); see applyConfig
+  double rho_inf = NAN;           // solver.rho_inf of a scheme that has it (NaN: the scene's); see applyConfig
 };
 
 // The scene of a run: the case's scene at n with the Config's solver settings. The one place a Config
@@ -27,7 +27,7 @@ riser_sim::Scene applyConfig(const Config& c);
 struct Result {
   std::string status;  // ok | diverged | skipped
   std::string reason;
-  double h = 0.0;      // the step actually used [s]
+  double h = 0.0;                // the step actually used [s]
   double wall = 0.0, cpu = 0.0;  // medians [s]
   int runs = 0;
   long steps = 0;

@@ -29,25 +29,25 @@ inline double threadCpu3() {
   return ts.tv_sec + 1e-9 * ts.tv_nsec;
 }
 
-constexpr double kDuration = 20.0;  // [s] simulated
-constexpr double kRefStep = 5e-4;   // [s] rk4's reference step (checked against twice it)
-constexpr double kTarget1cm = 0.01, kTarget1cmCpu = 0.02;    // [m], [s]
-constexpr double kTarget1mm = 0.001, kTarget1mmCpu = 0.1;    // [m], [s]
+constexpr double kDuration = 20.0;                         // [s] simulated
+constexpr double kRefStep = 5e-4;                          // [s] rk4's reference step (checked against twice it)
+constexpr double kTarget1cm = 0.01, kTarget1cmCpu = 0.02;  // [m], [s]
+constexpr double kTarget1mm = 0.001, kTarget1mmCpu = 0.1;  // [m], [s]
 
 struct Run3 {
   std::string status = "ok", reason;
   riser_sim::spatial::Vec3 end = riser_sim::spatial::Vec3::Zero();  // end point at kDuration [m]
-  double cpu = 0.0;    // [s] stepping, median of the repeats
-  double limit = 0.0;  // rk4's estimated limit at this n [s]
+  double cpu = 0.0;                                                 // [s] stepping, median of the repeats
+  double limit = 0.0;                                               // rk4's estimated limit at this n [s]
   long steps = 0;
 };
 
 struct Setting3 {
   std::string integrator;
-  double h = 0.0;           // solver.dt [s] (dopri5: the output step)
-  double tol = NAN;         // dopri5
-  double rho_inf = NAN;     // generalized_alpha
-  double newton = NAN;      // midpoint, generalized_alpha: solver.newton_tolerance (NaN: the default)
+  double h = 0.0;        // solver.dt [s] (dopri5: the output step)
+  double tol = NAN;      // dopri5
+  double rho_inf = NAN;  // generalized_alpha
+  double newton = NAN;   // midpoint, generalized_alpha: solver.newton_tolerance (NaN: the default)
   std::string label() const {
     char b[96];
     if (!std::isnan(newton))
@@ -129,8 +129,9 @@ inline std::vector<Setting3> settings3(double rk4_limit) {
 inline void sweep3(const std::string& root, const std::string& out_dir, const std::vector<int>& ns) {
   std::FILE* csv = std::fopen((out_dir + "/tradeoff_spatial.csv").c_str(), "w");
   if (csv)
-    std::fprintf(csv, "case,n,integrator,rho_inf,tolerance,h,status,steps,cpu_s,end_error_m,ref_check_m,"
-                      "rk4_limit_s,newton_tolerance\n");
+    std::fprintf(csv,
+                 "case,n,integrator,rho_inf,tolerance,h,status,steps,cpu_s,end_error_m,ref_check_m,"
+                 "rk4_limit_s,newton_tolerance\n");
   std::printf("\n## spatial_swing (3D): end point at t = %g s vs rk4 at h = %g s (same n)\n", kDuration, kRefStep);
   for (const int n : ns) {
     const Run3 ref = run3(root, n, {"rk4", kRefStep});
@@ -140,10 +141,12 @@ inline void sweep3(const std::string& root, const std::string& out_dir, const st
       continue;
     }
     const double check = (ref.end - twice.end).norm();
-    std::printf("\n  n = %d: reference rk4 h = %g s (%.2f s CPU), its distance to rk4 at 2h: %.2e m; rk4 limit %.4g s\n",
-                n, kRefStep, ref.cpu, check, ref.limit);
-    std::printf("  | n | setting | h [s] | status | CPU [s] | end error [m] | 1 cm in 0.02 s | 1 mm in 0.1 s |\n"
-                "  |---|---|---|---|---|---|---|---|\n");
+    std::printf(
+        "\n  n = %d: reference rk4 h = %g s (%.2f s CPU), its distance to rk4 at 2h: %.2e m; rk4 limit %.4g s\n", n,
+        kRefStep, ref.cpu, check, ref.limit);
+    std::printf(
+        "  | n | setting | h [s] | status | CPU [s] | end error [m] | 1 cm in 0.02 s | 1 mm in 0.1 s |\n"
+        "  |---|---|---|---|---|---|---|---|\n");
     for (const Setting3& s : settings3(ref.limit)) {
       const Run3 r = run3(root, n, s);
       const double err = r.status == "ok" ? (r.end - ref.end).norm() : NAN;

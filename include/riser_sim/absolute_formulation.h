@@ -22,10 +22,10 @@ class AbsoluteData : public FormulationData {
     Mat2 AA, AE, EE;
     Vec2 aA, aE;
   };
-  VecX Q, h;                       // applied forces, velocity terms (M q'' = Q - h)
-  AlignedVector<Mat4> M, Minv;     // mass blocks and their inverses (terms with inertia)
+  VecX Q, h;                    // applied forces, velocity terms (M q'' = Q - h)
+  AlignedVector<Mat4> M, Minv;  // mass blocks and their inverses (terms with inertia)
   AlignedVector<Compliance> comp;
-  std::vector<double> body_inv;    // rigid path: 6 coefficients per rfe (see rigidBody)
+  std::vector<double> body_inv;       // rigid path: 6 coefficients per rfe (see rigidBody)
   AlignedVector<Mat2> diag, low, up;  // block-tridiagonal Schur complement
   AlignedVector<Vec2> rhs, lambda;
 };

@@ -13,13 +13,13 @@ namespace riser_sim {
 class Model;
 
 struct AttachmentSpec {
-  std::string name;            // attachments[k].name (outputs, markers, messages)
-  double arc_length = 0.0;     // from the top, unstretched [m], 0..line.length
-  double mass = 0.0;           // [kg]
-  double volume = 0.0;         // displaced [m^3]: a sphere of that volume for its submergence
-  double drag_area = 0.0;      // A [m^2] of the drag ½ ρ_w C_d A |u| u on the velocity u relative to the water
-  double cd = 0.0;             // C_d
-  double added_mass = 0.0;     // m_a [kg], isotropic (the scene's `ca` gives C_a ρ_w V)
+  std::string name;             // attachments[k].name (outputs, markers, messages)
+  double arc_length = 0.0;      // from the top, unstretched [m], 0..line.length
+  double mass = 0.0;            // [kg]
+  double volume = 0.0;          // displaced [m^3]: a sphere of that volume for its submergence
+  double drag_area = 0.0;       // A [m^2] of the drag ½ ρ_w C_d A |u| u on the velocity u relative to the water
+  double cd = 0.0;              // C_d
+  double added_mass = 0.0;      // m_a [kg], isotropic (the scene's `ca` gives C_a ρ_w V)
   bool seabed_contact = false;  // the seabed's normal spring/damper and tangential damper act on its centre
 };
 
@@ -39,9 +39,9 @@ void addAttachmentMasses(Model& model, const std::vector<AttachmentSpec>& attach
 // ζ = clamp(r - h, 0, 2r), the submerged volume V_s(ζ) = π ζ² (3r - ζ) / 3 and W(ζ) = ∫_0^ζ V_s, so that the
 // buoyancy ρ g V_s up has the potential U = ρ g W (W = V (r - h) fully submerged: -ρ g V h, as the line's).
 struct SubmergedSphere {
-  double volume = 0.0;      // V_s [m^3]
-  double integral = 0.0;    // W [m^4]
-  double slope = 0.0;       // dV_s/dζ = π ζ (2r - ζ) [m^2] (buoyancy stiffness ρ g dV_s/dζ)
+  double volume = 0.0;    // V_s [m^3]
+  double integral = 0.0;  // W [m^4]
+  double slope = 0.0;     // dV_s/dζ = π ζ (2r - ζ) [m^2] (buoyancy stiffness ρ g dV_s/dζ)
 };
 inline double sphereRadius(double volume) { return std::cbrt(3.0 * volume / (4.0 * M_PI)); }
 inline SubmergedSphere submergedSphere(double volume, double radius, double height) {

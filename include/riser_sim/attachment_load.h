@@ -22,7 +22,7 @@ struct AttachmentLoad {
   double energy = 0.0;    // potential of the conservative part [J]
   // dF/dp = -Kp along the vertical and the normal, dF/dv = -Cp: the law's slopes for the structured solves.
   double k_up = 0.0, k_normal = 0.0, c_normal = 0.0, c_tangential = 0.0;
-  double drag = 0.0;      // f ½ ρ_w C_d A (C = drag (|u| I + u uᵀ / |u|))
+  double drag = 0.0;  // f ½ ρ_w C_d A (C = drag (|u| I + u uᵀ / |u|))
 };
 
 struct AttachmentWater {
@@ -56,7 +56,8 @@ AttachmentLoad<V> attachmentLoad(const AttachmentSpec& a, double radius, const A
     const double fn = std::max(seabed->stiffness_normal * penetration - seabed->damping_normal * vn, 0.0);
     L.conservative += (seabed->stiffness_normal * penetration) * normal;
     L.energy += 0.5 * seabed->stiffness_normal * penetration * penetration;
-    L.total += fn * normal - seabed->damping_tangential * (v - vn * normal) - (seabed->stiffness_normal * penetration) * normal;
+    L.total += fn * normal - seabed->damping_tangential * (v - vn * normal) -
+               (seabed->stiffness_normal * penetration) * normal;
     if (fn > 0.0) L.k_normal = seabed->stiffness_normal, L.c_normal = seabed->damping_normal;
     L.c_tangential = seabed->damping_tangential;
   }

@@ -61,8 +61,8 @@ class ChainFormulation : public Formulation {
   void reactionsFromAccelerations(const AlignedVector<Vec2>& A_dd, const VecX& theta_dd, const Vec2& tip_force,
                                   ChainData& d) const;
 
-  const int k_;          // coordinates per rfe
-  const double omega_;   // Baumgarte frequency for the pinned bottom [rad/s]
+  const int k_;         // coordinates per rfe
+  const double omega_;  // Baumgarte frequency for the pinned bottom [rad/s]
   bool rigid_only_ = true;
 };
 

@@ -11,14 +11,14 @@
 namespace riser_sim {
 
 enum class IntegratorKind { kRk4, kDopri5, kRosenbrock2, kMidpoint, kGeneralizedAlpha };  // solver.integrator
-enum class FormulationKind { kAbsolute, kIndependent, kRecursive };    // solver.formulation
-enum class JacobianKind { kAuto, kStructured, kDense };                // solver.jacobian
-enum class MotionKind { kFixed, kSinusoid, kVelocityProfile, kExternal };  // top.motion.type
-enum class InitialKind { kHanging, kDisplaced, kBetweenPoints, kStraight };  // initial.type
-enum class EndForceKind { kRelease, kHold };                           // initial.end_force
-enum class FlowModelKind { kPipeFlow, kPaper };                        // internal_fluid.model
-enum class SpaceKind { kPlanar, kSpatial };                            // space
-enum class WaveKind { kRegular, kJonswap };                            // environment.waves.type
+enum class FormulationKind { kAbsolute, kIndependent, kRecursive };                       // solver.formulation
+enum class JacobianKind { kAuto, kStructured, kDense };                                   // solver.jacobian
+enum class MotionKind { kFixed, kSinusoid, kVelocityProfile, kExternal };                 // top.motion.type
+enum class InitialKind { kHanging, kDisplaced, kBetweenPoints, kStraight };               // initial.type
+enum class EndForceKind { kRelease, kHold };                                              // initial.end_force
+enum class FlowModelKind { kPipeFlow, kPaper };                                           // internal_fluid.model
+enum class SpaceKind { kPlanar, kSpatial };                                               // space
+enum class WaveKind { kRegular, kJonswap };                                               // environment.waves.type
 
 template <class E>
 struct Choices;  // static constexpr std::array<std::pair<E, const char*>, N> names

@@ -14,7 +14,10 @@ class Dopri5 : public Integrator {
   void reset(const StateLayout& layout) override;
   bool step(OdeSystem& sys, double t, VecX& y, double h) override;
   int stages() const override { return 6; }  // per accepted substep (FSAL)
-  void restart() override { fsal_valid_ = false; failure_.clear(); }
+  void restart() override {
+    fsal_valid_ = false;
+    failure_.clear();
+  }
   const std::string& failure() const override { return failure_; }
   Stats stats() const override { return stats_; }
   double lastSubstep() const { return h_; }

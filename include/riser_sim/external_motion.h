@@ -34,16 +34,16 @@ namespace riser_sim {
 constexpr int kMotionHistory = 32;  // samples kept
 
 struct ExternalMotionOptions {
-  double fit_window = 0.5;       // samples within this time of the newest one enter the fit [s]
-  int fit_max_samples = 32;      // at most this many (<= kMotionHistory)
-  double default_period = 0.1;   // sample period assumed before two samples arrived [s]
-  double min_period = 0.002;     // clamp of the estimated sample period [s]
-  double max_period = 0.5;       // [s]
-  double min_blend = 0.1;        // shortest blend: bounds the acceleration a noisy sample can cause [s]
-  bool predict = true;           // aim at the extrapolated state (lag ~ 0) instead of the sample
-  double max_prediction = 0.3;   // longest extrapolation beyond the newest sample [s]
-  double coast_time = 0.2;       // constant-velocity continuation past the blend [s]
-  double stop_time = 0.5;        // velocity decay to zero, then hold [s] (> 0; longer for a fast holder, above)
+  double fit_window = 0.5;      // samples within this time of the newest one enter the fit [s]
+  int fit_max_samples = 32;     // at most this many (<= kMotionHistory)
+  double default_period = 0.1;  // sample period assumed before two samples arrived [s]
+  double min_period = 0.002;    // clamp of the estimated sample period [s]
+  double max_period = 0.5;      // [s]
+  double min_blend = 0.1;       // shortest blend: bounds the acceleration a noisy sample can cause [s]
+  bool predict = true;          // aim at the extrapolated state (lag ~ 0) instead of the sample
+  double max_prediction = 0.3;  // longest extrapolation beyond the newest sample [s]
+  double coast_time = 0.2;      // constant-velocity continuation past the blend [s]
+  double stop_time = 0.5;       // velocity decay to zero, then hold [s] (> 0; longer for a fast holder, above)
   // After reset() (the line at rest): the catch-up with a source already moving is spread until this long after
   // the reset [s] (each blend then ends there, aimed at the source's state predicted to that time), so the top
   // accelerates by ~v / start_blend instead of v / min_blend. 0: off.
@@ -61,9 +61,9 @@ struct ExternalMotionOptions {
 
 // What the motion saw of gaps in its samples (since its construction).
 struct MotionGaps {
-  long count = 0;        // samples that came after a gap
-  double longest = 0.0;  // [s]
-  double last = 0.0;     // the last gap [s]
+  long count = 0;                                                // samples that came after a gap
+  double longest = 0.0;                                          // [s]
+  double last = 0.0;                                             // the last gap [s]
   double rejoin_end = -std::numeric_limits<double>::infinity();  // the last rejoin ends at this time [s]
   bool rejoining(double t) const { return t < rejoin_end; }
 };
@@ -111,7 +111,7 @@ class SampledMotion {
     State eval(double t) const;
   };
   const std::pair<double, Vec>& sample(int back) const;  // back = 0: newest
-  void fit(State& out) const;                             // p, v, a at the newest sample time
+  void fit(State& out) const;                            // p, v, a at the newest sample time
   State predict(const State& fitted, double h, bool catch_up) const;
   double rejoinTime(double T_min, double t_sample, double t_now, const State& from, const State& fitted,
                     State& target) const;
@@ -146,8 +146,8 @@ class ExternalMotion : public TopMotion {
   // Moves every stored sample time by -dt (the caller re-mapped its clock by dt).
   void shiftSampleTimes(double dt) { m_.shiftSampleTimes(dt); }
 
-  double nominalPeriod() const { return m_.nominalPeriod(); }  // median of the recent sample spacings, clamped [s]
-  double blendTime() const { return m_.blendTime(); }          // T [s]
+  double nominalPeriod() const { return m_.nominalPeriod(); }    // median of the recent sample spacings, clamped [s]
+  double blendTime() const { return m_.blendTime(); }            // T [s]
   double lastSampleTime() const { return m_.lastSampleTime(); }  // [s]
   int sampleCount() const { return m_.sampleCount(); }
   double holdTime() const { return m_.holdTime(); }  // from this time on, the motion holds still [s]

@@ -28,8 +28,7 @@ class ForceTerm {
   // Every evaluation gets the term's run data: null for terms without history, and null when the
   // model is evaluated outside a run (statics): the term then acts as on a fresh run with no history.
   // Adds Q [N, N, N, N m] per rfe (size 4(n+1)) for the state in kin at time t [s].
-  virtual void addForces(const Model& model, const TermData* data, const Kinematics& kin, double t,
-                         VecX& Q) const = 0;
+  virtual void addForces(const Model& model, const TermData* data, const Kinematics& kin, double t, VecX& Q) const = 0;
   // Terms with inertia add to the per-rfe mass blocks M_i and to the velocity terms h (moved to the left).
   // Inertia depends on the state only, never on history.
   virtual bool hasInertia() const { return false; }
@@ -38,8 +37,7 @@ class ForceTerm {
   // Adds K = -∂Q/∂q and C = -∂Q/∂q' (see stiffness.h) for the implicit integrators' structured solves.
   // Returns false when the term gives none: it is then treated explicitly by those solves (fine for
   // non-stiff terms; the solves stay exact for every term that answers).
-  virtual bool addStiffness(const Model&, const TermData*, const Kinematics&, double /*t*/,
-                            StiffnessBlocks&) const {
+  virtual bool addStiffness(const Model&, const TermData*, const Kinematics&, double /*t*/, StiffnessBlocks&) const {
     return false;
   }
   // Energy report (pure: a term states both, 0 where it has none; test_term_power checks
@@ -129,7 +127,8 @@ inline void addTermStiffness(const Model& model, const TermDataSet* data, const 
 inline double termPotentialEnergy(const Model& model, const TermDataSet* data, const Kinematics& kin, double t) {
   const auto& terms = model.terms();
   double v = 0.0;
-  for (size_t k = 0; k < terms.size(); ++k) v += terms[k]->potentialEnergyAt(model, data ? data->at(k) : nullptr, kin, t);
+  for (size_t k = 0; k < terms.size(); ++k)
+    v += terms[k]->potentialEnergyAt(model, data ? data->at(k) : nullptr, kin, t);
   return v;
 }
 

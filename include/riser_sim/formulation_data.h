@@ -37,9 +37,9 @@ class FormulationData {
   // Written by Formulation::derivative(): its inputs (t, the top motion) and what it computed at them.
   double t = std::numeric_limits<double>::quiet_NaN();  // NaN: nothing evaluated yet
   PointMotion top;
-  Kinematics kin;              // every rfe's kinematics
-  Reactions reactions;         // joint and end forces
-  double term_power = 0.0;     // summed power of the terms' non-conservative parts [W]
+  Kinematics kin;                 // every rfe's kinematics
+  Reactions reactions;            // joint and end forces
+  double term_power = 0.0;        // summed power of the terms' non-conservative parts [W]
   double constraint_error = 0.0;  // largest joint-constraint violation seen [m] (0 when joints hold exactly)
 
  private:

@@ -4,7 +4,8 @@
 // Linear solves (IntegratorOptions::jacobian):
 // - "structured": the system's own O(n) solves (OdeSystem::linearize / factorShifted / solveShifted; the
 //   chain formulations, see chain_shifted_solver.h), relinearised at every step. A Rosenbrock-W method
-//   keeps its order with any such approximate J; Newton (midpoint, generalized_alpha) converges linearly at its accuracy.
+//   keeps its order with any such approximate J; Newton (midpoint, generalized_alpha) converges linearly at its
+//   accuracy.
 // - "dense": A_q = ∂a/∂q, A_v = ∂a/∂v by forward differences (2p evaluations, p = size of q), dense,
 // refreshed every IntegratorOptions::jacobian_interval of simulated time, when h changes, or when
 // Newton stalls. The linear systems (I - c J) x = b reduce to the p x p matrix
@@ -23,7 +24,10 @@ class ImplicitIntegrator : public Integrator {
  public:
   explicit ImplicitIntegrator(const IntegratorOptions& options) : options_(options) {}
   void reset(const StateLayout& layout) override;
-  void restart() override { jac_valid_ = f0_valid_ = f0_projected_ = false; failure_.clear(); }
+  void restart() override {
+    jac_valid_ = f0_valid_ = f0_projected_ = false;
+    failure_.clear();
+  }
   void forcesChanged() override { f0_valid_ = f0_projected_ = false; }
   void stateProjected(const VecX& y) override {
     y_end_ = y;
@@ -55,7 +59,7 @@ class ImplicitIntegrator : public Integrator {
   double jac_t_ = 0.0, c_ = -1.0, t_end_ = 0.0;
   bool jac_valid_ = false, f0_valid_ = false;
   bool f0_projected_ = false;  // f0_ stale only by stateProjected() (the forces did not change)
-  bool structured_ = false;  // options_.jacobian == "structured": the system's O(n) solves
+  bool structured_ = false;    // options_.jacobian == "structured": the system's O(n) solves
   std::string failure_;
   Stats stats_;
 };
@@ -74,7 +78,10 @@ class OneStageImplicit : public ImplicitIntegrator {
   // stiff_root: r∞, in [-1, 0].
   OneStageImplicit(const IntegratorOptions& options, double theta, double kappa, double stiff_root);
   void reset(const StateLayout& layout) override;
-  void restart() override { ImplicitIntegrator::restart(); equal_steps_ = 0; }
+  void restart() override {
+    ImplicitIntegrator::restart();
+    equal_steps_ = 0;
+  }
   bool step(OdeSystem& sys, double t, VecX& y, double h) override;
   // The predictor's weights (a, b, c) on the last three increments (for its test).
   const Eigen::Vector3d& predictorWeights() const { return weights_; }
@@ -112,7 +119,7 @@ class OneStageImplicit : public ImplicitIntegrator {
   VecX d_[3];  // the last increments y1 - y0 of equal steps h_prev_, newest first
   Eigen::Vector3d weights_;
   NewtonReport last_newton_;
-  int equal_steps_ = 0;  // how many of d_ hold such increments (0: no predictor)
+  int equal_steps_ = 0;   // how many of d_ hold such increments (0: no predictor)
   bool weighted_ = true;  // the weighted start (else the last increment's): the one nearer the last stage
   double h_prev_ = 0.0;
 };
@@ -147,7 +154,10 @@ class GeneralizedAlpha : public OneStageImplicit {
   explicit GeneralizedAlpha(const IntegratorOptions& options);
   std::string name() const override { return "generalized_alpha"; }
   void reset(const StateLayout& layout) override;
-  void restart() override { OneStageImplicit::restart(); ydot_valid_ = false; }
+  void restart() override {
+    OneStageImplicit::restart();
+    ydot_valid_ = false;
+  }
   double rhoInf() const { return rho_inf_; }
 
  protected:

@@ -21,7 +21,7 @@ class IndependentData : public ChainData {
 
   MatX Mii;  // M_II (lower triangle filled)
   MatX W, C, X;
-  VecX f;    // generalised forces of every rfe with θ'' = 0 (4 per rfe, absolute coordinates)
+  VecX f;  // generalised forces of every rfe with θ'' = 0 (4 per rfe, absolute coordinates)
   VecX rhs, qdd;
   Eigen::LDLT<MatX> ldlt;
   AlignedVector<Vec2> abias, A_dd;

@@ -5,14 +5,14 @@
 namespace riser_sim {
 
 struct BodyKinematics {
-  Vec2 A = Vec2::Zero();      // point A_i [m]
-  Vec2 A_dot = Vec2::Zero();  // [m/s]
+  Vec2 A = Vec2::Zero();                // point A_i [m]
+  Vec2 A_dot = Vec2::Zero();            // [m/s]
   double delta = 0.0, delta_dot = 0.0;  // Δ_i [m], [m/s]
   double phi = 0.0, phi_dot = 0.0;      // φ_i [rad], [rad/s] from the x axis
   double c = 1.0, s = 0.0;              // cos φ_i, sin φ_i
   double len = 0.0;                     // l_i + Δ_i [m]
 
-  Vec2 e() const { return Vec2(c, s); }    // unit vector along the rfe (ξ)
+  Vec2 e() const { return Vec2(c, s); }     // unit vector along the rfe (ξ)
   Vec2 nrm() const { return Vec2(-s, c); }  // unit normal (η)
   // Point at distance s0 + kappa*Δ from A_i, and its velocity.
   Vec2 point(double s0, double kappa) const { return A + (s0 + kappa * delta) * e(); }

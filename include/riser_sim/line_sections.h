@@ -12,10 +12,10 @@ namespace riser_sim {
 
 // Hydrodynamics of one section; NaN: the scene's hydrodynamics block (the force term's coefficient).
 struct SectionHydro {
-  double drag_diameter = 0.0;  // D of the Morison drag [m]; 0: the section's outer_diameter
+  double drag_diameter = 0.0;                       // D of the Morison drag [m]; 0: the section's outer_diameter
   double drag_normal = NAN, drag_tangential = NAN;  // C_d across / along
-  double inertia_coefficient = NAN;  // C_M across (added mass C_M - 1 on the section's displaced area)
-  double axial_added_mass = NAN;     // C_a,t along
+  double inertia_coefficient = NAN;                 // C_M across (added mass C_M - 1 on the section's displaced area)
+  double axial_added_mass = NAN;                    // C_a,t along
 };
 
 // Buoyancy modules clamped on a section, as a vendor sheet gives them (smeared by smearModules).
@@ -31,8 +31,8 @@ struct BuoyancyModules {
 };
 
 struct LineSection {
-  double length = 0.0;  // [m]
-  int elements = 1;     // segments of length length / elements
+  double length = 0.0;   // [m]
+  int elements = 1;      // segments of length length / elements
   LineProperties props;  // outer_diameter sets the displaced area (buoyancy, added mass, Froude-Krylov)
   SectionHydro hydro;
   BuoyancyModules modules;  // the sheet the section's smeared properties came from (enabled: smeared)
@@ -60,7 +60,7 @@ struct BendStiffener {
   double length = 0.0;  // [m]
   bool conical = false;
   double modulus = 0.0, root_diameter = 0.0, tip_diameter = 0.0, bore = 0.0, line_EI = 0.0;  // conical
-  std::vector<double> x, EI;                                                                // table
+  std::vector<double> x, EI;                                                                 // table
   double at(double x) const;  // EI [N m^2], x clamped to [0, length]
 };
 

@@ -16,13 +16,13 @@ namespace riser_sim {
 
 struct LinearStability {
   bool stable = true;
-  double growth = 0.0;      // largest Re λ [1/s] (the first-order path) or -(lowest ω² of K_sym) [1/s²]
-  double bound = 0.0;       // noise bound on growth, same unit
-  double frequency = 0.0;   // |Im λ| of the worst eigenvalue [rad/s]: 0 a divergence, > 0 a flutter
-  int unstable = 0;         // eigenvalues beyond the bound
-  int size = 0;             // p: the dofs of the problem (after the end conditions)
-  bool first_order = false; // the 2p eigen-solve was needed (asymmetric K, or C not semi-definite)
-  bool reduced = false;     // p > kDenseStabilityLimit: solved in the lowest modes' subspace (see .cpp)
+  double growth = 0.0;           // largest Re λ [1/s] (the first-order path) or -(lowest ω² of K_sym) [1/s²]
+  double bound = 0.0;            // noise bound on growth, same unit
+  double frequency = 0.0;        // |Im λ| of the worst eigenvalue [rad/s]: 0 a divergence, > 0 a flutter
+  int unstable = 0;              // eigenvalues beyond the bound
+  int size = 0;                  // p: the dofs of the problem (after the end conditions)
+  bool first_order = false;      // the 2p eigen-solve was needed (asymmetric K, or C not semi-definite)
+  bool reduced = false;          // p > kDenseStabilityLimit: solved in the lowest modes' subspace (see .cpp)
   std::string describe() const;  // "the equilibrium is unstable: ..." ("" when stable)
 };
 

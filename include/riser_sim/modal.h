@@ -33,9 +33,9 @@ namespace riser_sim {
 struct Scene;
 
 struct ModalOptions {
-  int modes = 10;          // how many of the lowest modes to return (clamped to the number of dofs)
-  double fd_step = 1e-6;   // central-difference step: rad for φ, × segment length for Δ
-  double time = 0.0;       // t [s] at which the forces are evaluated
+  int modes = 10;         // how many of the lowest modes to return (clamped to the number of dofs)
+  double fd_step = 1e-6;  // central-difference step: rad for φ, × segment length for Δ
+  double time = 0.0;      // t [s] at which the forces are evaluated
 };
 
 struct Mode {
@@ -45,23 +45,23 @@ struct Mode {
   double period = 0.0;     // [s], 0 when ω == 0 (no oscillation)
   // Share of the mode's kinetic energy (rigid parts) moving along the line, 0..1.
   double axial_fraction = 0.0;
-  std::string character;   // "axial" (axial_fraction > 0.5) or "transverse"
-  VecX theta;              // mode in θ, mass-normalised: θ^T M_II θ = 1
+  std::string character;  // "axial" (axial_fraction > 0.5) or "transverse"
+  VecX theta;             // mode in θ, mass-normalised: θ^T M_II θ = 1
   // Displacements of A_0..A_n and of the end point (n+2), scaled so that the largest is 1 (unitless)
   // and its x (or y) component is positive.
   AlignedVector<Vec2> displacement;
 };
 
 struct ModalResult {
-  std::vector<double> arc_length;  // unstretched arc length of A_0..A_n, end [m] (n+2)
-  AlignedVector<Vec2> points;      // equilibrium positions of A_0..A_n, end [m]
-  std::vector<Mode> modes;         // lowest first
-  int coordinates = 0;             // size of θ
-  int dofs = 0;                    // size of the eigenproblem (coordinates - 2 when pinned)
-  bool pinned = false;             // the two end constraints were applied
+  std::vector<double> arc_length;     // unstretched arc length of A_0..A_n, end [m] (n+2)
+  AlignedVector<Vec2> points;         // equilibrium positions of A_0..A_n, end [m]
+  std::vector<Mode> modes;            // lowest first
+  int coordinates = 0;                // size of θ
+  int dofs = 0;                       // size of the eigenproblem (coordinates - 2 when pinned)
+  bool pinned = false;                // the two end constraints were applied
   double equilibrium_residual = 0.0;  // max |Q_θ| (with the end load) / force scale: ~0 at equilibrium
-  double asymmetry = 0.0;          // ||K - K^T||_F / ||K||_F before symmetrisation
-  MatX stiffness, mass;            // the (reduced) K and M of the eigenproblem
+  double asymmetry = 0.0;             // ||K - K^T||_F / ||K||_F before symmetrisation
+  MatX stiffness, mass;               // the (reduced) K and M of the eigenproblem
 };
 
 // Modes about `equilibrium` (zero velocities; A_0 = equilibrium[0].A) with `end_force` [N] applied at

@@ -25,15 +25,15 @@ struct RigidPart {
 };
 
 struct Rfe {
-  double length = 0.0;       // l_i, unstretched [m]
-  double length1 = 0.0;      // l_i^(1) [m]
-  double length2 = 0.0;      // l_i^(2) [m]
+  double length = 0.0;           // l_i, unstretched [m]
+  double length1 = 0.0;          // l_i^(1) [m]
+  double length2 = 0.0;          // l_i^(2) [m]
   double axial_stiffness = 0.0;  // c_i^l = EA / l_i [N/m]
   double axial_damping = 0.0;    // c_EA / l_i [N s/m]
   double s_begin = 0.0;          // arc length of A_i from the top, unstretched [m]
   // Parts (1), (2), then on rfe n the end mass, then point masses (Model::addPointMass; at most one per kappa).
   RigidPart part[4];
-  int section[2] = {0, 0};       // the line section of parts (1) and (2)
+  int section[2] = {0, 0};  // the line section of parts (1) and (2)
   int num_parts = 2;
   // Sums over the parts (s_p = s0_p + kappa_p Δ): m = Σm, mk = Σ m kappa, S(Δ) = S0 + mk Δ,
   // Σ m kappa s = Sk0 + mk Δ, I_A(Δ) = Σ (m s² + J) = I0 + 2 Sk0 Δ + mk Δ².
@@ -61,11 +61,11 @@ class Model {
   Model(const Model&) = delete;
   Model& operator=(const Model&) = delete;
 
-  int segments() const { return n_; }           // n
-  int bodies() const { return n_ + 1; }         // rfes 0..n
+  int segments() const { return n_; }    // n
+  int bodies() const { return n_ + 1; }  // rfes 0..n
   int dofs() const { return kDofPerBody * (n_ + 1); }
-  double length() const { return length_; }      // L [m]
-  double segmentLength() const { return d_; }    // mean segment length L/n [m] (scales, tolerances)
+  double length() const { return length_; }                  // L [m]
+  double segmentLength() const { return d_; }                // mean segment length L/n [m] (scales, tolerances)
   double segmentLength(int j) const { return segment_[j]; }  // d_j, j = 0..n-1 [m]
   const Rfe& rfe(int i) const { return rfe_[i]; }
   // The top section's properties (the whole line's when uniform); per part: partSection.
@@ -75,14 +75,14 @@ class Model {
   const LineSection& partSection(int i, int p) const { return sections_[rfe_[i].section[p]]; }
   bool uniform() const { return uniform_; }  // one section, no stiffener
   const ModelOptions& options() const { return options_; }
-  double endMass() const { return end_mass_; }   // m_s [kg]
-  double gravity() const { return gravity_; }    // g [m/s^2], acting along -y
+  double endMass() const { return end_mass_; }  // m_s [kg]
+  double gravity() const { return gravity_; }   // g [m/s^2], acting along -y
   // Spring between rfes i-1 and i, i = 1..n: c_i = 1 / ∫ ds/EI over segment i-1 (EI/d_{i-1} when EI is
   // constant there) [N m/rad]; damper c_EI / d_{i-1} [N m s/rad]. 0 without bending.
   double bendingStiffness(int i) const { return bend_k_[i]; }
   double bendingDamping(int i) const { return bend_c_[i]; }
   bool hasBending() const { return has_bending_; }  // some spring or damper is not 0
-  double totalMass() const;  // line + contents + end mass + point masses [kg]
+  double totalMass() const;                         // line + contents + end mass + point masses [kg]
   // A point mass [kg] fixed to rfe i at s0 [m] from A_i, on part (1) (kappa 0) or (2) (kappa 1): an attachment
   // (attachment.h). Merged into a point part of rfe i with the same kappa (exact: the rfe's mass, first and
   // second moments are sums). Throws std::invalid_argument on an rfe, place or kappa that is not there.
@@ -92,7 +92,10 @@ class Model {
   // Bottom end condition (pinned: the end of rfe n is held at a fixed point).
   BottomBoundary bottom() const { return bottom_; }
   const Vec2& bottomPoint() const { return bottom_point_; }
-  void setBottom(BottomBoundary b, const Vec2& p) { bottom_ = b; bottom_point_ = p; }
+  void setBottom(BottomBoundary b, const Vec2& p) {
+    bottom_ = b;
+    bottom_point_ = p;
+  }
 
   // Force terms the scene asked for; only these are evaluated.
   void addTerm(std::unique_ptr<ForceTerm> term);

@@ -20,11 +20,11 @@ enum class ModeStatus { kOscillating, kZero, kUnstable };  // unstable: ω² < 0
 const char* name(ModeStatus status);
 
 struct ModeEntry {
-  double omega2 = 0.0;     // ω² [1/s²]
-  double omega = 0.0;      // [rad/s], 0 when ω² <= 0
-  double period = 0.0;     // 2π/ω [s], 0 when ω = 0
-  double frequency = 0.0;  // ω/2π [Hz]
-  std::string character;   // one of modeCharacters(space)
+  double omega2 = 0.0;       // ω² [1/s²]
+  double omega = 0.0;        // [rad/s], 0 when ω² <= 0
+  double period = 0.0;       // 2π/ω [s], 0 when ω = 0
+  double frequency = 0.0;    // ω/2π [Hz]
+  std::string character;     // one of modeCharacters(space)
   double axial_share = 0.0;  // share of the kinetic energy (rigid parts) moving along the line, 0..1
   ModeStatus status = ModeStatus::kOscillating;
   // Displacement of each point (ModesReport::points), unitless: the largest |displacement| is 1.
@@ -33,17 +33,17 @@ struct ModeEntry {
 
 struct ModesReport {
   SpaceKind space = SpaceKind::kPlanar;
-  int coordinates = 0;  // generalised coordinates of the linearisation
-  int dofs = 0;         // size of the eigenproblem: the most modes there are
+  int coordinates = 0;                // generalised coordinates of the linearisation
+  int dofs = 0;                       // size of the eigenproblem: the most modes there are
   double equilibrium_residual = 0.0;  // max generalised force at the state / force scale: ~0 at equilibrium
   double asymmetry = 0.0;             // ||K - Kᵀ||_F / ||K||_F before symmetrisation
   // What the modes are about ("displaced static state", "hanging equilibrium (initial.type straight is none)",
   // "equilibrium relaxed from the straight start (...)"), and one line with it, the statics, the coordinates,
   // the end load and the residuals.
   std::string about, header;
-  std::vector<double> arc_length;       // unstretched arc length of A_0..A_n and the end [m] (n + 2)
+  std::vector<double> arc_length;         // unstretched arc length of A_0..A_n and the end [m] (n + 2)
   AlignedVector<Eigen::Vector3d> points;  // A_0..A_n and the end at the state [m]
-  std::vector<ModeEntry> modes;         // the lowest min(count, dofs), lowest first
+  std::vector<ModeEntry> modes;           // the lowest min(count, dofs), lowest first
 };
 
 // The scene's statics (its initial state with the top where scene.top has it at t = 0), then the lowest

@@ -29,11 +29,11 @@ class RecursiveData : public ChainData {
 
   // Per rfe, from the backward pass (K = coordinates per rfe; stored with room for K = 2).
   struct Node {
-    Mat2 Lam;    // Λ_i
-    Mat2 T;      // ∂β_i/∂f_{n+1} (pinned bottom only)
-    Mat2 Bh;     // B̂ (2xK used)
-    Mat2 Dinv;   // D̂^-1 (KxK used)
-    Mat2 G;      // G_i (2xK used)
+    Mat2 Lam;   // Λ_i
+    Mat2 T;     // ∂β_i/∂f_{n+1} (pinned bottom only)
+    Mat2 Bh;    // B̂ (2xK used)
+    Mat2 Dinv;  // D̂^-1 (KxK used)
+    Mat2 G;     // G_i (2xK used)
     Vec2 beta, rho, c;
     EIGEN_MAKE_ALIGNED_OPERATOR_NEW
   };
@@ -43,7 +43,7 @@ class RecursiveData : public ChainData {
   // u''_i = U A''_i + u0, f_i = Λ A''_i + β, A''_{i+1} = M A''_i + m (world axes).
   struct RigidNode {
     double U00, U01, U10, U11, u0, u1;  // (Δ'', φ'') response
-    double La, Lb, Ld, bx, by;         // Λ_i = [[La, Lb], [Lb, Ld]], β_i
+    double La, Lb, Ld, bx, by;          // Λ_i = [[La, Lb], [Lb, Ld]], β_i
     double M00, M01, M10, M11, mx, my;  // A''_{i+1}
   };
   AlignedVector<Node> node;
@@ -68,9 +68,9 @@ class RecursiveFormulation : public ChainFormulation {
   Vec2 pinnedTipForce(const Vec2& a_top, RecursiveData& d) const;
 
   // Fills the forward coefficients of nd from the backward pass's quantities in the rfe frame.
-  static void finishNode(RigidNode& nd, double c, double s, double len, double c0, double c1, double Di00,
-                         double Di01, double Di11, double Bh00, double Bh01, double Bh10, double Bh11, double rho0,
-                         double rho1, double L00, double L01, double L11, double be, double bn);
+  static void finishNode(RigidNode& nd, double c, double s, double len, double c0, double c1, double Di00, double Di01,
+                         double Di11, double Bh00, double Bh01, double Bh10, double Bh11, double rho0, double rho1,
+                         double L00, double L01, double L11, double be, double bn);
   void rigidBackwardAxial(RecursiveData& d) const;
   void rigidBackwardLocked(RecursiveData& d) const;
   template <bool Axial>

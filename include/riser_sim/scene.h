@@ -22,11 +22,11 @@ namespace riser_sim {
 // values in 3D, [x, y, z] with z up (REP 103; space: spatial reads only them). A scene's 2-vector
 // [a, b] is (a, b) planar and (a, 0, b) in 3D; a 3-vector [x, y, z] is (x, z) planar (y = 0 there).
 struct TopMotionSpec {
-  MotionKind type = MotionKind::kFixed;  // top.motion.type
-  Vec2 position = Vec2::Zero();   // top.position: A_0 at t = 0 (centre of a sinusoid) [m]
-  Vec2 amplitude = Vec2::Zero();  // sinusoid [m]
-  double period = 1.0;            // sinusoid [s]
-  double phase = 0.0;             // sinusoid [rad]
+  MotionKind type = MotionKind::kFixed;            // top.motion.type
+  Vec2 position = Vec2::Zero();                    // top.position: A_0 at t = 0 (centre of a sinusoid) [m]
+  Vec2 amplitude = Vec2::Zero();                   // sinusoid [m]
+  double period = 1.0;                             // sinusoid [s]
+  double phase = 0.0;                              // sinusoid [rad]
   std::vector<VelocityProfileMotion::Knot> knots;  // velocity_profile: (t [s], v [m/s])
   struct Knot3 {
     double t;
@@ -45,24 +45,24 @@ struct TopMotionSpec {
 // A flex joint at an end (space: spatial; spatial/forces/flex_joint.h): a rotational spring k and damper c
 // between the end rfe and the holder's axis. Absent: the end is pinned (free rotation).
 struct FlexJointSpec {
-  bool enabled = false;        // top.flex_joint / bottom.flex_joint present
-  double stiffness = 0.0;      // k [N m/rad] > 0
-  double damping = 0.0;        // c [N m s/rad] >= 0
-  bool has_axis = false;       // axis given; else the line's direction there in the initial state
+  bool enabled = false;                            // top.flex_joint / bottom.flex_joint present
+  double stiffness = 0.0;                          // k [N m/rad] > 0
+  double damping = 0.0;                            // c [N m s/rad] >= 0
+  bool has_axis = false;                           // axis given; else the line's direction there in the initial state
   Eigen::Vector3d axis = Eigen::Vector3d::Zero();  // along the line, away from the holder
-  double torsional_stiffness = 0.0;  // k_t [N m/rad] about the line's axis (top, line.torsion); 0: none
-  double torsional_damping = 0.0;    // c_t [N m s/rad] beside k_t: moment c_t m_t' on the twist rate
+  double torsional_stiffness = 0.0;                // k_t [N m/rad] about the line's axis (top, line.torsion); 0: none
+  double torsional_damping = 0.0;                  // c_t [N m s/rad] beside k_t: moment c_t m_t' on the twist rate
 };
 
 struct InitialSpec {
   InitialKind type = InitialKind::kHanging;  // initial.type
-  double end_dx = 0.0;           // displaced: x_end - x_top [m]
+  double end_dx = 0.0;                       // displaced: x_end - x_top [m]
   // displaced, 3D: horizontal offset (x, y) of the end from the top [m]: initial.end_offset, or
   // (end_dx, 0) when only end_dx is given.
   Vec2 end_offset = Vec2::Zero();
-  double heading = 0.0;          // straight, 3D: azimuth of the line's vertical plane from +x towards +y [rad]
-  double angle = -M_PI / 2;      // straight: φ [rad] (-π/2 = hanging straight down)
-  double tolerance = 1e-9;       // statics: residual relative to the line's weight
+  double heading = 0.0;      // straight, 3D: azimuth of the line's vertical plane from +x towards +y [rad]
+  double angle = -M_PI / 2;  // straight: φ [rad] (-π/2 = hanging straight down)
+  double tolerance = 1e-9;   // statics: residual relative to the line's weight
   // displaced: "release" drops the statics' horizontal end force at t = 0 (the end is let go);
   // "hold" keeps it as a constant end load (EndLoad), so the initial state is an exact equilibrium.
   EndForceKind end_force = EndForceKind::kRelease;
@@ -83,7 +83,8 @@ struct TorsionSpec {
 struct BendingAxesSpec {
   bool enabled = false;
   double EI1 = 0.0, EI2 = 0.0;  // about axis 1, about axis 2 = e × axis 1 [N m^2]
-  Eigen::Vector3d axis = Eigen::Vector3d::Zero();  // axis 1 at the hang-off at t = 0 (world; its part normal to the top rfe)
+  Eigen::Vector3d axis =
+      Eigen::Vector3d::Zero();  // axis 1 at the hang-off at t = 0 (world; its part normal to the top rfe)
 };
 
 struct HydroSpec {
@@ -97,18 +98,18 @@ struct HydroSpec {
 struct Scene {
   std::string name;
   SpaceKind space = SpaceKind::kPlanar;  // space: planar (2D core) or spatial (3D core, spatial/run_builder.h)
-  double length = 0.0;   // line.length [m]
-  int elements = 0;      // line.elements: n segments (n + 1 rfes)
+  double length = 0.0;                   // line.length [m]
+  int elements = 0;                      // line.elements: n segments (n + 1 rfes)
   LineProperties line;
   // line.sections from the top (empty: one uniform section, the line's); the sections' lengths add up to
   // length and their elements to elements. line.bend_stiffener: EI(s) near an end.
   std::vector<LineSection> sections;
   std::vector<BendStiffener> stiffeners;
   ModelOptions options;
-  double end_mass = 0.0;  // line.end_mass [kg]
-  TorsionSpec torsion;    // line.torsion
+  double end_mass = 0.0;         // line.end_mass [kg]
+  TorsionSpec torsion;           // line.torsion
   BendingAxesSpec bending_axes;  // line.EI: [EI_1, EI_2], line.bending_axis
-  double gravity = 9.81;  // environment.gravity [m/s^2]
+  double gravity = 9.81;         // environment.gravity [m/s^2]
   TopMotionSpec top;
   FlexJointSpec top_flex_joint;  // top.flex_joint (3D)
   BottomBoundary bottom = BottomBoundary::kFree;
@@ -122,10 +123,10 @@ struct Scene {
   SolverSettings solver;
   double duration = 20.0;  // run.duration [s] (CLI default)
   // Sea and flow (each optional; a section that is absent builds no term).
-  WaterSpec water;          // environment.water / current / waves
-  HydroSpec hydro;          // hydrodynamics
-  SeabedSpec seabed;        // seabed
-  InternalFlowSpec internal_fluid;  // internal_fluid
+  WaterSpec water;                          // environment.water / current / waves
+  HydroSpec hydro;                          // hydrodynamics
+  SeabedSpec seabed;                        // seabed
+  InternalFlowSpec internal_fluid;          // internal_fluid
   std::vector<AttachmentSpec> attachments;  // attachments: point bodies on the line (attachment.h)
 };
 

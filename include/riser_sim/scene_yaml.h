@@ -34,8 +34,7 @@ Scene parseScene(const YAML::Node& root);
 // Reads FILE, applies "key.path=value" overrides (value parsed as YAML), parses. Throws SceneError.
 Scene loadSceneFile(const std::string& path, const std::vector<std::string>& overrides = {});
 // The same for scene text; SOURCE names it in syntax errors ("SOURCE:line:column: ...").
-Scene loadSceneText(const std::string& text, const std::string& source,
-                    const std::vector<std::string>& overrides = {});
+Scene loadSceneText(const std::string& text, const std::string& source, const std::vector<std::string>& overrides = {});
 // "unknown key (did you mean 'length'?)" when an accepted key is within two edits of `key`, else
 // "unknown key (accepted: a, b, ...)". The scene loader's message; the node's parameters use it too.
 std::string unknownKeyMessage(const std::string& key, const std::vector<std::string>& accepted);

@@ -22,12 +22,12 @@ namespace riser_sim {
 constexpr double kEnergyDriftWarning = 1e-3;
 
 struct SolverSettings {
-  double dt = 1e-3;                     // solver.dt [s]
+  double dt = 1e-3;  // solver.dt [s]
   IntegratorKind integrator = IntegratorKind::kRk4;
   FormulationKind formulation = FormulationKind::kAbsolute;
-  double stabilization = 50.0;          // Baumgarte frequency ω_c [rad/s] (c'' + 2ω_c c' + ω_c² c = 0)
-  double max_constraint_error = 0.05;   // divergence when the joint gap exceeds this × d
-  double tolerance = 1e-6;              // solver.tolerance: dopri5 error control (atol = rtol)
+  double stabilization = 50.0;         // Baumgarte frequency ω_c [rad/s] (c'' + 2ω_c c' + ω_c² c = 0)
+  double max_constraint_error = 0.05;  // divergence when the joint gap exceeds this × d
+  double tolerance = 1e-6;             // solver.tolerance: dopri5 error control (atol = rtol)
   // solver.jacobian_interval [s]: refresh period of the implicit schemes' dense Jacobian (the structured
   // solves relinearise every step). 0.1 s: on the absolute formulation rosenbrock2 needs a Jacobian that
   // follows the line's rotation (Table 1, n = 10, h = 0.01 s: 1 s lets the joints drift apart, 0.1 s holds
@@ -76,7 +76,7 @@ class Simulator : private OdeSystem {
 
   // Every output at the current state (one extra evaluation for the reactions).
   const LineOutputs& outputs();
-  double totalEnergy();     // T + V [J]
+  double totalEnergy();  // T + V [J]
   double initialEnergy() const { return e0_; }
   double work() const { return y_[y_.size() - 1]; }
   // (E - E0 - W) / max(|E0|, m g L): relative energy-balance error.

@@ -61,10 +61,10 @@ StaticsResult solveStatics(const Model& model, const StaticsProblem& problem, do
 // in water, current drag), plus the end force.
 struct EquilibriumCheck {
   bool ok = false;
-  std::string message;          // "<check>: ..." when a check fails, empty when ok
-  double residual = 0.0;        // as StaticsResult::residual
-  double load = 0.0;            // [N]
-  double max_joint_force = 0.0; // [N]
+  std::string message;            // "<check>: ..." when a check fails, empty when ok
+  double residual = 0.0;          // as StaticsResult::residual
+  double load = 0.0;              // [N]
+  double max_joint_force = 0.0;   // [N]
   double max_seabed_force = 0.0;  // largest contact force [N]
 };
 constexpr double kSeabedLoadFactor = 2.0;

@@ -24,9 +24,9 @@ struct CurrentSpec {
 
 struct WaveSpec {
   WaveKind type = WaveKind::kRegular;  // regular (Airy) or irregular long-crested (JONSWAP)
-  double height = 0.0;     // H, crest to trough [m]; 0 = no waves
-  double period = 10.0;    // T [s]
-  double phase = 0.0;      // [rad]
+  double height = 0.0;                 // H, crest to trough [m]; 0 = no waves
+  double period = 10.0;                // T [s]
+  double phase = 0.0;                  // [rad]
   double direction = 1.0;  // +1 travels towards +x, -1 towards -x (in 3D: along +-(cos heading, sin heading))
   double heading = 0.0;    // azimuth of +direction from +x towards +y [rad] (3D only; planar: 0)
   double depth = 1000.0;   // water depth for the dispersion relation [m]
@@ -89,8 +89,10 @@ inline void submerged(double y0, double y1, double ys, double& fraction, double&
     fraction = 0.0, centroid = 0.5;
   } else {
     const double t = (ys - y0) / (y1 - y0);
-    if (y0 <= ys) fraction = t, centroid = 0.5 * t;
-    else fraction = 1.0 - t, centroid = 0.5 * (1.0 + t);
+    if (y0 <= ys)
+      fraction = t, centroid = 0.5 * t;
+    else
+      fraction = 1.0 - t, centroid = 0.5 * (1.0 + t);
   }
 }
 

@@ -23,11 +23,11 @@ std::string num(double v, const char* format = "%.6g");
 // The run as the integration loop holds it.
 struct RunView {
   RunMode mode = RunMode::kWaiting;
-  std::string reason;                              // why diverged / statics failed
-  NodeRun* line = nullptr;                         // null before the first start (energy is computed lazily)
-  ros::Time last_pose;                             // ROS time the last valid pose arrived (zero: none)
+  std::string reason;                                  // why diverged / statics failed
+  NodeRun* line = nullptr;                             // null before the first start (energy is computed lazily)
+  ros::Time last_pose;                                 // ROS time the last valid pose arrived (zero: none)
   bool missing_vessel = true, missing_bottom = false;  // waiting: the inputs without a valid pose yet
-  long failed_starts = 0;                          // start attempts that failed since the last start
+  long failed_starts = 0;                              // start attempts that failed since the last start
 };
 
 class NodeDiagnostics {

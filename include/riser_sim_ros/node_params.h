@@ -28,29 +28,30 @@ struct MarkerParams {
 constexpr double kMaxOffset = 1000.0;
 
 struct NodeParams {
-  std::string vessel_input = "pose";   // pose | odom | tf
+  std::string vessel_input = "pose";  // pose | odom | tf
   std::string fixed_frame = "world";
   std::string vessel_frame = "vessel";  // tf input: child frame looked up in fixed_frame
   std::string expected_frame;           // header.frame_id of pose/odom input; default fixed_frame
   std::string tf_prefix;                // default: node name without the leading slash
-  Eigen::Vector3d hangoff_offset = Eigen::Vector3d::Zero();  // hang-off point in the vessel frame [m], |.| <= kMaxOffset
+  Eigen::Vector3d hangoff_offset =
+      Eigen::Vector3d::Zero();         // hang-off point in the vessel frame [m], |.| <= kMaxOffset
   std::string wrench_frame = "fixed";  // 3D wrenches: fixed (fixed_frame) | body (vessel_frame, bottom_frame)
   // A driven bottom (3D, bottom.motion.type external): ~bottom_pose's attachment point in the ROV frame [m]
   // and the frame_id of a body-frame ~bottom_wrench.
   Eigen::Vector3d bottom_offset = Eigen::Vector3d::Zero();
   std::string bottom_frame = "rov";
-  double pose_timeout = 1.0;       // no valid pose for this long: warn and hold [s]
-  double max_out_of_plane = 1.0;   // warn when the hang-off's world y exceeds this [m]
-  double max_position = 1e7;       // poses (and hang-off / bottom points) with a coordinate beyond this are ignored [m]
-  double max_pose_age = 1.0;       // poses stamped more than this before ROS time are ignored [s]
-  double max_pose_lead = 0.5;      // poses stamped more than this after ROS time are ignored [s]
-  double clock_timeout = 1.0;      // ROS time still for this long (wall time): paused, said on /diagnostics [s]
-  double tf_poll_rate = 50.0;      // tf input: lookup rate [Hz]
+  double pose_timeout = 1.0;      // no valid pose for this long: warn and hold [s]
+  double max_out_of_plane = 1.0;  // warn when the hang-off's world y exceeds this [m]
+  double max_position = 1e7;      // poses (and hang-off / bottom points) with a coordinate beyond this are ignored [m]
+  double max_pose_age = 1.0;      // poses stamped more than this before ROS time are ignored [s]
+  double max_pose_lead = 0.5;     // poses stamped more than this after ROS time are ignored [s]
+  double clock_timeout = 1.0;     // ROS time still for this long (wall time): paused, said on /diagnostics [s]
+  double tf_poll_rate = 50.0;     // tf input: lookup rate [Hz]
   // ~rates/<name> [Hz], 0 = off: the data topics of line_topics.h (dataTopicRates()) and "diagnostics".
   std::map<std::string, double> rates;
-  double loop_rate = 500.0;        // integration loop wake-ups per wall second [Hz]
-  int max_steps_per_cycle = 500;   // cap of solver steps per wake-up
-  double max_lag = 0.5;            // backlog (ROS time not yet simulated) dropped beyond this [s]
+  double loop_rate = 500.0;       // integration loop wake-ups per wall second [Hz]
+  int max_steps_per_cycle = 500;  // cap of solver steps per wake-up
+  double max_lag = 0.5;           // backlog (ROS time not yet simulated) dropped beyond this [s]
   MarkerParams markers;
   riser_sim::ExternalMotionOptions motion;  // ~motion/*: smoothing of the vessel samples
 };

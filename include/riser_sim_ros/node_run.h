@@ -31,8 +31,8 @@ struct RunHealth {
   double energy = 0.0, energy_drift = 0.0;                    // [J], relative
   riser_sim::ForceNoise noise;                                // last 10 s
   std::string force_warning;                                  // empty: forces resolved
-  Eigen::Vector3d hangoff = Eigen::Vector3d::Zero();           // A_0 now, fixed_frame [m]
-  riser_sim::MotionGaps gaps, bottom_gaps;                     // of the vessel's (a driven bottom's) samples
+  Eigen::Vector3d hangoff = Eigen::Vector3d::Zero();          // A_0 now, fixed_frame [m]
+  riser_sim::MotionGaps gaps, bottom_gaps;                    // of the vessel's (a driven bottom's) samples
 };
 
 class NodeRun {
@@ -74,10 +74,10 @@ class NodeRun {
 
  private:
   std::unique_ptr<riser_sim::LineRun> run_;
-  const riser_sim::RunOutputs* out_ = nullptr;  // of the last evaluate()
+  const riser_sim::RunOutputs* out_ = nullptr;                  // of the last evaluate()
   Eigen::Quaterniond vessel_ = Eigen::Quaterniond::Identity();  // orientation of the latest vessel sample
   Eigen::Quaterniond rov_ = Eigen::Quaterniond::Identity();     // of the latest bottom sample
-  bool pinned_;  // a 3D pinned bottom: ~bottom_wrench
+  bool pinned_;                                                 // a 3D pinned bottom: ~bottom_wrench
   LineMessages msgs_;
   LineMarkers markers_;
   std::unique_ptr<SeaMarkers> sea_;  // 3D: its markers appended to markers_.msg

@@ -77,7 +77,7 @@ class RiserSimNode {
   SampleBuffer samples_;
   std::unique_ptr<VesselInput> input_;
   SampleBuffer bottom_samples_;
-  std::unique_ptr<VesselInput> bottom_input_;  // a driven bottom only
+  std::unique_ptr<VesselInput> bottom_input_;       // a driven bottom only
   std::unique_ptr<CheckedTfListener> tf_listener_;  // after input_: its callbacks use it
   std::array<VesselSample, SampleBuffer::kCapacity> drained_, bottom_drained_;
   RosClockWatch clock_;
@@ -87,10 +87,10 @@ class RiserSimNode {
   ros::ServiceServer reset_srv_;
 
   std::unique_ptr<NodeRun> line_;
-  RunView run_;                    // mode, reason, line_, last pose: what /diagnostics reports
+  RunView run_;  // mode, reason, line_, last pose: what /diagnostics reports
   std::atomic<bool> stop_{false};
-  ros::Time origin_;               // sim time t = (ROS time - origin_) - dropped_
-  double dropped_ = 0.0;           // backlog dropped when the integration fell behind [s]
+  ros::Time origin_;      // sim time t = (ROS time - origin_) - dropped_
+  double dropped_ = 0.0;  // backlog dropped when the integration fell behind [s]
   ros::Time last_start_attempt_, last_bottom_pose_;
   // Rate limits of repeated warnings, per riser (ROS_WARN_THROTTLE's limit is shared by every riser of
   // a nodelet manager) and on wall time.
@@ -99,7 +99,7 @@ class RiserSimNode {
   // with the number of failures in between (all counted on /diagnostics).
   static constexpr double kStartErrorPeriod = 60.0;  // [s] of wall time
   WallClock::time_point start_error_logged_;
-  long start_failures_logged_ = 0;  // run_.failed_starts at the last line
+  long start_failures_logged_ = 0;      // run_.failed_starts at the last line
   std::unique_ptr<ModesServer> modes_;  // last: stopped first on destruction
 };
 

@@ -23,8 +23,8 @@
 namespace riser_sim_ros {
 
 struct VesselSample {
-  ros::Time stamp;               // header stamp of the pose
-  ros::Time received;            // ROS time when it arrived
+  ros::Time stamp;                                    // header stamp of the pose
+  ros::Time received;                                 // ROS time when it arrived
   Eigen::Vector3d hangoff = Eigen::Vector3d::Zero();  // hang-off (or bottom attachment) point in fixed_frame [m]
   Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();  // vessel (or ROV) frame -> fixed_frame
 };
@@ -53,8 +53,8 @@ class SampleBuffer {
 // Checks one pose: frame_id (leading '/' ignored) equals expected_frame, stamp non-zero, all values
 // finite, |position| components at most max_position [m], quaternion of norm within 1 % of 1
 // (normalised then). Fills `pose`; returns an empty string when valid, else the reason naming the field.
-std::string checkPose(const std_msgs::Header& header, const geometry_msgs::Pose& msg,
-                      const std::string& expected_frame, Eigen::Isometry3d& pose, double max_position = 1e7);
+std::string checkPose(const std_msgs::Header& header, const geometry_msgs::Pose& msg, const std::string& expected_frame,
+                      Eigen::Isometry3d& pose, double max_position = 1e7);
 
 // Checks a stamp against ROS time `now` and the last accepted stamp `last` (zero: none): not more than
 // max_age [s] old, not more than max_lead [s] ahead, newer than `last`. Empty when valid, else the reason.
@@ -110,9 +110,9 @@ class VesselInput {
 
   const NodeParams& params_;
   std::string name_;
-  std::string kind_;              // pose | odom | tf
-  std::string what_;              // "vessel" | "bottom", in log lines
-  Eigen::Vector3d offset_;        // hangoff_offset | bottom_offset
+  std::string kind_;        // pose | odom | tf
+  std::string what_;        // "vessel" | "bottom", in log lines
+  Eigen::Vector3d offset_;  // hangoff_offset | bottom_offset
   tf2_ros::Buffer& tf_;
   SampleBuffer& out_;
   ros::Subscriber sub_;

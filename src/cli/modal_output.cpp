@@ -49,11 +49,15 @@ int runModes(const Scene& scene, int count, const std::string& csv_path, bool qu
   if (!quiet) std::fprintf(stderr, "riser_sim_cli: %s\n", r.header.c_str());
   // Even with --quiet:
   if (r.equilibrium_residual > 1e-6)
-    std::fprintf(stderr, "riser_sim_cli: warning: the state is not an equilibrium (residual %.2e); the modes are "
-                 "not meaningful\n", r.equilibrium_residual);
+    std::fprintf(stderr,
+                 "riser_sim_cli: warning: the state is not an equilibrium (residual %.2e); the modes are "
+                 "not meaningful\n",
+                 r.equilibrium_residual);
   if (count > static_cast<int>(r.modes.size()))
-    std::fprintf(stderr, "riser_sim_cli: warning: --modes %d: the line has %d modes (%d coordinates less its "
-                 "constraints); all shown\n", count, static_cast<int>(r.modes.size()), r.coordinates);
+    std::fprintf(stderr,
+                 "riser_sim_cli: warning: --modes %d: the line has %d modes (%d coordinates less its "
+                 "constraints); all shown\n",
+                 count, static_cast<int>(r.modes.size()), r.coordinates);
   OutputFile table;
   table.useStdout();
   int w = 0;  // the character column: the engine's widest name
@@ -72,8 +76,9 @@ int runModes(const Scene& scene, int count, const std::string& csv_path, bool qu
   if (csv_path.empty()) return kExitOk;
   OutputFile csv;
   if (!csv.open("--modes-csv", csv_path)) return fail(kExitBadInput, csv.error());
-  std::fprintf(csv.get(), r.space == SpaceKind::kSpatial ? "mode,period_s,frequency_hz,character,point,s,x,y,z,dx,dy,dz\n"
-                                                         : "mode,period_s,frequency_hz,character,point,s,x,y,dx,dy\n");
+  std::fprintf(csv.get(), r.space == SpaceKind::kSpatial
+                              ? "mode,period_s,frequency_hz,character,point,s,x,y,z,dx,dy,dz\n"
+                              : "mode,period_s,frequency_hz,character,point,s,x,y,dx,dy\n");
   for (size_t k = 0; k < r.modes.size() && csv.ok(); ++k) writeShapes(csv.get(), r, k);
   return csv.close() ? kExitOk : fail(kExitWriteFailed, csv.error());
 }

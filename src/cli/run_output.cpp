@@ -70,15 +70,16 @@ void writeRangeGraph(std::FILE* f, const RangeGraph& g) {
   }
 }
 
-std::string stabilityMessage(bool explicit_fixed_step, const std::string& scheme, double omega_max,
-                             double stable_dt, double dt) {
+std::string stabilityMessage(bool explicit_fixed_step, const std::string& scheme, double omega_max, double stable_dt,
+                             double dt) {
   char buf[320];
   if (explicit_fixed_step)
     std::snprintf(buf, sizeof(buf), "stability: highest frequency %g rad/s, %s stable for solver.dt <= ~%g s%s",
                   omega_max, scheme.c_str(), stable_dt,
                   dt > stable_dt ? " -- solver.dt is above it, the run will likely diverge" : "");
   else
-    std::snprintf(buf, sizeof(buf), "stability: highest frequency %g rad/s (rk4 would need solver.dt <= ~%g s); %s has no such limit",
+    std::snprintf(buf, sizeof(buf),
+                  "stability: highest frequency %g rad/s (rk4 would need solver.dt <= ~%g s); %s has no such limit",
                   omega_max, stable_dt, scheme.c_str());
   return buf;
 }

@@ -42,8 +42,8 @@ std::string energyWarning(double drift);
 // The "stability: ..." line of a run, planar or spatial: the highest frequency [rad/s] and the estimated
 // limit [s] of the explicit fixed-step scheme (with a note when solver.dt is above it), or rk4's for
 // reference when the scheme has no such limit.
-std::string stabilityMessage(bool explicit_fixed_step, const std::string& scheme, double omega_max,
-                             double stable_dt, double dt);
+std::string stabilityMessage(bool explicit_fixed_step, const std::string& scheme, double omega_max, double stable_dt,
+                             double dt);
 
 class JsonLine;
 
@@ -55,9 +55,9 @@ struct RunEnd {
   double sim_s = 0.0;
   long steps = 0, total_steps = 0;
 };
-// The end of a run after its stepping (LineRun: time(), steps(), forceNoise(), forceWarning()). Closes (flushes) the CSV and reads whether it was written completely;
-// a run that did not diverge warns when its energy balance is off by energy_drift (energyWarning) or its
-// forces are noisy (Run::forceWarning), both joined by "; ".
+// The end of a run after its stepping (LineRun: time(), steps(), forceNoise(), forceWarning()). Closes (flushes) the
+// CSV and reads whether it was written completely; a run that did not diverge warns when its energy balance is off by
+// energy_drift (energyWarning) or its forces are noisy (Run::forceWarning), both joined by "; ".
 template <class Run>
 RunEnd runEnd(const Run& run, long total_steps, const std::string& diverged, double energy_drift, OutputFile& csv,
               bool csv_asked) {

@@ -68,8 +68,8 @@ bool AbsoluteFormulation::holdsState(const VecX& y, const Kinematics& kin) const
     const BodyKinematics& b = kin[i];
     const double* q = y.data() + 4 * i;
     const double* v = y.data() + nq + 4 * i;
-    if (!(b.A.x() == q[kX] && b.A.y() == q[kY] && b.A_dot.x() == v[kX] && b.A_dot.y() == v[kY] &&
-          b.phi == q[kPhi] && b.phi_dot == v[kPhi] && (!axial || (b.delta == q[kDelta] && b.delta_dot == v[kDelta]))))
+    if (!(b.A.x() == q[kX] && b.A.y() == q[kY] && b.A_dot.x() == v[kX] && b.A_dot.y() == v[kY] && b.phi == q[kPhi] &&
+          b.phi_dot == v[kPhi] && (!axial || (b.delta == q[kDelta] && b.delta_dot == v[kDelta]))))
       return false;
   }
   return true;

@@ -52,7 +52,8 @@ bool ChainFormulation::holdsState(const VecX& y, const Kinematics& kin) const {
   for (int i = 0; i < model_.bodies(); ++i) {
     const BodyKinematics& b = kin[i];
     const int c = k_ * i + k_ - 1;
-    if (!(b.phi == y[c] && b.phi_dot == y[nt + c] && (k_ == 1 || (b.delta == y[2 * i] && b.delta_dot == y[nt + 2 * i]))))
+    if (!(b.phi == y[c] && b.phi_dot == y[nt + c] &&
+          (k_ == 1 || (b.delta == y[2 * i] && b.delta_dot == y[nt + 2 * i]))))
       return false;
   }
   return true;

@@ -20,8 +20,8 @@ ChainShiftedSolver::ChainShiftedSolver(const Model& model, int dofs_per_rfe)
   f_.assign(nb_, Vec4::Zero());
 }
 
-void ChainShiftedSolver::setLinearization(const Kinematics& kin, const AlignedVector<Mat4>& M,
-                                          const StiffnessBlocks& S, const AlignedVector<Vec2>& joint) {
+void ChainShiftedSolver::setLinearization(const Kinematics& kin, const AlignedVector<Mat4>& M, const StiffnessBlocks& S,
+                                          const AlignedVector<Vec2>& joint) {
   kin_ = &kin;
   M_ = &M;
   S_ = &S;
@@ -94,8 +94,10 @@ void ChainShiftedSolver::factor(double c) {
     if (pinned_) {
       Mat24 FT;  // F^T T_{i+1} (k x 2)
       FT.setZero();
-      if (k_ == 2) FT.leftCols<2>() = T.bottomRows<2>();
-      else FT.row(0).head<2>() = T.row(3);
+      if (k_ == 2)
+        FT.leftCols<2>() = T.bottomRows<2>();
+      else
+        FT.row(0).head<2>() = T.row(3);
       T = st.E.transpose() * T - st.RN.transpose() * Mat2(FT.leftCols<2>());
     }
   }
@@ -106,14 +108,18 @@ void ChainShiftedSolver::factor(double c) {
     Stage& st = st_[i];
     Mat2 FT;
     FT.setZero();
-    if (k_ == 2) FT = st.T.bottomRows<2>();
-    else FT.row(0) = st.T.row(3);
+    if (k_ == 2)
+      FT = st.T.bottomRows<2>();
+    else
+      FT.row(0) = st.T.row(3);
     const Mat42 EZ = st.E * Zm;
     const Mat2 Um = -(Mat2(st.RN * Zm) + st.Rinv * FT);
     st.Um = Um;
     Zm = EZ;
-    if (k_ == 2) Zm.bottomRows<2>() += Um;
-    else Zm.row(3) += Um.row(0);
+    if (k_ == 2)
+      Zm.bottomRows<2>() += Um;
+    else
+      Zm.row(3) += Um.row(0);
   }
   Sm_inv_ = (endMap(kin[nb_ - 1]).topRows<2>() * Zm).inverse();
 }
@@ -123,8 +129,10 @@ void ChainShiftedSolver::solve(const VecX& r, VecX& x, const Vec2& end) {
   for (int i = nb_ - 1; i >= 0; --i) {
     Stage& st = st_[i];
     Vec2 g = drop(s);
-    if (k_ == 2) g -= Vec2(r[2 * i], r[2 * i + 1]);
-    else g[0] -= r[i];
+    if (k_ == 2)
+      g -= Vec2(r[2 * i], r[2 * i + 1]);
+    else
+      g[0] -= r[i];
     st.gu = st.Rinv * g;
     s = st.E.transpose() * s - st.RN.transpose() * g;  // N^T R^-1 g
   }
@@ -167,7 +175,7 @@ void ChainShiftedSolver::toAbsolute(const Eigen::Ref<const VecX>& w) {
 void ChainShiftedSolver::massMinusStiffness(const Eigen::Ref<const VecX>& a, const Eigen::Ref<const VecX>& b, double c,
                                             VecX& y) {
   toAbsolute(b);
-  q2_.swap(q_);  // q2_ = J b
+  q2_.swap(q_);   // q2_ = J b
   toAbsolute(a);  // q_ = J a
   const StiffnessBlocks& S = *S_;
   for (int i = 0; i < nb_; ++i) {

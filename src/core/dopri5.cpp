@@ -13,12 +13,11 @@ constexpr double a21 = 1.0 / 5;
 constexpr double a31 = 3.0 / 40, a32 = 9.0 / 40;
 constexpr double a41 = 44.0 / 45, a42 = -56.0 / 15, a43 = 32.0 / 9;
 constexpr double a51 = 19372.0 / 6561, a52 = -25360.0 / 2187, a53 = 64448.0 / 6561, a54 = -212.0 / 729;
-constexpr double a61 = 9017.0 / 3168, a62 = -355.0 / 33, a63 = 46732.0 / 5247, a64 = 49.0 / 176,
-                 a65 = -5103.0 / 18656;
+constexpr double a61 = 9017.0 / 3168, a62 = -355.0 / 33, a63 = 46732.0 / 5247, a64 = 49.0 / 176, a65 = -5103.0 / 18656;
 constexpr double b1 = 35.0 / 384, b3 = 500.0 / 1113, b4 = 125.0 / 192, b5 = -2187.0 / 6784, b6 = 11.0 / 84;
 // Error coefficients: b - b̂ (5th minus embedded 4th order).
-constexpr double e1 = 71.0 / 57600, e3 = -71.0 / 16695, e4 = 71.0 / 1920, e5 = -17253.0 / 339200,
-                 e6 = 22.0 / 525, e7 = -1.0 / 40;
+constexpr double e1 = 71.0 / 57600, e3 = -71.0 / 16695, e4 = 71.0 / 1920, e5 = -17253.0 / 339200, e6 = 22.0 / 525,
+                 e7 = -1.0 / 40;
 // PI controller (Hairer II.4, Gustafsson): h_new = h * safety * err^-alpha * err_old^beta.
 constexpr double kBeta = 0.04, kAlpha = 0.2 - 0.75 * kBeta, kSafety = 0.9, kFacMin = 0.2, kFacMax = 10.0;
 // Substeps in one call (one solver.dt): a stiff line at a tight tolerance takes tens to hundreds; 1e5 means
@@ -152,8 +151,10 @@ bool Dopri5::step(OdeSystem& sys, double t, VecX& y, double H) {
       t = t_new;
       ++stats_.substeps;
       // Keep the controller's step, not the one clipped to the output grid.
-      if (!final || h >= h_) h_ = h * fac;
-      else h_ = std::max(h_, h * fac);
+      if (!final || h >= h_)
+        h_ = h * fac;
+      else
+        h_ = std::max(h_, h * fac);
       last_rejected = false;
     } else {
       const double fac = std::max(kFacMin, kSafety * std::pow(err, -kAlpha));

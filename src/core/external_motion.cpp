@@ -8,9 +8,9 @@
 namespace riser_sim {
 
 namespace {
-constexpr double kGapPeriods = 3.0;    // a gap: more than this many nominal periods (and blend + coast) without
-constexpr double kMaxRejoin = 600.0;   // longest rejoin [s]
-constexpr int kRejoinChecks = 64;      // points per candidate quintic where the rejoin's bounds are checked
+constexpr double kGapPeriods = 3.0;   // a gap: more than this many nominal periods (and blend + coast) without
+constexpr double kMaxRejoin = 600.0;  // longest rejoin [s]
+constexpr int kRejoinChecks = 64;     // points per candidate quintic where the rejoin's bounds are checked
 }  // namespace
 
 std::string ExternalMotionOptions::validate() const {
@@ -165,8 +165,8 @@ typename SampledMotion<D>::State SampledMotion<D>::predict(const State& fitted, 
 // |v_source - v_from| when larger: a quintic's change of velocity overshoots by 0.512 of it) at kRejoinChecks
 // points: a geometric search, then bisection.
 template <int D>
-double SampledMotion<D>::rejoinTime(double T_min, double t_sample, double t_now, const State& from,
-                                    const State& fitted, State& target) const {
+double SampledMotion<D>::rejoinTime(double T_min, double t_sample, double t_now, const State& from, const State& fitted,
+                                    State& target) const {
   const auto within = [&](double T, State& tgt) {
     tgt = predict(fitted, t_now + T - t_sample, true);
     Quintic q;
@@ -189,8 +189,10 @@ double SampledMotion<D>::rejoinTime(double T_min, double t_sample, double t_now,
   for (int i = 0; i < 12 && hi - lo > 1e-3 * hi; ++i) {
     const double mid = 0.5 * (lo + hi);
     State t_mid;
-    if (within(mid, t_mid)) hi = mid;
-    else lo = mid;
+    if (within(mid, t_mid))
+      hi = mid;
+    else
+      lo = mid;
   }
   within(hi, target);
   return hi;

@@ -24,8 +24,8 @@ double Formulation::kineticEnergy(double t, const VecX& y, const PointMotion& to
 }
 
 bool Formulation::evaluatedAt(double t, const VecX& y, const PointMotion& top, const FormulationData& data) const {
-  return &data.owner() == this && data.t == t && data.top.p == top.p && data.top.v == top.v &&
-         data.top.a == top.a && holdsState(y, data.kin);
+  return &data.owner() == this && data.t == t && data.top.p == top.p && data.top.v == top.v && data.top.a == top.a &&
+         holdsState(y, data.kin);
 }
 
 void Formulation::linearize(double, const VecX&, const PointMotion&, FormulationData&) const {

@@ -147,8 +147,8 @@ bool OneStageImplicit::newton(OdeSystem& sys, double t, const VecX& y0, const Ve
   // Predictor (see the class): from the last equal steps' increments when this step follows them, else y0.
   if (equal_steps_ > 0 && t == t_end_ && y0 == y_end_ && h == h_prev_) {
     if (equal_steps_ == 3 && weighted_)
-      z_.head(m_) = y0.head(m_) + weights_[0] * d_[0].head(m_) + weights_[1] * d_[1].head(m_) +
-                    weights_[2] * d_[2].head(m_);
+      z_.head(m_) =
+          y0.head(m_) + weights_[0] * d_[0].head(m_) + weights_[1] * d_[1].head(m_) + weights_[2] * d_[2].head(m_);
     else
       z_.head(m_) = y0.head(m_) + theta_ * d_[0].head(m_);
     sys.rhs(tz, z_, fz_);
@@ -242,8 +242,8 @@ bool OneStageImplicit::step(OdeSystem& sys, double t, VecX& y, double h) {
   // Structured solves with the predictor at hand use no f(t, y) after a projection (the system linearises
   // at its own evaluations): it is made only for a retry in substeps or a scheme's history. Otherwise
   // f0_ is the last step's end evaluation, or f(t, y) is made (the forces changed).
-  bool lazy = structured_ && equal_steps_ > 0 && t == t_end_ && h == h_prev_ && y == y_end_ && (f0_valid_ || f0_projected_) &&
-              !historyNeedsF0(t, y);
+  bool lazy = structured_ && equal_steps_ > 0 && t == t_end_ && h == h_prev_ && y == y_end_ &&
+              (f0_valid_ || f0_projected_) && !historyNeedsF0(t, y);
   if (!lazy) {
     startValue(sys, t, y);
     f_save_ = f0_;

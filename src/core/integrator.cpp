@@ -44,7 +44,8 @@ std::unique_ptr<Integrator> makeIntegrator(IntegratorKind kind, const Integrator
     case IntegratorKind::kMidpoint: return std::make_unique<ImplicitMidpoint>(options);
     case IntegratorKind::kGeneralizedAlpha: return std::make_unique<GeneralizedAlpha>(options);
   }
-  throw std::invalid_argument("solver.integrator: unknown integrator (accepted: " + choiceNames<IntegratorKind>() + ")");
+  throw std::invalid_argument("solver.integrator: unknown integrator (accepted: " + choiceNames<IntegratorKind>() +
+                              ")");
 }
 
 }  // namespace riser_sim

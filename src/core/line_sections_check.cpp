@@ -50,8 +50,10 @@ std::optional<SetupError> checkSection(const Scene& s, const LineSection& sec, c
   const InternalFlowSpec& f = s.internal_fluid;
   if (f.density > 0.0 && !(p.inner_diameter > 0.0)) return bad("inner_diameter", "is needed (> 0) for internal_fluid");
   if (f.density > 0.0 && (f.velocity != 0.0 || f.acceleration != 0.0) && p.inner_diameter != s.line.inner_diameter)
-    return bad("inner_diameter", "must be line.inner_diameter (" + num(s.line.inner_diameter) + " m) with a flow in "
-                                 "internal_fluid (the flow term carries one flow area), got " + num(p.inner_diameter));
+    return bad("inner_diameter", "must be line.inner_diameter (" + num(s.line.inner_diameter) +
+                                     " m) with a flow in "
+                                     "internal_fluid (the flow term carries one flow area), got " +
+                                     num(p.inner_diameter));
   return std::nullopt;
 }
 
@@ -69,10 +71,11 @@ std::optional<SetupError> checkStiffener(const Scene& s, const BendStiffener& b)
     if (!(b.bore > 0.0))
       return bad("tip_diameter", "a conical stiffener needs the line's outer_diameter (> 0): its bore");
     if (!(b.tip_diameter > b.bore))
-      return bad("tip_diameter", "must be larger than the line's outer diameter (" + num(b.bore) + " m), got " +
-                                     num(b.tip_diameter));
+      return bad("tip_diameter",
+                 "must be larger than the line's outer diameter (" + num(b.bore) + " m), got " + num(b.tip_diameter));
     if (!(b.root_diameter >= b.tip_diameter))
-      return bad("root_diameter", "must be >= tip_diameter (" + num(b.tip_diameter) + " m), got " + num(b.root_diameter));
+      return bad("root_diameter",
+                 "must be >= tip_diameter (" + num(b.tip_diameter) + " m), got " + num(b.root_diameter));
     return std::nullopt;
   }
   if (b.x.size() < 2 || b.x.size() != b.EI.size()) return bad("table", "needs at least 2 rows [x, EI]");
@@ -105,8 +108,8 @@ std::optional<SetupError> checkLineSections(const Scene& s) {
   if (!(std::abs(L - s.length) <= 1e-9 * L))
     return SetupError{"line.length", "is " + num(s.length) + " m but the sections add up to " + num(L) + " m"};
   if (n != s.elements)
-    return SetupError{"line.elements", "is " + std::to_string(s.elements) + " but the sections have " +
-                                           std::to_string(n)};
+    return SetupError{"line.elements",
+                      "is " + std::to_string(s.elements) + " but the sections have " + std::to_string(n)};
   if (s.stiffeners.size() > 1) return SetupError{"line.bend_stiffener", "one stiffener per line"};
   for (const BendStiffener& b : s.stiffeners)
     if (const auto e = checkStiffener(s, b)) return e;

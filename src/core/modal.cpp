@@ -55,7 +55,9 @@ class Chain {
     Qt.resize(size());
     projectToChain(model_, kin_, Q.data(), Qt.data());
   }
-  void generalised(const VecX& theta, const Vec2& end_force, VecX& Qt) { project(absoluteForces(theta, end_force), Qt); }
+  void generalised(const VecX& theta, const Vec2& end_force, VecX& Qt) {
+    project(absoluteForces(theta, end_force), Qt);
+  }
   void generalised(const VecX& theta, const VecX& theta_dot, const Vec2& end_force, VecX& Qt) {
     project(absoluteForces(theta, end_force, &theta_dot), Qt);
   }

@@ -7,8 +7,8 @@
 
 namespace riser_sim {
 
-Model::Model(double length, int segments, const LineProperties& props, const ModelOptions& options,
-             double end_mass, double gravity)
+Model::Model(double length, int segments, const LineProperties& props, const ModelOptions& options, double end_mass,
+             double gravity)
     : Model(std::vector<LineSection>{LineSection{length, segments, props, SectionHydro(), BuoyancyModules()}}, {},
             options, end_mass, gravity) {}
 
@@ -90,8 +90,8 @@ Model::Model(const std::vector<LineSection>& sections, const std::vector<BendSti
   for (int i = 1; i <= n_ && options_.bending; ++i) {
     const int j = i - 1;
     const LineProperties& p = sections_[line.section[j]].props;
-    bend_k_[i] = line.stiffened[j] ? (std::isfinite(line.compliance[j]) ? 1.0 / line.compliance[j] : 0.0)
-                                   : p.EI / segment_[j];
+    bend_k_[i] =
+        line.stiffened[j] ? (std::isfinite(line.compliance[j]) ? 1.0 / line.compliance[j] : 0.0) : p.EI / segment_[j];
     bend_c_[i] = p.bending_damping / segment_[j];
     has_bending_ = has_bending_ || bend_k_[i] > 0.0 || bend_c_[i] > 0.0;
   }
@@ -110,7 +110,8 @@ double Model::totalMass() const {
 void Model::addPointMass(int i, double mass, double s0, double kappa) {
   if (i < 0 || i > n_ || !(mass >= 0.0) || !(s0 >= 0.0 && s0 <= rfe_[i].length) || (kappa != 0.0 && kappa != 1.0))
     throw std::invalid_argument("Model::addPointMass: rfe " + std::to_string(i) + ", mass " + std::to_string(mass) +
-                                " kg, s0 " + std::to_string(s0) + " m, kappa " + std::to_string(kappa) + " is not on the line");
+                                " kg, s0 " + std::to_string(s0) + " m, kappa " + std::to_string(kappa) +
+                                " is not on the line");
   Rfe& r = rfe_[i];
   int p = r.num_parts;
   for (int k = 2; k < r.num_parts; ++k)

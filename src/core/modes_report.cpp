@@ -47,11 +47,11 @@ ModesReport planarReport(const Scene& scene, int count) {
   rep.about = scene.initial.type == InitialKind::kStraight
                   ? std::string("hanging equilibrium (initial.type straight is none)")
                   : std::string(name(scene.initial.type)) + " static state";
-  rep.header = format("modes about the static state (%s, %s), %d coordinates%s; end load (%g, %g) N kept as a dead "
-                      "load; undamped (drag and damping left out); equilibrium residual %.2e, K asymmetry %.2e",
-                      name(scene.initial.type), st.message.c_str(), r.coordinates,
-                      r.pinned ? " minus 2 end constraints (pinned)" : "", st.end_force.x(), st.end_force.y(),
-                      r.equilibrium_residual, r.asymmetry);
+  rep.header = format(
+      "modes about the static state (%s, %s), %d coordinates%s; end load (%g, %g) N kept as a dead "
+      "load; undamped (drag and damping left out); equilibrium residual %.2e, K asymmetry %.2e",
+      name(scene.initial.type), st.message.c_str(), r.coordinates, r.pinned ? " minus 2 end constraints (pinned)" : "",
+      st.end_force.x(), st.end_force.y(), r.equilibrium_residual, r.asymmetry);
   rep.arc_length = r.arc_length;
   for (const Vec2& p : r.points) rep.points.emplace_back(p.x(), 0.0, p.y());
   double big = 0.0;
@@ -72,8 +72,9 @@ ModesReport spatialReport(const Scene& scene, int count) {
   namespace sp = spatial;
   if (scene.bottom == BottomBoundary::kPinned && scene.bottom_motion.type != MotionKind::kFixed &&
       scene.bottom_motion.type != MotionKind::kExternal)
-    throw std::invalid_argument("bottom.motion: the modes with space: spatial need a fixed or free bottom (the modes "
-                                "are about a static state)");
+    throw std::invalid_argument(
+        "bottom.motion: the modes with space: spatial need a fixed or free bottom (the modes "
+        "are about a static state)");
   std::shared_ptr<sp::SpatialModel> model = sp::buildSpatialModel(scene);
   const sp::InitialState3 init = sp::solveInitialState3(scene, sp::buildTopMotion3(scene.top)->at(0.0).p);
   sp::addFlexJoints(scene, init.kin, *model);
@@ -100,10 +101,11 @@ ModesReport spatialReport(const Scene& scene, int count) {
   const std::string what = straight ? "3D modes about the " + rep.about
                                     : "3D modes about the static state (" + std::string(name(scene.initial.type)) +
                                           ", " + init.statics.message + ")";
-  rep.header = format("%s, %d coordinates; plane of in-plane modes along (%g, %g, 0); end load (%g, %g, %g) N kept "
-                      "as a dead load; undamped; equilibrium residual %.2e, K asymmetry %.2e",
-                      what.c_str(), rep.coordinates, init.plane_direction.x(), init.plane_direction.y(),
-                      init.end_force.x(), init.end_force.y(), init.end_force.z(), r.equilibrium_residual, r.asymmetry);
+  rep.header = format(
+      "%s, %d coordinates; plane of in-plane modes along (%g, %g, 0); end load (%g, %g, %g) N kept "
+      "as a dead load; undamped; equilibrium residual %.2e, K asymmetry %.2e",
+      what.c_str(), rep.coordinates, init.plane_direction.x(), init.plane_direction.y(), init.end_force.x(),
+      init.end_force.y(), init.end_force.z(), r.equilibrium_residual, r.asymmetry);
   const int nb = model->bodies();
   for (int p = 0; p <= nb; ++p) {
     rep.points.push_back(p < nb ? r.equilibrium[p].A : r.equilibrium[nb - 1].end());

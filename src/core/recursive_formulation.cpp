@@ -22,9 +22,9 @@ std::unique_ptr<FormulationData> RecursiveFormulation::makeData() const {
 }
 
 inline void RecursiveFormulation::finishNode(RigidNode& nd, double c, double s, double len, double c0, double c1,
-                                      double Di00, double Di01, double Di11, double Bh00, double Bh01, double Bh10,
-                                      double Bh11, double rho0, double rho1, double L00, double L01, double L11,
-                                      double be, double bn) {
+                                             double Di00, double Di01, double Di11, double Bh00, double Bh01,
+                                             double Bh10, double Bh11, double rho0, double rho1, double L00, double L01,
+                                             double L11, double be, double bn) {
   // u'' = D̂^-1 ρ - W R^T A'' with W = D̂^-1 B̂^T (frame); R = [e n].
   const double W00 = Di00 * Bh00 + Di01 * Bh01, W01 = Di00 * Bh10 + Di01 * Bh11;
   const double W10 = Di01 * Bh00 + Di11 * Bh01, W11 = Di01 * Bh10 + Di11 * Bh11;

@@ -43,8 +43,8 @@ bool sectionsBend(const Scene& scene) {
 }  // namespace
 
 std::shared_ptr<Model> buildModel(const Scene& scene) {
-  auto model = std::make_shared<Model>(lineSections(scene), scene.stiffeners, scene.options, scene.end_mass,
-                                       scene.gravity);
+  auto model =
+      std::make_shared<Model>(lineSections(scene), scene.stiffeners, scene.options, scene.end_mass, scene.gravity);
   model->setBottom(scene.bottom, scene.bottom_point);
   // Only the terms the scene needs are built (a term that is off costs nothing).
   if (scene.gravity != 0.0) model->addTerm(std::make_unique<Gravity>());
@@ -69,7 +69,7 @@ std::shared_ptr<Model> buildModel(const Scene& scene) {
   const InternalFlowSpec& f = scene.internal_fluid;
   if (f.density > 0.0 && (f.velocity != 0.0 || f.acceleration != 0.0))
     f.model == FlowModelKind::kPaper ? model->addTerm(std::make_unique<InternalFlow>(f, scene.line.internalArea()))
-                       : model->addTerm(std::make_unique<PipeFlow>(f, scene.line.internalArea()));
+                                     : model->addTerm(std::make_unique<PipeFlow>(f, scene.line.internalArea()));
   return model;
 }
 

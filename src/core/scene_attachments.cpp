@@ -35,8 +35,8 @@ void parseAttachments(const Section& root, Scene& s) {
   std::string largest_key;
   for (size_t k = 0; k < list.size(); ++k) {
     const std::string key = path + "[" + std::to_string(k) + "]";
-    const Section a(list[k], key, {"name", "arc_length", "mass", "volume", "drag_area", "cd", "added_mass", "ca",
-                                   "seabed_contact"});
+    const Section a(list[k], key,
+                    {"name", "arc_length", "mass", "volume", "drag_area", "cd", "added_mass", "ca", "seabed_contact"});
     if (!list[k].IsMap()) throw SceneError(key, "expected a map of keys, got " + describe(list[k]));
     AttachmentSpec spec;
     spec.name = a.text("name", "attachment " + std::to_string(k));
@@ -49,7 +49,8 @@ void parseAttachments(const Section& root, Scene& s) {
     spec.mass = a.number("mass", 0.0);
     spec.volume = a.number("volume", 0.0);
     spec.drag_area = a.number("drag_area", 0.0);
-    for (const char* k2 : {"mass", "volume", "drag_area", "cd", "added_mass", "ca"}) requireNonNegative(a.key(k2), a.number(k2, 0.0));
+    for (const char* k2 : {"mass", "volume", "drag_area", "cd", "added_mass", "ca"})
+      requireNonNegative(a.key(k2), a.number(k2, 0.0));
     if (spec.drag_area > 0.0 && !a.has("cd"))
       throw SceneError(a.key("cd"), "is needed with drag_area (the drag is ½ ρ_w cd drag_area |u| u)");
     spec.cd = a.number("cd", 0.0);
@@ -83,7 +84,8 @@ void parseAttachments(const Section& root, Scene& s) {
   if (lift >= wet)
     throw SceneError(largest_key + ".volume", "the attachments' buoyancy " + formatNumber(lift) +
                                                   " N is at least the weight in water of the line with them " +
-                                                  formatNumber(wet) + " N: the buoys would float the whole line to "
+                                                  formatNumber(wet) +
+                                                  " N: the buoys would float the whole line to "
                                                   "the surface");
 }
 

@@ -25,8 +25,8 @@ void parseKnots(const Section& motion, TopMotionSpec& top, bool planar) {
       throw SceneError(k, "expected [t, [vx, vz]] or [t, [vx, vy, vz]], got " + describe(knot));
     const double t = toNumber(knot[0], k + "[0]");
     if (i > 0 && !(t > top.knots.back().t))
-      throw SceneError(k, "knot times must increase, got " + formatNumber(t) + " after " +
-                              formatNumber(top.knots.back().t));
+      throw SceneError(
+          k, "knot times must increase, got " + formatNumber(t) + " after " + formatNumber(top.knots.back().t));
     const Eigen::Vector3d v = toVec3(knot[1], k + "[1]", planar);
     top.knots.push_back({t, planarOf(v)});
     top.knots3.push_back({t, v});
@@ -38,7 +38,8 @@ Eigen::Vector3d parsePhase(const Section& motion, const std::string& k, bool pla
   if (!motion.has(k) || !motion.at(k).IsSequence()) return Eigen::Vector3d::Constant(motion.number(k, 0.0));
   const std::string key = motion.key(k);
   const YAML::Node ph = motion.at(k);
-  if (planar) throw SceneError(key, "a phase per axis [px, py, pz] needs space: spatial (a planar sinusoid has one phase)");
+  if (planar)
+    throw SceneError(key, "a phase per axis [px, py, pz] needs space: spatial (a planar sinusoid has one phase)");
   if (ph.size() != 3) throw SceneError(key, "expected a number or [px, py, pz], got " + describe(ph));
   Eigen::Vector3d p;
   for (int i = 0; i < 3; ++i) p[i] = toNumber(ph[i], key + "[" + std::to_string(i) + "]");
@@ -56,7 +57,8 @@ void parseAttitude(const Section& motion, TopMotionSpec& spec, bool planar) {
   if (planar) throw SceneError(key, "needs space: spatial (the planar holder does not turn)");
   if (spec.type != MotionKind::kSinusoid) throw SceneError(key, "only with type: sinusoid (it shares its period)");
   const YAML::Node a = motion.at("attitude");
-  if (!a.IsSequence() || a.size() != 3) throw SceneError(key, "expected [roll, pitch, yaw] in degrees, got " + describe(a));
+  if (!a.IsSequence() || a.size() != 3)
+    throw SceneError(key, "expected [roll, pitch, yaw] in degrees, got " + describe(a));
   for (int i = 0; i < 3; ++i) spec.attitude3[i] = toNumber(a[i], key + "[" + std::to_string(i) + "]") * M_PI / 180.0;
   if (!(std::abs(spec.attitude3[1]) < 0.5 * M_PI))
     throw SceneError(key + "[1]", "the pitch amplitude must be below 90 degrees (Z-Y-X angles), got " +
@@ -69,7 +71,8 @@ void parseMotion(const Section& motion, TopMotionSpec& spec, bool planar) {
   spec.type = motion.choice("type", MotionKind::kFixed);
   // Keys of the other motion types are type-checked but ignored (so --set top.motion.type=... just works).
   const bool sinusoid = spec.type == MotionKind::kSinusoid;
-  spec.amplitude3 = sinusoid ? motion.vec3("amplitude", planar) : motion.vec3("amplitude", planar, Eigen::Vector3d::Zero());
+  spec.amplitude3 =
+      sinusoid ? motion.vec3("amplitude", planar) : motion.vec3("amplitude", planar, Eigen::Vector3d::Zero());
   spec.amplitude = planarOf(spec.amplitude3);
   spec.period = sinusoid ? motion.number("period") : motion.number("period", 1.0);
   requirePositive(motion.key("period"), spec.period);
@@ -83,10 +86,9 @@ void parseMotion(const Section& motion, TopMotionSpec& spec, bool planar) {
 FlexJointSpec parseFlexJoint(const Section& end, bool planar) {
   FlexJointSpec j;
   if (!end.has("flex_joint")) return j;
-  const Section fj = end.section("flex_joint", {"stiffness", "damping", "axis", "torsional_stiffness",
-                                                      "torsional_damping"});
-  if (planar)
-    throw SceneError(end.key("flex_joint"), "needs space: spatial (the planar core has pinned ends only)");
+  const Section fj =
+      end.section("flex_joint", {"stiffness", "damping", "axis", "torsional_stiffness", "torsional_damping"});
+  if (planar) throw SceneError(end.key("flex_joint"), "needs space: spatial (the planar core has pinned ends only)");
   j.enabled = true;
   j.stiffness = fj.number("stiffness");
   requirePositive(fj.key("stiffness"), j.stiffness);
@@ -125,7 +127,8 @@ void parseTop(const Section& root, Scene& s) {
               s.top, planar);
   s.top_flex_joint = parseFlexJoint(top, planar);
   if (top.has("torsion")) {  // the hang-off's hold on the spin (line.torsion)
-    if (!s.torsion.enabled) throw SceneError(top.key("torsion"), "needs line.torsion (the spin is no degree of freedom)");
+    if (!s.torsion.enabled)
+      throw SceneError(top.key("torsion"), "needs line.torsion (the spin is no degree of freedom)");
     s.torsion.free_top = top.choice("torsion", "fixed", {"fixed", "free"}) == "free";
   }
   if (s.top_flex_joint.torsional_stiffness > 0.0) {
@@ -141,7 +144,7 @@ void parseBottom(const Section& root, Scene& s) {
   s.bottom = type == "pinned" ? BottomBoundary::kPinned : BottomBoundary::kFree;
   const bool planar = s.space == SpaceKind::kPlanar;
   s.bottom_point3 = s.bottom == BottomBoundary::kPinned ? bottom.vec3("position", planar)
-                                                         : bottom.vec3("position", planar, Eigen::Vector3d::Zero());
+                                                        : bottom.vec3("position", planar, Eigen::Vector3d::Zero());
   s.bottom_point = planarOf(s.bottom_point3);
   s.bottom_motion = TopMotionSpec();
   s.bottom_motion.position3 = s.bottom_point3;

@@ -11,10 +11,25 @@ namespace scene_detail {
 
 namespace {
 
-const std::vector<std::string> kSectionKeys = {
-    "length", "elements", "segment_length", "outer_diameter", "inner_diameter", "youngs_modulus", "density", "EA",
-    "EI", "mass_per_length", "axial_damping", "axial_damping_ratio", "bending_damping", "drag_diameter",
-    "drag_normal", "drag_tangential", "inertia_coefficient", "axial_added_mass", "buoyancy_modules"};
+const std::vector<std::string> kSectionKeys = {"length",
+                                               "elements",
+                                               "segment_length",
+                                               "outer_diameter",
+                                               "inner_diameter",
+                                               "youngs_modulus",
+                                               "density",
+                                               "EA",
+                                               "EI",
+                                               "mass_per_length",
+                                               "axial_damping",
+                                               "axial_damping_ratio",
+                                               "bending_damping",
+                                               "drag_diameter",
+                                               "drag_normal",
+                                               "drag_tangential",
+                                               "inertia_coefficient",
+                                               "axial_added_mass",
+                                               "buoyancy_modules"};
 
 LineSection parseOne(const Section& sec, const Scene& s) {
   LineSection out;
@@ -27,8 +42,8 @@ LineSection parseOne(const Section& sec, const Scene& s) {
     requirePositive(sec.key("segment_length"), d);
     const double n = std::ceil(out.length / d - 1e-9);
     if (!(n <= kMaxSceneElements))
-      throw SceneError(sec.key("segment_length"), "gives " + formatNumber(n) + " elements, more than " +
-                                                      std::to_string(kMaxSceneElements));
+      throw SceneError(sec.key("segment_length"),
+                       "gives " + formatNumber(n) + " elements, more than " + std::to_string(kMaxSceneElements));
     out.elements = std::max(1, int(n));
   } else {
     out.elements = sec.integer("elements");
@@ -67,8 +82,8 @@ LineSection parseOne(const Section& sec, const Scene& s) {
   h.inertia_coefficient = sec.number("inertia_coefficient", NAN);
   h.axial_added_mass = sec.number("axial_added_mass", NAN);
   if (sec.has("buoyancy_modules")) {
-    const Section m = sec.section("buoyancy_modules", {"outer_diameter", "length", "pitch", "mass", "volume",
-                                                      "drag_normal", "added_mass"});
+    const Section m = sec.section("buoyancy_modules",
+                                  {"outer_diameter", "length", "pitch", "mass", "volume", "drag_normal", "added_mass"});
     BuoyancyModules& b = out.modules;
     b.enabled = true;
     b.outer_diameter = m.number("outer_diameter");
@@ -86,14 +101,16 @@ LineSection parseOne(const Section& sec, const Scene& s) {
     requirePositive(m.key("length"), b.length);
     requirePositive(m.key("pitch"), b.pitch);
     if (!(b.length <= b.pitch))
-      throw SceneError(m.key("pitch"), "must be >= the module length (" + formatNumber(b.length) + " m), got " +
-                                           formatNumber(b.pitch));
+      throw SceneError(m.key("pitch"),
+                       "must be >= the module length (" + formatNumber(b.length) + " m), got " + formatNumber(b.pitch));
     requireNonNegative(m.key("mass"), b.mass);
     requirePositive(m.key("volume"), b.volume);
     const double annulus = M_PI / 4.0 * (b.outer_diameter * b.outer_diameter - D * D) * b.length;
     if (!(b.volume <= annulus * (1.0 + 1e-9)))
-      throw SceneError(m.key("volume"), formatNumber(b.volume) + " m^3 is more than a module of that outer diameter "
-                                        "and length displaces around the pipe (" + formatNumber(annulus) + " m^3)");
+      throw SceneError(m.key("volume"), formatNumber(b.volume) +
+                                            " m^3 is more than a module of that outer diameter "
+                                            "and length displaces around the pipe (" +
+                                            formatNumber(annulus) + " m^3)");
     requireNonNegative(m.key("drag_normal"), b.drag_normal);
     if (m.has("added_mass")) requireNonNegative(m.key("added_mass"), b.added_mass);
     if (sec.has("drag_diameter"))
@@ -115,7 +132,8 @@ BendStiffener parseStiffener(const Section& st, const Scene& s) {
       if (st.has(k)) throw SceneError(st.key(k), "give either a table or a conical stiffener's geometry, not both");
     const YAML::Node t = st.at("table");
     const std::string key = st.key("table");
-    if (!t.IsSequence() || t.size() < 2) throw SceneError(key, "expected a list of at least 2 [x, EI], got " + describe(t));
+    if (!t.IsSequence() || t.size() < 2)
+      throw SceneError(key, "expected a list of at least 2 [x, EI], got " + describe(t));
     for (size_t k = 0; k < t.size(); ++k) {
       const Vec2 row = toVec2(t[k], key + "[" + std::to_string(k) + "]");
       b.x.push_back(row.x());
@@ -154,8 +172,8 @@ void parseLineSections(const Section& line, Scene& s) {
       throw SceneError(line.key("elements"), "is " + std::to_string(s.elements) + " but the sections have " +
                                                  std::to_string(n) + " (give one or make them agree)");
     if (n > kMaxSceneElements)
-      throw SceneError(key, "have " + std::to_string(n) + " elements in all, more than " +
-                                std::to_string(kMaxSceneElements));
+      throw SceneError(
+          key, "have " + std::to_string(n) + " elements in all, more than " + std::to_string(kMaxSceneElements));
     s.length = L;
     s.elements = int(n);
   }
@@ -171,7 +189,8 @@ void finishLineSections(Scene& s) {
   for (LineSection& sec : s.sections)
     if (sec.modules.enabled) {  // checked by parseOne
       const HydroSpec& h = s.hydro;
-      smearModules(sec, orLine(sec.hydro.drag_normal, h.drag_normal), orLine(sec.hydro.drag_tangential, h.drag_tangential),
+      smearModules(sec, orLine(sec.hydro.drag_normal, h.drag_normal),
+                   orLine(sec.hydro.drag_tangential, h.drag_tangential),
                    orLine(sec.hydro.inertia_coefficient, h.inertia_coefficient));
     }
 }

@@ -21,14 +21,16 @@ void parseProfile(const Section& cur, bool planar, CurrentSpec& c) {
   for (size_t i = 0; i < prof.size(); ++i) {
     const std::string k = key + "[" + std::to_string(i) + "]";
     const YAML::Node p = prof[i];
-    if (!p.IsSequence() || (p.size() != 2 && p.size() != 3)) throw SceneError(k, "expected " + form + ", got " + describe(p));
+    if (!p.IsSequence() || (p.size() != 2 && p.size() != 3))
+      throw SceneError(k, "expected " + form + ", got " + describe(p));
     const double d = toNumber(p[0], k + "[0]");
     requireNonNegative(k + "[0]", d);
     if (i > 0 && !(d > c.profile.back().depth)) throw SceneError(k, "depths must increase");
     const double vy = p.size() == 3 ? toNumber(p[2], k + "[2]") : 0.0;
     if (planar && vy != 0.0)
-      throw SceneError(k + "[2]", "vy = " + formatNumber(vy) + " points out of the vertical x-z plane of a planar "
-                                  "scene (space: planar, the default); set space: spatial for a 3D scene");
+      throw SceneError(k + "[2]", "vy = " + formatNumber(vy) +
+                                      " points out of the vertical x-z plane of a planar "
+                                      "scene (space: planar, the default); set space: spatial for a 3D scene");
     c.profile.push_back({d, toNumber(p[1], k + "[1]"), vy});
   }
 }
@@ -67,8 +69,9 @@ void parseWaves(const Section& env, Scene& s) {
   wave.type = w.choice("type", WaveKind::kRegular);
   const bool regular = wave.type == WaveKind::kRegular;
   // The other type's keys are refused, not ignored.
-  for (const char* k : regular ? std::vector<const char*>{"significant_height", "peak_period", "gamma", "components", "seed"}
-                               : std::vector<const char*>{"height", "period", "phase"})
+  for (const char* k :
+       regular ? std::vector<const char*>{"significant_height", "peak_period", "gamma", "components", "seed"}
+               : std::vector<const char*>{"height", "period", "phase"})
     if (w.has(k))
       throw SceneError(w.key(k), std::string("belongs to waves of type ") + (regular ? "jonswap" : "regular") +
                                      ", not '" + name(wave.type) + "'");
@@ -82,7 +85,8 @@ void parseWaves(const Section& env, Scene& s) {
   wave.peak_period = w.has("significant_height") ? w.number("peak_period") : w.number("peak_period", 10.0);
   requirePositive(w.key("peak_period"), wave.peak_period);
   wave.gamma = w.number("gamma", 3.3);
-  if (!(wave.gamma >= 1.0 && wave.gamma <= 20.0)) throw SceneError(w.key("gamma"), "must be in [1, 20], got " + formatNumber(wave.gamma));
+  if (!(wave.gamma >= 1.0 && wave.gamma <= 20.0))
+    throw SceneError(w.key("gamma"), "must be in [1, 20], got " + formatNumber(wave.gamma));
   wave.components = w.has("components") ? w.integer("components") : 100;
   if (wave.components < 1 || wave.components > 2000)
     throw SceneError(w.key("components"), "must be in [1, 2000], got " + std::to_string(wave.components));
@@ -94,15 +98,18 @@ void parseWaves(const Section& env, Scene& s) {
   if (wave.direction != 1.0 && wave.direction != -1.0) throw SceneError(w.key("direction"), "must be 1 or -1");
   wave.heading = w.number("heading", 0.0) * kDegToRad;
   if (s.space == SpaceKind::kPlanar && wave.heading != 0.0)
-    throw SceneError(w.key("heading"), "turns the waves out of the vertical x-z plane of a planar scene (space: "
-                                       "planar, the default; use direction: -1 for waves towards -x); set space: "
-                                       "spatial for a 3D scene");
+    throw SceneError(w.key("heading"),
+                     "turns the waves out of the vertical x-z plane of a planar scene (space: "
+                     "planar, the default; use direction: -1 for waves towards -x); set space: "
+                     "spatial for a 3D scene");
   wave.depth = w.number("depth", 1000.0);
   requirePositive(w.key("depth"), wave.depth);
   wave.ramp = w.number("ramp", 0.0);
   requireNonNegative(w.key("ramp"), wave.ramp);
-  if (regular) checkBreaking(w.key("height"), wave.height, wave.period, wave.depth, s.gravity);
-  else checkBreaking(w.key("significant_height"), wave.significant_height, wave.peak_period, wave.depth, s.gravity);
+  if (regular)
+    checkBreaking(w.key("height"), wave.height, wave.period, wave.depth, s.gravity);
+  else
+    checkBreaking(w.key("significant_height"), wave.significant_height, wave.peak_period, wave.depth, s.gravity);
 }
 
 }  // namespace
@@ -140,9 +147,9 @@ void parseHydrodynamics(const Section& root, Scene& s) {
 }
 
 void parseSeabed(const Section& root, Scene& s) {
-  const Section b = root.section("seabed", {"level", "stiffness_normal", "stiffness_tangential", "damping_normal",
-                                            "damping_tangential", "friction_axial", "friction_lateral",
-                                            "friction_velocity", "slope", "slope_heading"});
+  const Section b = root.section(
+      "seabed", {"level", "stiffness_normal", "stiffness_tangential", "damping_normal", "damping_tangential",
+                 "friction_axial", "friction_lateral", "friction_velocity", "slope", "slope_heading"});
   s.seabed = SeabedSpec();
   s.seabed.enabled = root.has("seabed");
   if (!s.seabed.enabled) return;
@@ -152,7 +159,8 @@ void parseSeabed(const Section& root, Scene& s) {
   s.seabed.damping_normal = b.number("damping_normal", 0.0);
   s.seabed.damping_tangential = b.number("damping_tangential", 0.0);
   requirePositive(b.key("stiffness_normal"), s.seabed.stiffness_normal);
-  for (const char* k : {"stiffness_tangential", "damping_normal", "damping_tangential", "friction_axial", "friction_lateral"})
+  for (const char* k :
+       {"stiffness_tangential", "damping_normal", "damping_tangential", "friction_axial", "friction_lateral"})
     requireNonNegative(b.key(k), b.number(k, 0.0));
   s.seabed.friction_axial = b.number("friction_axial", 0.0);
   s.seabed.friction_lateral = b.number("friction_lateral", 0.0);
@@ -161,8 +169,9 @@ void parseSeabed(const Section& root, Scene& s) {
   const bool planar = s.space == SpaceKind::kPlanar;
   for (const char* k : {"friction_axial", "friction_lateral", "friction_velocity"})
     if (planar && b.has(k) && (b.number(k) > 0.0 || std::string(k) == "friction_velocity"))
-      throw SceneError(b.key(k), "Coulomb friction is in the 3D core (set space: spatial); the planar seabed holds "
-                                 "the line with tangential springs anchored at touchdown (stiffness_tangential)");
+      throw SceneError(b.key(k),
+                       "Coulomb friction is in the 3D core (set space: spatial); the planar seabed holds "
+                       "the line with tangential springs anchored at touchdown (stiffness_tangential)");
   // A sloped plane [deg in the file]: slope in [0, 45), heading any.
   const double slope = b.number("slope", 0.0);
   if (!(slope >= 0.0 && slope < 45.0))
@@ -170,8 +179,9 @@ void parseSeabed(const Section& root, Scene& s) {
   s.seabed.slope = slope * kDegToRad;
   s.seabed.slope_heading = b.number("slope_heading", 0.0) * kDegToRad;
   if (planar && slope != 0.0)
-    throw SceneError(b.key("slope"), "a sloped seabed is in the 3D core (set space: spatial); the planar seabed is "
-                                     "level at seabed.level");
+    throw SceneError(b.key("slope"),
+                     "a sloped seabed is in the 3D core (set space: spatial); the planar seabed is "
+                     "level at seabed.level");
 }
 
 void parseInternalFluid(const Section& root, Scene& s) {

@@ -1,5 +1,5 @@
-// Internals of the scene loader (scene_sections.cpp, scene_sea_sections.cpp): formatting for messages, typed conversions
-// of one YAML node (every message names the key path), and Section, a YAML map whose keys are checked.
+// Internals of the scene loader (scene_sections.cpp, scene_sea_sections.cpp): formatting for messages, typed
+// conversions of one YAML node (every message names the key path), and Section, a YAML map whose keys are checked.
 #pragma once
 #include <yaml-cpp/yaml.h>
 
@@ -15,7 +15,6 @@ namespace riser_sim {
 namespace scene_detail {
 
 inline constexpr double kDegToRad = M_PI / 180.0;
-
 
 inline std::string join(const std::vector<std::string>& items) {
   std::string out;
@@ -113,10 +112,12 @@ inline Eigen::Vector3d toVec3(const YAML::Node& node, const std::string& key, bo
   if (!node.IsSequence() || (node.size() != 2 && node.size() != 3))
     throw SceneError(key, "expected [x, z] (planar: x horizontal, z up) or [x, y, z] (z up), got " + describe(node));
   if (node.size() == 2) return Eigen::Vector3d(toNumber(node[0], key + "[0]"), 0.0, toNumber(node[1], key + "[1]"));
-  const Eigen::Vector3d v(toNumber(node[0], key + "[0]"), toNumber(node[1], key + "[1]"), toNumber(node[2], key + "[2]"));
+  const Eigen::Vector3d v(toNumber(node[0], key + "[0]"), toNumber(node[1], key + "[1]"),
+                          toNumber(node[2], key + "[2]"));
   if (planar && v.y() != 0.0)
-    throw SceneError(key + "[1]", "y = " + formatNumber(v.y()) + " points out of the vertical x-z plane of a planar "
-                                  "scene (space: planar, the default); set space: spatial for a 3D scene");
+    throw SceneError(key + "[1]", "y = " + formatNumber(v.y()) +
+                                      " points out of the vertical x-z plane of a planar "
+                                      "scene (space: planar, the default); set space: spatial for a 3D scene");
   return v;
 }
 // The planar [x, z_up] of a 3D vector (exact: the doubles of a 2-vector are copied).
@@ -144,8 +145,8 @@ class Section {
     std::vector<std::string> seen;
     for (const auto& kv : node_) {
       if (!kv.first.IsScalar() || kv.first.Scalar().empty())  // "! : 5" is a scalar key ''
-        throw SceneError(path_, std::string(path_.empty() ? "top-level keys" : "keys") +
-                                    " must be plain names, got " + describe(kv.first) + where(kv.first));
+        throw SceneError(path_, std::string(path_.empty() ? "top-level keys" : "keys") + " must be plain names, got " +
+                                    describe(kv.first) + where(kv.first));
       const std::string k = kv.first.Scalar();
       if (std::find(seen.begin(), seen.end(), k) != seen.end()) throw SceneError(key(k), "duplicate key");
       seen.push_back(k);
@@ -168,9 +169,7 @@ class Section {
   double number(const std::string& k, double def) const { return has(k) ? number(k) : def; }
   int integer(const std::string& k) const { return toInteger(at(k), key(k)); }
   bool boolean(const std::string& k, bool def) const { return has(k) ? toBool(at(k), key(k)) : def; }
-  std::string text(const std::string& k, const std::string& def) const {
-    return has(k) ? toText(at(k), key(k)) : def;
-  }
+  std::string text(const std::string& k, const std::string& def) const { return has(k) ? toText(at(k), key(k)) : def; }
   Vec2 vec2(const std::string& k) const { return toVec2(at(k), key(k)); }
   Vec2 vec2(const std::string& k, const Vec2& def) const { return has(k) ? vec2(k) : def; }
   Eigen::Vector3d vec3(const std::string& k, bool planar) const { return toVec3(at(k), key(k), planar); }

@@ -37,7 +37,8 @@ namespace {
 void parseBendingAxesEI(const Section& line, Scene& s) {
   const std::string key = line.key("EI");
   const YAML::Node ei = line.at("EI");
-  if (ei.size() != 2) throw SceneError(key, "expected a number or [EI_1, EI_2] (about two material axes), got " + describe(ei));
+  if (ei.size() != 2)
+    throw SceneError(key, "expected a number or [EI_1, EI_2] (about two material axes), got " + describe(ei));
   if (s.space != SpaceKind::kSpatial)
     throw SceneError(key, "[EI_1, EI_2] needs space: spatial (the planar core bends in its plane only)");
   if (!s.options.bending) throw SceneError(key, "[EI_1, EI_2] contradicts line.bending: false");
@@ -64,7 +65,8 @@ void parseBendingAxes(const Section& line, Scene& s) {
     throw SceneError(line.key("bending_axis"), "expected [x, y, z], got " + describe(axis));
   b.axis = line.vec3("bending_axis", false);
   if (!(b.axis.allFinite() && b.axis.norm() > 0.0))
-    throw SceneError(line.key("bending_axis"), "must be a non-zero direction [x, y, z] (material axis 1 at the hang-off)");
+    throw SceneError(line.key("bending_axis"),
+                     "must be a non-zero direction [x, y, z] (material axis 1 at the hang-off)");
 }
 
 // line: geometry + material, or EA / EI / mass_per_length directly (never both).
@@ -79,13 +81,15 @@ void parseCrossSection(const Section& line, Scene& s) {
                      "youngs_modulus and density, or EA, EI and mass_per_length");
   if (!geometry && direct_key.empty()) {
     if (line.has("outer_diameter")) line.at("youngs_modulus");  // throws "line.youngs_modulus: missing ..."
-    throw SceneError("line", "missing cross-section properties: give outer_diameter, youngs_modulus and density, "
-                             "or EA, EI and mass_per_length");
+    throw SceneError("line",
+                     "missing cross-section properties: give outer_diameter, youngs_modulus and density, "
+                     "or EA, EI and mass_per_length");
   }
 
   const double outer = line.number("outer_diameter", 0.0);
   const double inner = line.number("inner_diameter", 0.0);
-  if (geometry || line.has("outer_diameter")) requirePositive(line.key("outer_diameter"), line.number("outer_diameter"));
+  if (geometry || line.has("outer_diameter"))
+    requirePositive(line.key("outer_diameter"), line.number("outer_diameter"));
   requireNonNegative(line.key("inner_diameter"), inner);
   if (line.has("inner_diameter") && !line.has("outer_diameter")) line.at("outer_diameter");
   if (inner > 0.0 && !(inner < outer))
@@ -148,8 +152,10 @@ void parseTorsion(const Section& line, Scene& s) {
 }
 
 void parseLine(const Section& root, Scene& s) {
-  if (!root.has("line")) throw SceneError("line", "missing required section (needs at least length, elements "
-                                                  "and the cross-section properties)");
+  if (!root.has("line"))
+    throw SceneError("line",
+                     "missing required section (needs at least length, elements "
+                     "and the cross-section properties)");
   const Section line = root.section(
       "line", {"length", "elements", "outer_diameter", "inner_diameter", "youngs_modulus", "density", "EA", "EI",
                "mass_per_length", "end_mass", "bending", "axial_flexibility", "axial_damping", "axial_damping_ratio",
@@ -161,7 +167,8 @@ void parseLine(const Section& root, Scene& s) {
   if (s.elements < 1) throw SceneError(line.key("elements"), "must be >= 1, got " + std::to_string(s.elements));
   if (s.elements > kMaxSceneElements)
     throw SceneError(line.key("elements"), "must be <= " + std::to_string(kMaxSceneElements) + ", got " +
-                                               std::to_string(s.elements) + " (the static initial state is a dense "
+                                               std::to_string(s.elements) +
+                                               " (the static initial state is a dense "
                                                "solve: O(n^2) memory, O(n^3) time)");
   s.options.bending = line.boolean("bending", true);
   s.options.axial_flexibility = line.boolean("axial_flexibility", true);
@@ -172,10 +179,11 @@ void parseLine(const Section& root, Scene& s) {
   s.line.axial_damping_ratio = line.number("axial_damping_ratio", 0.0);
   if (!(s.line.axial_damping_ratio >= 0.0 && s.line.axial_damping_ratio <= 1.0))
     throw SceneError(line.key("axial_damping_ratio"), "must be in [0, 1] (a fraction of critical, not percent), got " +
-                                                           formatNumber(s.line.axial_damping_ratio));
+                                                          formatNumber(s.line.axial_damping_ratio));
   if (line.has("axial_damping") && line.has("axial_damping_ratio"))
-    throw SceneError(line.key("axial_damping_ratio"), "give the axial damping either as a coefficient (axial_damping) "
-                                                      "or as a ratio, not both");
+    throw SceneError(line.key("axial_damping_ratio"),
+                     "give the axial damping either as a coefficient (axial_damping) "
+                     "or as a ratio, not both");
   s.line.bending_damping = line.number("bending_damping", 0.0);
   requireNonNegative(line.key("bending_damping"), s.line.bending_damping);
   s.end_mass = line.number("end_mass", 0.0);
@@ -201,9 +209,10 @@ void parseInitial(const Section& root, Scene& s) {
       throw SceneError(key, "expected [dx, dy] (horizontal: x, y), got " + describe(off));
     s.initial.end_offset = Vec2(toNumber(off[0], key + "[0]"), toNumber(off[1], key + "[1]"));
     if (planar && s.initial.end_offset.y() != 0.0)
-      throw SceneError(key + "[1]", "dy = " + formatNumber(s.initial.end_offset.y()) + " points out of the vertical "
-                                    "x-z plane of a planar scene (space: planar, the default); set space: spatial "
-                                    "for a 3D scene");
+      throw SceneError(key + "[1]", "dy = " + formatNumber(s.initial.end_offset.y()) +
+                                        " points out of the vertical "
+                                        "x-z plane of a planar scene (space: planar, the default); set space: spatial "
+                                        "for a 3D scene");
     s.initial.end_dx = s.initial.end_offset.x();
   } else {
     s.initial.end_dx = displaced ? initial.number("end_dx") : initial.number("end_dx", 0.0);
@@ -212,8 +221,9 @@ void parseInitial(const Section& root, Scene& s) {
   s.initial.angle = initial.number("angle", -90.0) * kDegToRad;
   s.initial.heading = initial.number("heading", 0.0) * kDegToRad;
   if (planar && s.initial.heading != 0.0)
-    throw SceneError(initial.key("heading"), "turns the straight line out of the vertical x-z plane of a planar scene "
-                                             "(space: planar, the default); set space: spatial for a 3D scene");
+    throw SceneError(initial.key("heading"),
+                     "turns the straight line out of the vertical x-z plane of a planar scene "
+                     "(space: planar, the default); set space: spatial for a 3D scene");
   s.initial.tolerance = initial.number("tolerance", 1e-9);
   requirePositive(initial.key("tolerance"), s.initial.tolerance);
   s.initial.end_force = initial.choice("end_force", EndForceKind::kRelease);
@@ -267,16 +277,20 @@ void checkCombination(const Scene& s) {
   // 3D: a straight start may be pinned where it ends (a taut line; checked against bottom.position at t = 0).
   const bool straight3 = s.space == SpaceKind::kSpatial && s.initial.type == InitialKind::kStraight;
   if (pinned && s.initial.type != InitialKind::kBetweenPoints && !straight3)
-    throw SceneError("bottom.type", "'pinned' needs initial.type: between_points (the initial state must end at "
-                                    "bottom.position), got initial.type '" + std::string(name(s.initial.type)) + "'");
+    throw SceneError("bottom.type",
+                     "'pinned' needs initial.type: between_points (the initial state must end at "
+                     "bottom.position), got initial.type '" +
+                         std::string(name(s.initial.type)) + "'");
   if (pinned && straight3) {
     const double c = std::cos(s.initial.angle), h = s.initial.heading;
     const Eigen::Vector3d end = spatial::buildTopMotion3(s.top)->at(0.0).p +
                                 s.length * Eigen::Vector3d(c * std::cos(h), c * std::sin(h), std::sin(s.initial.angle));
     const double gap = (end - spatial::buildTopMotion3(s.bottom_motion)->at(0.0).p).norm();
     if (!(gap <= 1e-9 * s.length))
-      throw SceneError("bottom.position", "is " + formatNumber(gap) + " m from the end of the straight initial line "
-                                          "(initial.type straight with a pinned bottom: the line must end there at t = 0)");
+      throw SceneError("bottom.position",
+                       "is " + formatNumber(gap) +
+                           " m from the end of the straight initial line "
+                           "(initial.type straight with a pinned bottom: the line must end there at t = 0)");
   }
   if (s.initial.type == InitialKind::kDisplaced && s.initial.end_offset.y() != 0.0 &&
       !(s.initial.end_offset.norm() < s.length))
@@ -288,10 +302,10 @@ void checkCombination(const Scene& s) {
   // The solver values and what the scene's engine supports: the core's one check (the node calls it too).
   if (const auto error = checkScene(s)) throw SceneError(error->key, error->message);
   if (pinned && !s.options.axial_flexibility) {
-    const double span = s.space == SpaceKind::kSpatial
-                            ? (spatial::buildTopMotion3(s.bottom_motion)->at(0.0).p -
-                               spatial::buildTopMotion3(s.top)->at(0.0).p).norm()
-                            : (s.bottom_point - buildTopMotion(s.top)->at(0.0).p).norm();
+    const double span =
+        s.space == SpaceKind::kSpatial
+            ? (spatial::buildTopMotion3(s.bottom_motion)->at(0.0).p - spatial::buildTopMotion3(s.top)->at(0.0).p).norm()
+            : (s.bottom_point - buildTopMotion(s.top)->at(0.0).p).norm();
     if (span > s.length)
       throw SceneError("bottom.position", "is " + formatNumber(span) + " m from the top at t = 0 but the line is " +
                                               formatNumber(s.length) + " m long and inextensible");
@@ -305,9 +319,16 @@ struct SectionEntry {
 };
 // Top-level sections, parsed in this order.
 const SectionEntry kSections[] = {
-    {"line", parseLine},   {"top", parseTop},           {"bottom", parseBottom}, {"initial", parseInitial},
-    {"environment", parseEnvironment}, {"solver", parseSolver}, {"run", parseRun},
-    {"hydrodynamics", parseHydrodynamics}, {"seabed", parseSeabed}, {"internal_fluid", parseInternalFluid},
+    {"line", parseLine},
+    {"top", parseTop},
+    {"bottom", parseBottom},
+    {"initial", parseInitial},
+    {"environment", parseEnvironment},
+    {"solver", parseSolver},
+    {"run", parseRun},
+    {"hydrodynamics", parseHydrodynamics},
+    {"seabed", parseSeabed},
+    {"internal_fluid", parseInternalFluid},
     {"attachments", parseAttachments},
 };
 

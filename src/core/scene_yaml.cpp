@@ -13,7 +13,6 @@
 #include "riser_sim/integrator.h"
 #include "riser_sim/solver_setup.h"
 
-
 namespace riser_sim {
 namespace {
 
@@ -66,8 +65,7 @@ void removeKey(YAML::Node& root, const std::vector<std::string>& parts, const st
 
 void applyOverride(YAML::Node& root, const std::string& assignment) {
   const size_t eq = assignment.find('=');
-  if (eq == std::string::npos)
-    throw SceneError("", "malformed override '" + assignment + "': expected key.path=value");
+  if (eq == std::string::npos) throw SceneError("", "malformed override '" + assignment + "': expected key.path=value");
   const std::string path = trim(assignment.substr(0, eq));
   const std::string text = trim(assignment.substr(eq + 1));
   std::vector<std::string> parts;
@@ -76,10 +74,11 @@ void applyOverride(YAML::Node& root, const std::string& assignment) {
   while (std::getline(ps, part, '.')) parts.push_back(part);
   if (path.empty() || path.back() == '.') parts.push_back("");
   for (const auto& p : parts)
-    if (p.empty() || p.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_") !=
-                         std::string::npos)
-      throw SceneError(path, "malformed override '" + assignment + "': expected key.path=value with keys made of "
-                                                                   "letters, digits and _");
+    if (p.empty() ||
+        p.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_") != std::string::npos)
+      throw SceneError(path, "malformed override '" + assignment +
+                                 "': expected key.path=value with keys made of "
+                                 "letters, digits and _");
   if (text.empty()) throw SceneError(path, "override '" + assignment + "' has no value");
   if (text == "null" || text == "~") {  // key=null: the key is absent (removed from the tree)
     removeKey(root, parts, path);

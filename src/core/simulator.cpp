@@ -31,13 +31,12 @@ std::unique_ptr<Formulation> makeFormulation(const Model& model, const SolverSet
     case FormulationKind::kIndependent: return std::make_unique<IndependentFormulation>(model, s.stabilization);
     case FormulationKind::kRecursive: return std::make_unique<RecursiveFormulation>(model, s.stabilization);
   }
-  throw std::invalid_argument("solver.formulation: unknown formulation (accepted: " +
-                              choiceNames<FormulationKind>() + ")");
+  throw std::invalid_argument("solver.formulation: unknown formulation (accepted: " + choiceNames<FormulationKind>() +
+                              ")");
 }
 }  // namespace
 
-Simulator::Simulator(std::shared_ptr<const Model> model, std::unique_ptr<TopMotion> top,
-                     const SolverSettings& settings)
+Simulator::Simulator(std::shared_ptr<const Model> model, std::unique_ptr<TopMotion> top, const SolverSettings& settings)
     : model_(std::move(model)), top_(std::move(top)), settings_(settings) {
   if (const auto error = checkSolverSetup(settings_, model_->segments(), model_->options().axial_flexibility))
     throw std::invalid_argument(error->what());
@@ -135,7 +134,8 @@ double Simulator::stableStepEstimate() const {
   // + ω_c² c, a critically damped real pair, couple with the line's modes and are not seen by the power
   // iteration on ∂a/∂q. Measured on the inextensible Table 1 line (absolute, rk4, 60 s): the largest
   // stable h is 0.83, 0.79, 0.86, 0.85x the raw estimate at n = 10, 20, 40, 100 (docs/integrators.md).
-  const bool baumgarte = settings_.formulation == FormulationKind::kAbsolute || model_->bottom() == BottomBoundary::kPinned;
+  const bool baumgarte =
+      settings_.formulation == FormulationKind::kAbsolute || model_->bottom() == BottomBoundary::kPinned;
   // An inextensible line's highest frequencies are set by its tension, which the motion changes (the
   // swing of Table 1 raises it): measured (recursive, 20 s) 0.8x the raw estimate stable, 0.9x diverging
   // at n = 20, 40, 100.

@@ -64,7 +64,7 @@ double largestStableStep(const std::vector<Complex>& eigenvalues, const std::fun
   for (const Complex& l : eigenvalues) {
     const double mag = std::abs(l);
     if (!(mag > 0.0) || !std::isfinite(mag)) continue;
-    double theta = std::arg(l);  // (-π, π]
+    double theta = std::arg(l);                                                   // (-π, π]
     if (std::abs(theta) < M_PI / 2) theta = theta >= 0.0 ? M_PI / 2 : -M_PI / 2;  // growing: imaginary axis
     h = std::min(h, stabilityRadius(R, theta) / mag);
   }

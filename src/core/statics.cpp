@@ -102,8 +102,8 @@ void firstGuess(const Model& model, const StaticsProblem& problem, const StaticT
     const Vec2 chord = problem.end_point - problem.top;
     guess = straightLine(model, problem.top, std::atan2(chord.y(), chord.x()));
     const double stretch = model.line().EA * std::max(chord.norm() / L - 1.0, 0.0);
-    fe = chord.normalized() * stretch + Vec2(0.0, (model.endMass() + 0.5 * model.line().mass_per_length * L) *
-                                                       model.gravity());
+    fe = chord.normalized() * stretch +
+         Vec2(0.0, (model.endMass() + 0.5 * model.line().mass_per_length * L) * model.gravity());
   }
   unwrap(guess);
   F.fromKinematics(guess, x);
@@ -116,11 +116,12 @@ std::string problemKeys(const Model& model, const StaticsProblem& p, const Stati
   std::ostringstream o;
   o << "top at (" << p.top.x() << ", " << p.top.y() << "), line.length " << model.length() << " m";
   if (p.kind == Kind::kBetweenPoints)
-    o << ", bottom.position (" << p.end_point.x() << ", " << p.end_point.y() << "), "
-      << (p.end_point - p.top).norm() << " m from the top";
+    o << ", bottom.position (" << p.end_point.x() << ", " << p.end_point.y() << "), " << (p.end_point - p.top).norm()
+      << " m from the top";
   if (p.kind == Kind::kEndDisplaced) o << ", initial.end_dx " << p.end_dx << " m";
   if (std::isfinite(terms.seabedLevel()))
-    o << ", seabed.level " << terms.seabedLevel() << " m, seabed.stiffness_normal " << terms.seabedStiffness() << " N/m";
+    o << ", seabed.level " << terms.seabedLevel() << " m, seabed.stiffness_normal " << terms.seabedStiffness()
+      << " N/m";
   return o.str();
 }
 
@@ -185,7 +186,7 @@ Attempt seabedRamp(const Model& model, const StaticsProblem& problem, StaticTerm
                    Budget& b) {
   const bool from_free = !std::isfinite(start_exp);
   double e = from_free ? -6.0 : std::min(start_exp, 0.0), step = 0.5;  // log10 of the stiffness factor
-  StaticsProblem loose = problem;  // the intermediate states need not be exact
+  StaticsProblem loose = problem;                                      // the intermediate states need not be exact
   loose.tolerance = std::max(problem.tolerance, 1e-6);
   terms.scaleSeabed(from_free ? 0.0 : std::pow(10.0, e));
   Attempt a = direct(model, loose, terms, t, b);
@@ -248,8 +249,8 @@ std::string currentLimit(const Model& model, const StaticsProblem& p, const Stat
 // the path) halved when Newton fails; the end is checked as any solution (its stability included). failure:
 // empty on success.
 template <class Start, class Scale>
-Attempt rampLoads(const Model& model, const StaticsProblem& problem, StaticTerms& terms, StaticResidual& F,
-                  double t, Budget& budget, Start&& start, Scale&& scale, const std::string& what) {
+Attempt rampLoads(const Model& model, const StaticsProblem& problem, StaticTerms& terms, StaticResidual& F, double t,
+                  Budget& budget, Start&& start, Scale&& scale, const std::string& what) {
   StaticsProblem loose = problem;
   loose.tolerance = std::max(problem.tolerance, 1e-6);
   scale(0.0);
@@ -267,8 +268,10 @@ Attempt rampLoads(const Model& model, const StaticsProblem& problem, StaticTerms
       budget.stage = "with " + what + " ramped up, at " + std::to_string(next) + " of the scene's";
       const bool ok = newton(F, x, next < 1.0 ? loose : problem, it, r, budget);
       c.iterations += it;
-      if (ok) c.x = x, c.residual = r, s = next, step = std::min(2.0 * step, 0.5);
-      else step *= 0.5;
+      if (ok)
+        c.x = x, c.residual = r, s = next, step = std::min(2.0 * step, 0.5);
+      else
+        step *= 0.5;
     }
   }
   scale(1.0);
@@ -341,8 +344,7 @@ StaticsResult solveStatics(const Model& model, const StaticsProblem& problem, do
           o << "to a valid equilibrium: its solution (" << a.iterations << " iterations, residual " << a.residual
             << ") fails the check " << c.message;
       } else if (!a.converged) {
-        o << "in " << a.iterations << " iterations, residual " << a.residual << " (tolerance " << prob.tolerance
-          << ")";
+        o << "in " << a.iterations << " iterations, residual " << a.residual << " (tolerance " << prob.tolerance << ")";
       }
       a.failure = o.str();
       if (a.failure.empty()) break;
@@ -372,8 +374,8 @@ StaticsResult solveStatics(const Model& model, const StaticsProblem& problem, do
         VecX x = c.x;
         int it = 0;
         double r = INFINITY;
-        budget.stage = "with the current ramped up from still water, at " + std::to_string(std::sqrt(next)) +
-                       " of its speed";
+        budget.stage =
+            "with the current ramped up from still water, at " + std::to_string(std::sqrt(next)) + " of its speed";
         bool ok = newton(F, x, next < 1.0 ? loose : problem, it, r, budget);
         c.iterations += it;
         if (ok) {
@@ -381,8 +383,10 @@ StaticsResult solveStatics(const Model& model, const StaticsProblem& problem, do
           const std::string u = statics_detail::stabilityCheck(model, problem, kin, F.endForce(x), t, std::sqrt(next));
           if (!u.empty()) ok = false, lost = u;
         }
-        if (ok) c.x = x, c.residual = r, s = next, step = std::min(2.0 * step, 0.5);
-        else step *= 0.5;
+        if (ok)
+          c.x = x, c.residual = r, s = next, step = std::min(2.0 * step, 0.5);
+        else
+          step *= 0.5;
       }
     }
     terms.scaleCurrent(1.0);
@@ -404,26 +408,34 @@ StaticsResult solveStatics(const Model& model, const StaticsProblem& problem, do
     }
     c.iterations += a.iterations;
     c.failure = o.str();
-    if (c.failure.empty()) a = c;
-    else failures += "; with the current ramped up from still water " + c.failure;
+    if (c.failure.empty())
+      a = c;
+    else
+      failures += "; with the current ramped up from still water " + c.failure;
   }
   if (!a.failure.empty() && problem.continuation && terms.hasAttachments() && !budget.out) {
     // Continuation in the attachments (buoys and clumps can pull Newton onto a folded balance): the line
     // without their loads, then the loads ramped up along the path of stable equilibria.
     const Attempt c = rampLoads(
-        model, problem, terms, F, t, budget, [&](const StaticsProblem& p, std::string& f) { return attempts(p, false, f); },
+        model, problem, terms, F, t, budget,
+        [&](const StaticsProblem& p, std::string& f) { return attempts(p, false, f); },
         [&](double s) { terms.scaleAttachments(s); }, "the attachments' loads");
-    if (c.failure.empty()) a = c;
-    else failures += "; with the attachments' loads ramped up from none " + c.failure;
+    if (c.failure.empty())
+      a = c;
+    else
+      failures += "; with the attachments' loads ramped up from none " + c.failure;
   }
   if (!a.failure.empty() && problem.continuation && terms.hasBuoyantSection() && !budget.out) {
     // Continuation in the buoyancy (a lazy wave's buoyant section pulls Newton from the catenary guess onto an
     // upturned balance): the line without lift, heavy everywhere, then the lift ramped up to the water's.
     const Attempt c = rampLoads(
-        model, problem, terms, F, t, budget, [&](const StaticsProblem& p, std::string& f) { return attempts(p, false, f); },
+        model, problem, terms, F, t, budget,
+        [&](const StaticsProblem& p, std::string& f) { return attempts(p, false, f); },
         [&](double s) { terms.scaleBuoyancy(s); }, "the buoyancy");
-    if (c.failure.empty()) a = c;
-    else failures += "; with the buoyancy ramped up from none " + c.failure;
+    if (c.failure.empty())
+      a = c;
+    else
+      failures += "; with the buoyancy ramped up from none " + c.failure;
   }
   res.converged = a.failure.empty();
   res.iterations = a.iterations;

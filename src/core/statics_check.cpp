@@ -30,8 +30,7 @@ std::string stabilityCheck(const Model& model, const StaticsProblem& problem, co
   if (m > 0) {
     // Jacobi-scaled rows (as K's), so the rank test sees the end conditions' geometry, not the units.
     VecX s(nt);
-    for (int i = 0; i < nt; ++i)
-      s[i] = std::abs(lin.K(i, i)) > 1e-300 ? 1.0 / std::sqrt(std::abs(lin.K(i, i))) : 1.0;
+    for (int i = 0; i < nt; ++i) s[i] = std::abs(lin.K(i, i)) > 1e-300 ? 1.0 / std::sqrt(std::abs(lin.K(i, i))) : 1.0;
     const MatX Ct = s.asDiagonal() * lin.Ct.leftCols(m);
     Eigen::HouseholderQR<MatX> qr(Ct);
     const MatX R = qr.matrixQR().topRows(m).triangularView<Eigen::Upper>();
@@ -58,8 +57,7 @@ std::string stabilityCheck(const Model& model, const StaticsProblem& problem, co
 std::string seabedGeometry(const Model& model, const StaticsProblem& p, const StaticTerms& terms) {
   using Kind = StaticsProblem::Kind;
   const double level = terms.seabedLevel(), k = terms.seabedStiffness(), L = model.length();
-  if (!(k > 0.0) || p.kind == Kind::kHanging || !(netWeightPerLength(model, terms, p.top) > 0.0))
-    return "";
+  if (!(k > 0.0) || p.kind == Kind::kHanging || !(netWeightPerLength(model, terms, p.top) > 0.0)) return "";
   const double h = p.top.y() - level;
   const bool chain = !model.hasBending();
   std::ostringstream o;
@@ -75,8 +73,8 @@ std::string seabedGeometry(const Model& model, const StaticsProblem& p, const St
       o << "bottom.position: " << -ha << " m below seabed.level " << level << " m, deeper than the whole line's "
         << "weight could sink it (" << 2.0 * W / k << " m with seabed.stiffness_normal " << k << " N/m): buried";
     else if (chain && h > 0.0 && h + std::abs(p.end_point.x() - p.top.x()) + std::max(ha, 0.0) < L)
-      o << "bottom.position: the line (line.length " << L << " m) is longer than the way down to seabed.level "
-        << level << " m, along it and up to the anchor (" << h + std::abs(p.end_point.x() - p.top.x()) + std::max(ha, 0.0)
+      o << "bottom.position: the line (line.length " << L << " m) is longer than the way down to seabed.level " << level
+        << " m, along it and up to the anchor (" << h + std::abs(p.end_point.x() - p.top.x()) + std::max(ha, 0.0)
         << " m): it would have to fold on the seabed; move the anchor farther from the top";
   }
   return o.str();
@@ -129,8 +127,8 @@ EquilibriumCheck checkEquilibrium(const Model& model, const StaticsProblem& prob
     const double level = terms.seabedLevel(), k = terms.seabedStiffness();
     const Vec2 p = worst == nb - 1 && at[nb - 1].end().y() < at[nb - 1].A.y() ? at[nb - 1].end() : at[worst].A;
     o << "seabed: the seabed carries " << seabed_total << " N, more than " << kSeabedLoadFactor
-      << " x the line's load (" << c.load << " N): the line is pushed into it (deepest near rfe " << worst
-      << ", " << level - p.y() << " m below seabed.level " << level << ", where the whole load would sink a point by "
+      << " x the line's load (" << c.load << " N): the line is pushed into it (deepest near rfe " << worst << ", "
+      << level - p.y() << " m below seabed.level " << level << ", where the whole load would sink a point by "
       << c.load / k << " m)";
   } else if (!(c.max_joint_force <= kTensionLoadFactor * c.load + problem.tolerance * W)) {
     o << "tension: a joint carries " << c.max_joint_force << " N, more than " << kTensionLoadFactor

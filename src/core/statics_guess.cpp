@@ -22,8 +22,10 @@ void placeAlong(const Model& model, const Vec2& top, At&& at, Kinematics& kin) {
     const double len = r.length + kin[i].delta;
     const Vec2 target = at(r.s_begin + r.length), chord = at(r.s_begin + r.length) - at(r.s_begin);
     const double dy = target.y() - A.y();
-    const double side = (std::abs(target.x() - A.x()) > 1e-12 * len ? target.x() - A.x() : chord.x()) < 0.0 ? -1.0 : 1.0;
-    const double phi = std::abs(dy) < len ? std::atan2(dy, side * std::sqrt(len * len - dy * dy)) : (dy < 0.0 ? -M_PI / 2 : M_PI / 2);
+    const double side =
+        (std::abs(target.x() - A.x()) > 1e-12 * len ? target.x() - A.x() : chord.x()) < 0.0 ? -1.0 : 1.0;
+    const double phi =
+        std::abs(dy) < len ? std::atan2(dy, side * std::sqrt(len * len - dy * dy)) : (dy < 0.0 ? -M_PI / 2 : M_PI / 2);
     BodyKinematics& b = kin[i];
     b.A = A;
     b.phi = phi;
@@ -120,7 +122,8 @@ bool displacedGuess(const Model& model, const StaticsProblem& p, const StaticTer
   };
   end_force = p.end_dx < 0 ? -H : H;
   kin = straightLine(model, p.top, 0.0);
-  stretch(model, [&](double sigma) { return tension(L - sigma); }, kin);
+  stretch(
+      model, [&](double sigma) { return tension(L - sigma); }, kin);
   placeAlong(model, p.top, at, kin);
   return true;
 }
@@ -166,7 +169,8 @@ bool betweenPointsGuess(const Model& model, const StaticsProblem& p, const Stati
   }
   if (!((endOf(Fe, L) - aim).norm() < 1e-6 * L)) return false;
   kin = straightLine(model, p.top, 0.0);
-  placeAlong(model, p.top, [&](double s) { return Vec2(p.top + endOf(Fe, s)); }, kin);
+  placeAlong(
+      model, p.top, [&](double s) { return Vec2(p.top + endOf(Fe, s)); }, kin);
   end_force = Fe + Vec2(0.0, Wm);
   // Into the seabed: lay the rest on it if the anchor is on it (within a segment).
   const double level = terms.seabedLevel();
@@ -212,9 +216,12 @@ bool hangingOnSeabedGuess(const Model& model, const StaticsProblem& p, const Sta
     b.delta = model.options().axial_flexibility ? T / r.axial_stiffness : 0.0;
     const double l = r.length + b.delta;
     double phi;
-    if (above >= l) phi = -M_PI / 2;                                                          // hanging
-    else if (above > 0.0) phi = std::atan2(-above, side * std::sqrt(l * l - above * above));  // touching down
-    else phi = side > 0.0 ? 0.0 : M_PI;                                                       // laid
+    if (above >= l)
+      phi = -M_PI / 2;  // hanging
+    else if (above > 0.0)
+      phi = std::atan2(-above, side * std::sqrt(l * l - above * above));  // touching down
+    else
+      phi = side > 0.0 ? 0.0 : M_PI;  // laid
     b.phi = phi;
     b.c = std::cos(phi);
     b.s = std::sin(phi);

@@ -45,7 +45,8 @@ Surfaces surfacesOf(const riser_sim::Scene& scene) {
 std_msgs::ColorRGBA tensionColour(double x, double lo, double hi) {
   const double s = hi > lo ? std::clamp((x - lo) / (hi - lo), 0.0, 1.0) : 0.5;
   // Piecewise linear through blue, cyan, green, yellow, red.
-  static const double stops[5][3] = {{0.1, 0.2, 1.0}, {0.0, 0.9, 1.0}, {0.1, 0.9, 0.1}, {1.0, 0.9, 0.0}, {1.0, 0.1, 0.1}};
+  static const double stops[5][3] = {
+      {0.1, 0.2, 1.0}, {0.0, 0.9, 1.0}, {0.1, 0.9, 0.1}, {1.0, 0.9, 0.0}, {1.0, 0.1, 0.1}};
   const double f = s * 4.0;
   const int k = std::min(static_cast<int>(f), 3);
   const double w = f - k;
@@ -139,8 +140,8 @@ void LineMarkers::fill(const riser_sim::RunOutputs& out, const ros::Time& stamp)
     xmin = std::min(xmin, p.x), xmax = std::max(xmax, p.x);
     ymin = std::min(ymin, p.y), ymax = std::max(ymax, p.y);
     zmax = std::max(zmax, p.z);
-    const double f = i == 0 ? axial_force[0]
-                            : (i == nb ? axial_force[nb - 1] : 0.5 * (axial_force[i - 1] + axial_force[i]));
+    const double f =
+        i == 0 ? axial_force[0] : (i == nb ? axial_force[nb - 1] : 0.5 * (axial_force[i - 1] + axial_force[i]));
     line.colors[i] = tensionColour(f, lo, hi);
   }
   auto& nodes = marker(kNodes);

@@ -32,7 +32,7 @@ int main(int argc, char** argv) {
     try {
       riser_sim_ros::RiserSimNode node(nh, pnh);
       g_node = &node;
-      if (g_stop) node.stop();  // a signal during the start-up
+      if (g_stop) node.stop();           // a signal during the start-up
       riser_sim_ros::MasterWatch watch;  // registers again with a restarted master (docs/ros_interface.md)
       node.spin();
       g_node = nullptr;

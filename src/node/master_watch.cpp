@@ -50,7 +50,9 @@ std::vector<std::pair<std::string, std::string>> ownTopics(const char* method) {
 
 }  // namespace
 
-MasterWatch::MasterWatch(double period) : period_(period) { thread_ = std::thread([this] { run(); }); }
+MasterWatch::MasterWatch(double period) : period_(period) {
+  thread_ = std::thread([this] { run(); });
+}
 
 MasterWatch::~MasterWatch() {
   {
@@ -81,14 +83,17 @@ bool MasterWatch::masterKnowsUs() const {
 void MasterWatch::poll() {
   if (!ros::master::check()) {
     if (!down_) {
-      ROS_WARN("riser_sim: ROS master %s unreachable: connections already made keep working; will register again "
-               "when it is back", ros::master::getURI().c_str());
+      ROS_WARN(
+          "riser_sim: ROS master %s unreachable: connections already made keep working; will register again "
+          "when it is back",
+          ros::master::getURI().c_str());
       down_ = true;
     }
     return;
   }
   if (masterKnowsUs()) {
-    if (down_) ROS_INFO("riser_sim: ROS master %s reachable again, and it knows this node", ros::master::getURI().c_str());
+    if (down_)
+      ROS_INFO("riser_sim: ROS master %s reachable again, and it knows this node", ros::master::getURI().c_str());
     down_ = false;
     known_ = true;
     if (polls_++ % 5 == 0) rememberServices();
@@ -150,10 +155,11 @@ void MasterWatch::reregister() {
   }
   ++reregistrations_;
   const std::string failures = failed ? ", " + std::to_string(failed) + " failed" : "";
-  ROS_WARN("riser_sim: the ROS master %s was restarted (it did not know this node): registered again %d "
-           "publications, %d subscriptions, %d services%s; parameters set before the restart are gone from the "
-           "parameter server (this node keeps the values it read at start-up)",
-           ros::master::getURI().c_str(), pubs, subs, srvs, failures.c_str());
+  ROS_WARN(
+      "riser_sim: the ROS master %s was restarted (it did not know this node): registered again %d "
+      "publications, %d subscriptions, %d services%s; parameters set before the restart are gone from the "
+      "parameter server (this node keeps the values it read at start-up)",
+      ros::master::getURI().c_str(), pubs, subs, srvs, failures.c_str());
 }
 
 std::shared_ptr<MasterWatch> sharedMasterWatch() {

@@ -91,8 +91,9 @@ bool ModesServer::onModes(riser_sim::Modes::Request& req, riser_sim::Modes::Resp
     state = state_;
     if (!state) {
       res.success = false;
-      res.message = failure_.empty() ? "no static state yet: waiting for the first valid vessel pose (" + waiting_for_ + ")"
-                                     : "no static state: " + failure_;
+      res.message = failure_.empty()
+                        ? "no static state yet: waiting for the first valid vessel pose (" + waiting_for_ + ")"
+                        : "no static state: " + failure_;
       return true;
     }
   }

@@ -26,10 +26,14 @@ std::string modeName(const RunView& run) {
 }  // namespace
 
 NodeDiagnostics::NodeDiagnostics(ros::NodeHandle& nh, const std::string& name, const std::string& hardware_id,
-                                 double rate, double pose_timeout, const VesselInput& input,
-                                 const RosClockWatch& clock, const VesselInput* bottom)
-    : pub_(nh.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 5)), name_(name),
-      pose_timeout_(pose_timeout), input_(input), bottom_(bottom), clock_(clock) {
+                                 double rate, double pose_timeout, const VesselInput& input, const RosClockWatch& clock,
+                                 const VesselInput* bottom)
+    : pub_(nh.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 5)),
+      name_(name),
+      pose_timeout_(pose_timeout),
+      input_(input),
+      bottom_(bottom),
+      clock_(clock) {
   schedule_.period = periodOf(rate);
   msg_.status.resize(1);
   msg_.status[0].name = name.substr(name.find_first_not_of('/')) + ": riser simulation";
@@ -42,7 +46,8 @@ bool NodeDiagnostics::dueWhileStalled(WallClock::time_point wall) {
     return false;
   }
   if (next_stalled_ != WallClock::time_point() && wall < next_stalled_) return false;
-  next_stalled_ = wall + std::chrono::duration_cast<WallClock::duration>(std::chrono::duration<double>(schedule_.period));
+  next_stalled_ =
+      wall + std::chrono::duration_cast<WallClock::duration>(std::chrono::duration<double>(schedule_.period));
   return true;
 }
 
@@ -139,8 +144,8 @@ std::string NodeDiagnostics::runningMessage(const ros::Time& now, const RunView&
   if (line.drivenBottom())
     gapValues(h.bottom_gaps, "bottom pose gaps", "longest bottom pose gap [s]", "last bottom pose gap [s]",
               "rejoining the bottom");
-  std::string message = "running: real-time factor " + num(rtf, "%.2f") + " (compute " + num(compute_rtf, "%.1f") +
-                        "x real time)";
+  std::string message =
+      "running: real-time factor " + num(rtf, "%.2f") + " (compute " + num(compute_rtf, "%.1f") + "x real time)";
   if (win_dropped_ > 0.0 || (std::isfinite(rtf) && rtf < 0.95)) {
     st.level = DiagnosticStatus::WARN;
     message = "falling behind real time: " + message + ", dropped " + num(win_dropped_, "%.3f") + " s";
@@ -155,8 +160,10 @@ std::string NodeDiagnostics::runningMessage(const ros::Time& now, const RunView&
               " s pose gap (" + num(g.rejoin_end - t, "%.1f") + " s left); " + message;
   } else if (std::abs(drift) > riser_sim::kEnergyDriftWarning) {
     st.level = DiagnosticStatus::WARN;
-    message = "energy balance off by " + num(drift, "%.3g") + " of m g L: solver.dt does not resolve "
-              "the motion, positions and forces may be wrong (smaller solver.dt or midpoint); " + message;
+    message = "energy balance off by " + num(drift, "%.3g") +
+              " of m g L: solver.dt does not resolve "
+              "the motion, positions and forces may be wrong (smaller solver.dt or midpoint); " +
+              message;
   } else if (!forces.empty()) {
     st.level = DiagnosticStatus::WARN;
     message = forces + "; " + message;

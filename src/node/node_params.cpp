@@ -45,9 +45,12 @@ bool decodeString(XmlRpcValue& v, T& out) {
 }
 
 bool decodeNumber(XmlRpcValue& v, double& out) {
-  if (v.getType() == XmlRpcValue::TypeDouble) out = static_cast<double>(v);
-  else if (v.getType() == XmlRpcValue::TypeInt) out = static_cast<int>(v);
-  else return decodeString(v, out);
+  if (v.getType() == XmlRpcValue::TypeDouble)
+    out = static_cast<double>(v);
+  else if (v.getType() == XmlRpcValue::TypeInt)
+    out = static_cast<int>(v);
+  else
+    return decodeString(v, out);
   return true;
 }
 
@@ -69,16 +72,20 @@ class Reader {
     XmlRpcValue v;
     if (!get(name, v)) return def;
     int i;
-    if (v.getType() == XmlRpcValue::TypeInt) i = static_cast<int>(v);
-    else if (!decodeString(v, i)) throw ParamError(name, "expected an integer, got " + describe(v));
+    if (v.getType() == XmlRpcValue::TypeInt)
+      i = static_cast<int>(v);
+    else if (!decodeString(v, i))
+      throw ParamError(name, "expected an integer, got " + describe(v));
     return i;
   }
   bool boolean(const std::string& name, bool def) {
     XmlRpcValue v;
     if (!get(name, v)) return def;
     bool b;
-    if (v.getType() == XmlRpcValue::TypeBoolean) b = static_cast<bool>(v);
-    else if (!decodeString(v, b)) throw ParamError(name, "expected true or false, got " + describe(v));
+    if (v.getType() == XmlRpcValue::TypeBoolean)
+      b = static_cast<bool>(v);
+    else if (!decodeString(v, b))
+      throw ParamError(name, "expected true or false, got " + describe(v));
     return b;
   }
   std::string text(const std::string& name, const std::string& def) {
@@ -176,8 +183,8 @@ NodeParams loadNodeParams(const ros::NodeHandle& pnh, const std::string& node_na
   if (p.fixed_frame.empty()) throw ParamError("fixed_frame", "must not be empty");
   p.vessel_frame = stripSlash(r.text("vessel_frame", p.vessel_frame));
   if (p.vessel_input == "tf" && (p.vessel_frame.empty() || p.vessel_frame == p.fixed_frame))
-    throw ParamError("vessel_frame", "must name the vessel's tf frame (not empty, not fixed_frame '" +
-                                         p.fixed_frame + "') when vessel_input is tf");
+    throw ParamError("vessel_frame", "must name the vessel's tf frame (not empty, not fixed_frame '" + p.fixed_frame +
+                                         "') when vessel_input is tf");
   p.expected_frame = stripSlash(r.text("expected_frame", p.fixed_frame));
   if (p.expected_frame.empty()) throw ParamError("expected_frame", "must not be empty");
   p.tf_prefix = stripSlash(r.text("tf_prefix", stripSlash(node_name)));
@@ -195,12 +202,12 @@ NodeParams loadNodeParams(const ros::NodeHandle& pnh, const std::string& node_na
   nonNegative("max_out_of_plane", p.max_out_of_plane);
   p.max_position = r.number("max_position", p.max_position);
   positive("max_position", p.max_position);
-  for (const auto& [name, offset] : {std::make_pair("hangoff_offset", p.hangoff_offset),
-                                      std::make_pair("bottom_offset", p.bottom_offset)}) {
+  for (const auto& [name, offset] :
+       {std::make_pair("hangoff_offset", p.hangoff_offset), std::make_pair("bottom_offset", p.bottom_offset)}) {
     const double bound = std::min(kMaxOffset, p.max_position);
     if (offset.norm() > bound)
-      throw ParamError(name, "|[" + show(offset.x()) + ", " + show(offset.y()) + ", " + show(offset.z()) + "]| = " +
-                                 show(offset.norm()) + " m is beyond " + show(bound) +
+      throw ParamError(name, "|[" + show(offset.x()) + ", " + show(offset.y()) + ", " + show(offset.z()) +
+                                 "]| = " + show(offset.norm()) + " m is beyond " + show(bound) +
                                  " m: the offset is a point on the body (its lever arm turns the body's attitude "
                                  "into the point's motion); give it in metres in the body's frame");
   }
@@ -229,8 +236,8 @@ NodeParams loadNodeParams(const ros::NodeHandle& pnh, const std::string& node_na
   positive("loop_rate", p.loop_rate);
   for (const std::string& name : rate_names)
     if (p.rates[name] > p.loop_rate)
-      throw ParamError("rates/" + name, "must not exceed ~loop_rate (" + show(p.loop_rate) + " Hz), got " +
-                                            show(p.rates[name]));
+      throw ParamError("rates/" + name,
+                       "must not exceed ~loop_rate (" + show(p.loop_rate) + " Hz), got " + show(p.rates[name]));
   p.max_steps_per_cycle = r.integer("max_steps_per_cycle", p.max_steps_per_cycle);
   if (p.max_steps_per_cycle < 1)
     throw ParamError("max_steps_per_cycle", "must be >= 1, got " + std::to_string(p.max_steps_per_cycle));

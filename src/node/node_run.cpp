@@ -29,8 +29,10 @@ std::string point(const riser_sim::Scene& scene, const Eigen::Vector3d& p, const
 
 NodeRun::NodeRun(const riser_sim::Scene& scene, const VesselSample& s, double t, const NodeParams& params,
                  const VesselSample* bottom, double t_bottom)
-    : run_(build(scene, s, t, params, bottom, t_bottom)), vessel_(s.orientation),
-      rov_(bottom ? bottom->orientation : Eigen::Quaterniond::Identity()), pinned_(isPinned3(scene)),
+    : run_(build(scene, s, t, params, bottom, t_bottom)),
+      vessel_(s.orientation),
+      rov_(bottom ? bottom->orientation : Eigen::Quaterniond::Identity()),
+      pinned_(isPinned3(scene)),
       msgs_(scene.elements + 1, params.fixed_frame, params.tf_prefix, params.wrench_frame == "body",
             params.vessel_frame, bottom && params.wrench_frame == "body", params.bottom_frame),
       markers_(scene.length, scene.elements + 1, scene.end_mass > 0.0, params.fixed_frame, params.markers,
@@ -64,12 +66,12 @@ bool NodeRun::addBottomSample(double t_sample, const VesselSample& s) {
 std::string NodeRun::startMessage() {
   const riser_sim::RunOutputs& o = run_->outputs();
   const riser_sim::Scene& scene = run_->heldScene();
-  const std::string bottom = drivenBottom() ? ", bottom driven from (" + num(o.bottom_point.x(), "%.3f") + ", " +
-                                                  num(o.bottom_point.y(), "%.3f") + ", " +
-                                                  num(o.bottom_point.z(), "%.3f") + ") m"
-                                            : std::string();
-  const Eigen::Vector3d top = spatial() ? scene.top.position3
-                                        : Eigen::Vector3d(scene.top.position.x(), 0.0, scene.top.position.y());
+  const std::string bottom = drivenBottom()
+                                 ? ", bottom driven from (" + num(o.bottom_point.x(), "%.3f") + ", " +
+                                       num(o.bottom_point.y(), "%.3f") + ", " + num(o.bottom_point.z(), "%.3f") + ") m"
+                                 : std::string();
+  const Eigen::Vector3d top =
+      spatial() ? scene.top.position3 : Eigen::Vector3d(scene.top.position.x(), 0.0, scene.top.position.y());
   return (run_->start().equilibrium ? "static equilibrium" : run_->start().about) + " at hang-off " +
          point(scene, top, "%.3f") + " m" + bottom + (spatial() ? " (3D)" : "") + ": top tension " +
          num(o.top_tension, "%.1f") + " N; running";

@@ -9,15 +9,20 @@
 namespace riser_sim_ros {
 
 RiserSimNode::RiserSimNode(ros::NodeHandle nh, ros::NodeHandle pnh)
-    : nh_(nh), pnh_(pnh), params_(loadNodeParams(pnh, pnh.getNamespace())), scene_(loadScene(pnh)),
-      name_(pnh.getNamespace()), clock_(params_.clock_timeout, name_),
+    : nh_(nh),
+      pnh_(pnh),
+      params_(loadNodeParams(pnh, pnh.getNamespace())),
+      scene_(loadScene(pnh)),
+      name_(pnh.getNamespace()),
+      clock_(params_.clock_timeout, name_),
       topics_(pnh_, params_, spatial() && scene_.bottom == riser_sim::BottomBoundary::kPinned) {
   if (scene_.top.type != riser_sim::MotionKind::kExternal && scene_.top.type != riser_sim::MotionKind::kFixed)
     ROS_WARN("%s: ~scene/top/motion/type '%s' ignored: the node drives the top from the vessel", name_.c_str(),
              riser_sim::name(scene_.top.type));
   // The loader checked the scene; once more with the core's one check (solver values, then what the scene's
   // engine supports), as a parameter error before any pose arrives.
-  if (const auto error = riser_sim::checkScene(scene_)) throw ParamError(paramPath("scene", error->key), error->message);
+  if (const auto error = riser_sim::checkScene(scene_))
+    throw ParamError(paramPath("scene", error->key), error->message);
   if (!spatial() && params_.wrench_frame == "body") {
     throw ParamError("wrench_frame", "body needs a 3D scene (space: spatial); the planar wrench is in fixed_frame");
   }
@@ -29,8 +34,10 @@ RiserSimNode::RiserSimNode(ros::NodeHandle nh, ros::NodeHandle pnh)
     bottom_input_ = std::make_unique<VesselInput>(pnh_, params_, tf_buffer_, bottom_samples_, name_, false,
                                                   VesselInput::Feed::kBottom);
   else if (pnh_.hasParam("bottom_offset"))
-    ROS_WARN("%s: ~bottom_offset ignored: only a 3D scene with a pinned bottom and bottom.motion.type external "
-             "has a driven bottom", name_.c_str());
+    ROS_WARN(
+        "%s: ~bottom_offset ignored: only a 3D scene with a pinned bottom and bottom.motion.type external "
+        "has a driven bottom",
+        name_.c_str());
   if (params_.vessel_input == "tf" || params_.expected_frame != params_.fixed_frame)
     tf_listener_ = std::make_unique<CheckedTfListener>(
         nh_, tf_buffer_, params_.vessel_input == "tf" ? params_.vessel_frame : "",
@@ -42,11 +49,12 @@ RiserSimNode::RiserSimNode(ros::NodeHandle nh, ros::NodeHandle pnh)
   reset_srv_ = pnh_.advertiseService("reset", &RiserSimNode::onReset, this);
   modes_ = std::make_unique<ModesServer>(pnh_, name_, params_.fixed_frame, input_->source());
 
-  ROS_INFO("%s: scene '%s' (%s, L = %.1f m, n = %d, dt = %g s); vessel input %s, hang-off offset [%g, %g, %g] m; "
-           "frames %s/rfe_<i> in %s",
-           name_.c_str(), scene_.name.c_str(), spatial() ? "3D" : "planar", scene_.length, scene_.elements, scene_.solver.dt, input_->source().c_str(),
-           params_.hangoff_offset.x(), params_.hangoff_offset.y(), params_.hangoff_offset.z(),
-           params_.tf_prefix.c_str(), params_.fixed_frame.c_str());
+  ROS_INFO(
+      "%s: scene '%s' (%s, L = %.1f m, n = %d, dt = %g s); vessel input %s, hang-off offset [%g, %g, %g] m; "
+      "frames %s/rfe_<i> in %s",
+      name_.c_str(), scene_.name.c_str(), spatial() ? "3D" : "planar", scene_.length, scene_.elements, scene_.solver.dt,
+      input_->source().c_str(), params_.hangoff_offset.x(), params_.hangoff_offset.y(), params_.hangoff_offset.z(),
+      params_.tf_prefix.c_str(), params_.fixed_frame.c_str());
   if (bottom_input_)
     ROS_INFO("%s: bottom driven from %s, bottom offset [%g, %g, %g] m; the start waits for its first valid pose",
              name_.c_str(), bottom_input_->source().c_str(), params_.bottom_offset.x(), params_.bottom_offset.y(),
@@ -115,9 +123,7 @@ void RiserSimNode::cycle() {
   bool period_end = false;
   switch (run_.mode) {
     case RunMode::kWaiting:
-    case RunMode::kStartFailed:
-      tryStart(n, nb, now);
-      break;
+    case RunMode::kStartFailed: tryStart(n, nb, now); break;
     case RunMode::kRunning:
       for (int i = 0; i < n; ++i) line_->addSample(simTime(drained_[i].stamp), drained_[i]);
       for (int i = 0; i < nb; ++i) line_->addBottomSample(simTime(bottom_drained_[i].stamp), bottom_drained_[i]);
@@ -144,8 +150,7 @@ void RiserSimNode::cycle() {
         }
       }
       break;
-    case RunMode::kDiverged:
-      break;
+    case RunMode::kDiverged: break;
   }
   if (diag_->due(now)) diag_->publish(now, run_);
   diag_->addCycleWork(seconds(WallClock::now() - w0), period_end);
@@ -159,8 +164,10 @@ void RiserSimNode::tryStart(int n, int nb, const ros::Time& now) {
   if ((n > 0 || nb > 0) && vessel && bottom &&
       (run_.mode == RunMode::kWaiting || (now - last_start_attempt_).toSec() >= 1.0)) {
     std::string message;
-    if (start(s, bottom_input_ ? &b : nullptr, now, message)) ROS_INFO("%s: %s", name_.c_str(), message.c_str());
-    else startFailed(message);
+    if (start(s, bottom_input_ ? &b : nullptr, now, message))
+      ROS_INFO("%s: %s", name_.c_str(), message.c_str());
+    else
+      startFailed(message);
   } else if (run_.mode == RunMode::kWaiting) {
     // Every input that has no valid pose yet.
     run_.missing_vessel = !vessel;
@@ -177,8 +184,10 @@ void RiserSimNode::tryStart(int n, int nb, const ros::Time& now) {
 void RiserSimNode::startFailed(const std::string& message) {
   const WallClock::time_point w = WallClock::now();
   if (++run_.failed_starts == 1) {
-    ROS_ERROR("%s: %s (retrying at the next pose, at most once a second; further failures are counted on "
-              "/diagnostics and logged every %.0f s)", name_.c_str(), message.c_str(), kStartErrorPeriod);
+    ROS_ERROR(
+        "%s: %s (retrying at the next pose, at most once a second; further failures are counted on "
+        "/diagnostics and logged every %.0f s)",
+        name_.c_str(), message.c_str(), kStartErrorPeriod);
   } else if (seconds(w - start_error_logged_) >= kStartErrorPeriod) {
     ROS_ERROR("%s: still cannot start: %s (%ld failed attempts since the last message, %ld in all)", name_.c_str(),
               message.c_str(), run_.failed_starts - start_failures_logged_, run_.failed_starts);
@@ -194,8 +203,8 @@ bool RiserSimNode::start(const VesselSample& s, const VesselSample* bottom, cons
   last_start_attempt_ = now;
   std::unique_ptr<NodeRun> line;
   try {
-    line = std::make_unique<NodeRun>(scene_, s, simTime(s.stamp), params_, bottom,
-                                     bottom ? simTime(bottom->stamp) : 0.0);
+    line =
+        std::make_unique<NodeRun>(scene_, s, simTime(s.stamp), params_, bottom, bottom ? simTime(bottom->stamp) : 0.0);
     const std::string above = line->stepAboveLimit();
     if (!above.empty()) {
       line.reset();
@@ -217,7 +226,7 @@ bool RiserSimNode::start(const VesselSample& s, const VesselSample* bottom, cons
     return false;
   }
   modes_->setState(line->heldScene(), now);  // the top fixed at the hang-off, a driven bottom where it started
-  origin_ = ros::Time::now();  // after the statics: their cost is not a backlog to catch up
+  origin_ = ros::Time::now();                // after the statics: their cost is not a backlog to catch up
   if (origin_ < now) origin_ = now;
   dropped_ = 0.0;
   // The first sample's time on the new origin (the motion was made before the origin was known: with
@@ -268,8 +277,10 @@ void RiserSimNode::integrate(const ros::Time& now) {
 void RiserSimNode::fail(const std::string& why) {
   run_.mode = RunMode::kDiverged;
   run_.reason = why;
-  ROS_ERROR("%s: integration diverged: %s. Publishing stopped; call %s/reset to restart from the current "
-            "vessel pose", name_.c_str(), why.c_str(), name_.c_str());
+  ROS_ERROR(
+      "%s: integration diverged: %s. Publishing stopped; call %s/reset to restart from the current "
+      "vessel pose",
+      name_.c_str(), why.c_str(), name_.c_str());
 }
 
 bool RiserSimNode::onReset(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& res) {

@@ -11,9 +11,10 @@ namespace riser_sim_ros {
 riser_sim::Scene loadScene(const ros::NodeHandle& pnh) {
   XmlRpc::XmlRpcValue tree;
   if (!pnh.getParam("scene", tree))
-    throw ParamError("scene", "missing: load a scene file into the node's private namespace, e.g. <rosparam "
-                              "command=\"load\" file=\"$(find riser_sim)/config/scenes/demo_riser.yaml\" ns=\"scene\"/> "
-                              "inside the <node> tag");
+    throw ParamError("scene",
+                     "missing: load a scene file into the node's private namespace, e.g. <rosparam "
+                     "command=\"load\" file=\"$(find riser_sim)/config/scenes/demo_riser.yaml\" ns=\"scene\"/> "
+                     "inside the <node> tag");
   YAML::Node yaml;
   try {
     yaml = toYaml(tree);

@@ -21,8 +21,8 @@ geometry_msgs::Point point(const Vec3& v) {
   return p;
 }
 
-visualization_msgs::Marker make(const std::string& frame, const std::string& ns, int id, int type, double r,
-                                double g, double b, double a) {
+visualization_msgs::Marker make(const std::string& frame, const std::string& ns, int id, int type, double r, double g,
+                                double b, double a) {
   visualization_msgs::Marker m;
   m.header.frame_id = frame;
   m.ns = ns;
@@ -118,7 +118,7 @@ void SeaMarkers::fill(const riser_sim::RunOutputs& out, visualization_msgs::Mark
     const double step = span / (rows - 1), along0 = heading_.dot(centre) - 0.5 * span;
     const Vec3 across = Vec3::UnitZ().cross(heading_) * (0.5 * span);
     const Vec3 c0 = centre - heading_ * heading_.dot(centre);  // the centre's part across the heading
-    m.points.resize(6 * (rows - 1));  // within the reserved kMaxRows: no allocation
+    m.points.resize(6 * (rows - 1));                           // within the reserved kMaxRows: no allocation
     Vec3 prev_l, prev_r;
     for (int r = 0; r < rows; ++r) {
       const double s = along0 + r * step;

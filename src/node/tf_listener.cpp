@@ -73,8 +73,8 @@ void CheckedTfListener::onMessage(const ros::MessageEvent<const tf2_msgs::TFMess
     }
     long held = 0;
     if (other_warn_.allow(held))
-      ROS_WARN("%s: %s; ignored (%ld more such transforms ignored since the last warning)", name_.c_str(),
-               what.c_str(), held);
+      ROS_WARN("%s: %s; ignored (%ld more such transforms ignored since the last warning)", name_.c_str(), what.c_str(),
+               held);
   }
 }
 

@@ -52,11 +52,10 @@ std::string fmt(double v) {
 }
 }  // namespace
 
-std::string checkPose(const std_msgs::Header& header, const geometry_msgs::Pose& msg,
-                      const std::string& expected_frame, Eigen::Isometry3d& pose, double max_position) {
+std::string checkPose(const std_msgs::Header& header, const geometry_msgs::Pose& msg, const std::string& expected_frame,
+                      Eigen::Isometry3d& pose, double max_position) {
   const std::string frame = stripSlash(header.frame_id);
-  if (frame != expected_frame)
-    return "header.frame_id is '" + header.frame_id + "', expected '" + expected_frame + "'";
+  if (frame != expected_frame) return "header.frame_id is '" + header.frame_id + "', expected '" + expected_frame + "'";
   if (header.stamp.isZero()) return "header.stamp is zero";
   const Eigen::Vector3d p(msg.position.x, msg.position.y, msg.position.z);
   if (!p.allFinite()) return "position is not finite (NaN/Inf)";
@@ -103,9 +102,13 @@ bool WarnThrottle::allow(std::chrono::steady_clock::time_point now, long& suppre
 
 VesselInput::VesselInput(ros::NodeHandle& nh, const NodeParams& params, tf2_ros::Buffer& tf, SampleBuffer& out,
                          const std::string& name, bool planar, Feed feed)
-    : params_(params), name_(name), kind_(feed == Feed::kBottom ? "pose" : params.vessel_input),
+    : params_(params),
+      name_(name),
+      kind_(feed == Feed::kBottom ? "pose" : params.vessel_input),
       what_(feed == Feed::kBottom ? "bottom" : "vessel"),
-      offset_(feed == Feed::kBottom ? params.bottom_offset : params.hangoff_offset), tf_(tf), out_(out),
+      offset_(feed == Feed::kBottom ? params.bottom_offset : params.hangoff_offset),
+      tf_(tf),
+      out_(out),
       planar_(planar && feed == Feed::kVessel) {
   if (feed == Feed::kBottom) {
     sub_ = nh.subscribe("bottom_pose", 20, &VesselInput::onPose, this, ros::TransportHints().tcpNoDelay());
@@ -158,9 +161,10 @@ void VesselInput::reject(const std::string& why) {
   long suppressed = 0;
   if (reject_warn_.allow(suppressed)) {
     if (suppressed > 0)
-      ROS_WARN("%s: %s pose from %s ignored: %s (and %ld more ignored since the last warning; count "
-               "and last reason on /diagnostics)", name_.c_str(), what_.c_str(), source_.c_str(), why.c_str(),
-               suppressed);
+      ROS_WARN(
+          "%s: %s pose from %s ignored: %s (and %ld more ignored since the last warning; count "
+          "and last reason on /diagnostics)",
+          name_.c_str(), what_.c_str(), source_.c_str(), why.c_str(), suppressed);
     else
       ROS_WARN("%s: %s pose from %s ignored: %s", name_.c_str(), what_.c_str(), source_.c_str(), why.c_str());
   }
@@ -168,8 +172,8 @@ void VesselInput::reject(const std::string& why) {
 
 void VesselInput::handle(const std_msgs::Header& header, const geometry_msgs::Pose& msg) {
   Eigen::Isometry3d pose;
-  std::string why = checkPose(header, msg, kind_ == "tf" ? params_.fixed_frame : params_.expected_frame, pose,
-                              params_.max_position);
+  std::string why =
+      checkPose(header, msg, kind_ == "tf" ? params_.fixed_frame : params_.expected_frame, pose, params_.max_position);
   if (!why.empty()) return reject(why);
   if (kind_ != "tf" && params_.expected_frame != params_.fixed_frame) {
     // Poses given in another frame: bring them into fixed_frame with the latest transform.
@@ -197,16 +201,18 @@ void VesselInput::handle(const std_msgs::Header& header, const geometry_msgs::Po
     std::lock_guard<std::mutex> lock(mutex_);
     // ROS time went back before the last accepted stamp (a bag loop): that stamp belongs to the old
     // timeline. The integration loop resets the simulation when it sees the jump.
-    if (!last_stamp_.isZero() && s.received + ros::Duration(params_.max_pose_lead) < last_stamp_) last_stamp_ = ros::Time();
+    if (!last_stamp_.isZero() && s.received + ros::Duration(params_.max_pose_lead) < last_stamp_)
+      last_stamp_ = ros::Time();
     why = checkStamp(header.stamp, s.received, last_stamp_, params_.max_pose_age, params_.max_pose_lead);
     if (why.empty()) last_stamp_ = header.stamp;
   }
   if (!why.empty()) return reject(why);
   long held = 0;
   if (planar_ && std::abs(s.hangoff.y()) > params_.max_out_of_plane && plane_warn_.allow(held))
-    ROS_WARN("%s: hang-off point is %.2f m out of the riser's x-z plane (world y; ~max_out_of_plane %.2f m); it is "
-             "projected onto the plane (y dropped)",
-             name_.c_str(), s.hangoff.y(), params_.max_out_of_plane);
+    ROS_WARN(
+        "%s: hang-off point is %.2f m out of the riser's x-z plane (world y; ~max_out_of_plane %.2f m); it is "
+        "projected onto the plane (y dropped)",
+        name_.c_str(), s.hangoff.y(), params_.max_out_of_plane);
   ++accepted_;
   out_.push(s);
 }

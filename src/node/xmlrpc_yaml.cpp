@@ -19,17 +19,14 @@ YAML::Node toYaml(XmlRpc::XmlRpcValue& value, const std::string& path) {
   using XmlRpc::XmlRpcValue;
   const std::string where = path.empty() ? "(root)" : path;
   switch (value.getType()) {
-    case XmlRpcValue::TypeBoolean:
-      return YAML::Node(static_cast<bool>(value));
-    case XmlRpcValue::TypeInt:
-      return YAML::Node(static_cast<int>(value));
+    case XmlRpcValue::TypeBoolean: return YAML::Node(static_cast<bool>(value));
+    case XmlRpcValue::TypeInt: return YAML::Node(static_cast<int>(value));
     case XmlRpcValue::TypeDouble: {
       const double d = static_cast<double>(value);
       if (!std::isfinite(d)) return YAML::Node(d > 0 ? ".inf" : (d < 0 ? "-.inf" : ".nan"));
       return YAML::Node(formatDouble(d));
     }
-    case XmlRpcValue::TypeString:
-      return YAML::Node(static_cast<std::string>(value));
+    case XmlRpcValue::TypeString: return YAML::Node(static_cast<std::string>(value));
     case XmlRpcValue::TypeArray: {
       YAML::Node seq(YAML::NodeType::Sequence);
       for (int i = 0; i < value.size(); ++i) seq.push_back(toYaml(value[i], path + "[" + std::to_string(i) + "]"));
@@ -41,8 +38,7 @@ YAML::Node toYaml(XmlRpc::XmlRpcValue& value, const std::string& path) {
         map[it->first] = toYaml(it->second, path.empty() ? it->first : path + "." + it->first);
       return map;
     }
-    default:
-      throw std::invalid_argument(where + ": unsupported parameter type (base64, date or invalid)");
+    default: throw std::invalid_argument(where + ": unsupported parameter type (base64, date or invalid)");
   }
 }
 

@@ -17,13 +17,13 @@ namespace riser_sim {
 namespace spatial_test {
 
 using spatial::BodyKinematics3;
+using spatial::kDofPerBody3;
+using spatial::kE;
 using spatial::Kinematics3;
 using spatial::NaturalFormulation;
 using spatial::SpatialForceTerm;
 using spatial::SpatialModel;
 using spatial::Vec3;
-using spatial::kDofPerBody3;
-using spatial::kE;
 
 // Central differences with step ε: truncation ε² V''' / 6 ~ 1e-10 of the force scale, round-off
 // 1e-16 |V| / ε ~ 1e-11 of it; bound 1e-6 relative to the largest |Q| entry (measured 1.4e-10 gravity,

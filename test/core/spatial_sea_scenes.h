@@ -65,10 +65,13 @@ environment:
   const spatial::Vec3 rt = R * spatial::Vec3(0.0, 0.0, 5.0), ra = R * spatial::Vec3(0.8, 0.0, 0.4);
   y.spatial = "space: spatial\ntop:\n  position: [" + num17(rt.x()) + ", " + num17(rt.y()) + ", " + num17(rt.z()) +
               "]\n  motion: {type: sinusoid, amplitude: [" + num17(ra.x()) + ", " + num17(ra.y()) + ", " +
-              num17(ra.z()) + "], period: 6.0}\nenvironment:\n  water: {density: 1025.0, surface: 0.0}\n"
-              "  current:\n    profile: [[0.0, " + num17(0.9 * c) + ", " + num17(0.9 * s) + "], [40.0, " +
-              num17(0.3 * c) + ", " + num17(0.3 * s) + "]]\n  waves: {height: 3.0, period: 7.0, depth: 200.0, "
-              "ramp: 2.0, heading: " + num17(psi) + "}\n";
+              num17(ra.z()) +
+              "], period: 6.0}\nenvironment:\n  water: {density: 1025.0, surface: 0.0}\n"
+              "  current:\n    profile: [[0.0, " +
+              num17(0.9 * c) + ", " + num17(0.9 * s) + "], [40.0, " + num17(0.3 * c) + ", " + num17(0.3 * s) +
+              "]]\n  waves: {height: 3.0, period: 7.0, depth: 200.0, "
+              "ramp: 2.0, heading: " +
+              num17(psi) + "}\n";
   return y;
 }
 

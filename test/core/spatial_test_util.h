@@ -212,7 +212,8 @@ inline TurningHolder::Angle wobble(double a0, double rate, double amp, double fr
 inline TurningHolder::Angle ramp(double to, double t0, double t1) {
   return [=](double t) {
     const double s = std::clamp((t - t0) / (t1 - t0), 0.0, 1.0), ds = (t > t0 && t < t1) ? 1.0 / (t1 - t0) : 0.0;
-    return Eigen::Vector2d(to * s * s * s * (10.0 - 15.0 * s + 6.0 * s * s), to * 30.0 * s * s * (1.0 - s) * (1.0 - s) * ds);
+    return Eigen::Vector2d(to * s * s * s * (10.0 - 15.0 * s + 6.0 * s * s),
+                           to * 30.0 * s * s * (1.0 - s) * (1.0 - s) * ds);
   };
 }
 

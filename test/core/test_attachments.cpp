@@ -80,13 +80,15 @@ std::string num(double v) {
 
 std::string pinnedScene(int n, const std::string& attachments, const std::string& space = "planar") {
   return "space: " + space + R"(
-line: {length: 100.0, elements: )" + std::to_string(n) + R"(, mass_per_length: 50.0, outer_diameter: 0.2,
+line: {length: 100.0, elements: )" +
+         std::to_string(n) + R"(, mass_per_length: 50.0, outer_diameter: 0.2,
        EA: 1.0e7, EI: 0.0, bending: false}
 top: {position: [0.0, 0.0]}
 bottom: {type: pinned, position: [60.0, -60.0]}
 environment: {water: {density: 1025.0, surface: 10.0}}
 initial: {type: between_points, tolerance: 1.0e-12}
-attachments: )" + attachments + "\n";
+attachments: )" +
+         attachments + "\n";
 }
 
 constexpr double kG = 9.81, kRho = 1025.0;
@@ -141,8 +143,8 @@ TEST(Attachments, PinnedClumpAndBuoyMatchTheCatenaryShooting) {
       // relative to |F_top|), a ninth of that at n = 90.
       EXPECT_LT(force, n == 30 ? 3e-3 : 3e-4);
       std::printf("%s n=%d: attachment (%.6f, %.6f) ref (%.6f, %.6f); top force (%.3f, %.3f) ref (%.3f, %.3f)\n",
-                  c.name, n, r.attachment.x(), r.attachment.y(), p_ref.x(), p_ref.y(), r.top_force.x(),
-                  r.top_force.y(), F_ref.x(), F_ref.y());
+                  c.name, n, r.attachment.x(), r.attachment.y(), p_ref.x(), p_ref.y(), r.top_force.x(), r.top_force.y(),
+                  F_ref.x(), F_ref.y());
     }
     // The n = 30 discretisation error is millimetres to centimetres on a 100 m line (measured 4.7 mm clump,
     // 24 mm buoy); n = 90 a ninth of it (O(d²); measured ratios 8.9 and 9.3).
@@ -158,7 +160,8 @@ namespace {
 std::shared_ptr<Model> lawModel(bool current) {
   const std::string yaml = std::string(R"(
 line: {length: 60.0, elements: 6, mass_per_length: 40.0, outer_diameter: 0.2, EA: 1.0e7, EI: 1.0e4}
-environment: {water: {density: 1025.0, surface: 0.0})") + (current ? ", current: {velocity: [0.7, 0.1]}" : "") + R"(}
+environment: {water: {density: 1025.0, surface: 0.0})") +
+                           (current ? ", current: {velocity: [0.7, 0.1]}" : "") + R"(}
 seabed: {level: -50.0, stiffness_normal: 2.0e5, damping_normal: 3.0e3, damping_tangential: 1.0e3}
 attachments:
   - {name: buoy, arc_length: 4.0, mass: 100.0, volume: 0.5, drag_area: 0.8, cd: 1.1, ca: 0.5}
@@ -213,7 +216,8 @@ TEST(Attachments, PlanarTermPowerBalance) {
       setCoords(kp[i], coords(kin[i]) + h * rates(kin[i]), model->rfe(i).length);
       setCoords(km[i], coords(kin[i]) - h * rates(kin[i]), model->rfe(i).length);
     }
-    const double dV = (term->potentialEnergy(*model, nullptr, kp) - term->potentialEnergy(*model, nullptr, km)) / (2 * h);
+    const double dV =
+        (term->potentialEnergy(*model, nullptr, kp) - term->potentialEnergy(*model, nullptr, km)) / (2 * h);
     EXPECT_NEAR(qv, -dV + P, 1e-6 * std::max({std::abs(qv), std::abs(P), 1.0})) << "trial " << trial;
     EXPECT_GT(std::abs(P), 1.0);  // the drag and the dampers are on
   }
@@ -317,7 +321,9 @@ Vec7 rates3(const spatial::BodyKinematics3& b) {
 void setCoords3(spatial::BodyKinematics3& b, const Vec7& q, double len0) {
   b.A = q.head<3>(), b.delta = q[3], b.e = q.tail<3>(), b.len = len0 + q[3];
 }
-void setRates3(spatial::BodyKinematics3& b, const Vec7& v) { b.A_dot = v.head<3>(), b.delta_dot = v[3], b.e_dot = v.tail<3>(); }
+void setRates3(spatial::BodyKinematics3& b, const Vec7& v) {
+  b.A_dot = v.head<3>(), b.delta_dot = v[3], b.e_dot = v.tail<3>();
+}
 
 const spatial::SpatialForceTerm* attachmentsTerm3(const spatial::SpatialModel& m) {
   for (const auto& t : m.terms())
@@ -383,7 +389,8 @@ TEST(Attachments, SpatialStiffnessAgainstFiniteDifferences) {
       }
       const auto& A = moving ? S.C_diag[i] : S.K_diag[i];
       EXPECT_LT((A - D).norm(), 1e-5 * std::max(1.0, D.norm())) << (moving ? "C" : "K") << " of rfe " << i << "\n"
-                                                                  << A << "\nFD\n" << D;
+                                                                << A << "\nFD\n"
+                                                                << D;
     }
   }
 }
@@ -391,8 +398,9 @@ TEST(Attachments, SpatialStiffnessAgainstFiniteDifferences) {
 // The pinned clump-and-buoy line in both engines: the 3D start (the planar statics turned into 3D, then checked
 // at rest by the 3D engine's own forces) puts the attachments where the planar one does, under the same forces.
 TEST(Attachments, PlanarAndSpatialAgree) {
-  const std::string att = "[{name: clump, arc_length: 30.0, mass: 800.0, drag_area: 0.5, cd: 1.0, added_mass: 100.0},"
-                          " {name: buoy, arc_length: 60.0, mass: 200.0, volume: 1.0, drag_area: 1.0, cd: 1.0, ca: 0.5}]";
+  const std::string att =
+      "[{name: clump, arc_length: 30.0, mass: 800.0, drag_area: 0.5, cd: 1.0, added_mass: 100.0},"
+      " {name: buoy, arc_length: 60.0, mass: 200.0, volume: 1.0, drag_area: 1.0, cd: 1.0, ca: 0.5}]";
   riser_sim::Run planar = buildRun(loadSceneText(pinnedScene(20, att), "test"));
   spatial::SpatialRun space(loadSceneText(pinnedScene(20, att, "spatial"), "test"));
   const auto* a2 = dynamic_cast<const Attachments*>(planar.model->findTerm("attachments"));
@@ -428,7 +436,8 @@ TEST(Attachments, BadInputNamesTheKey) {
   EXPECT_EQ(key("[{arc_length: 10.0, mass: 1.0, ca: 1.0}]"), "attachments[0].ca");
   EXPECT_EQ(key("[{arc_length: 10.0, mass: 1.0, seabed_contact: true}]"), "attachments[0].seabed_contact");
   EXPECT_EQ(key("[{arc_length: 10.0, mass: 1.0, colour: red}]"), "attachments[0].colour");
-  EXPECT_EQ(key("[{name: a, arc_length: 10.0, mass: 1.0}, {name: a, arc_length: 20.0, mass: 1.0}]"), "attachments[1].name");
+  EXPECT_EQ(key("[{name: a, arc_length: 10.0, mass: 1.0}, {name: a, arc_length: 20.0, mass: 1.0}]"),
+            "attachments[1].name");
   EXPECT_EQ(key("{arc_length: 10.0, mass: 1.0}"), "attachments");
   EXPECT_EQ(key("[{arc_length: 10.0, mass: 1.0}]"), "(accepted)");
   // A free end held up by a buoy stronger than the whole line's weight in water (1.75e4 N): refused, naming it.

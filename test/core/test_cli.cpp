@@ -5,7 +5,6 @@
 
 using namespace cli_test;
 
-
 TEST(Cli, HelpExitsZero) {
   const CliRun r = runCli("--help");
   EXPECT_EQ(r.code, 0);
@@ -82,9 +81,9 @@ TEST(Cli, ShortRunWritesSummaryAndCsv) {
 
   std::map<std::string, std::string> j;
   ASSERT_TRUE(parseFlatJson(r.out, j)) << r.out;
-  for (const char* key : {"wall_s", "cpu_s", "sim_s", "steps", "rtf", "x_end", "y_end", "z_end", "tension_top", "max_constraint_error",
-                          "energy_drift", "scene", "n", "dt", "integrator", "formulation", "statics_iterations",
-                          "end_force_x", "end_force_z"})
+  for (const char* key : {"wall_s", "cpu_s", "sim_s", "steps", "rtf", "x_end", "y_end", "z_end", "tension_top",
+                          "max_constraint_error", "energy_drift", "scene", "n", "dt", "integrator", "formulation",
+                          "statics_iterations", "end_force_x", "end_force_z"})
     EXPECT_EQ(j.count(key), 1u) << "summary lacks " << key << ": " << r.out;
   EXPECT_EQ(j["status"], "ok");
   EXPECT_EQ(j["scene"], "hanging_chain");
@@ -126,13 +125,16 @@ TEST(Cli, ProbeRfeColumns) {
   const std::vector<int> probes = {0, 4, 8};
   const auto sK = [&](int k) { return k == 0 ? 0.25 * d : (k - 0.5) * d + (k == 8 ? 0.25 * d : 0.5 * d); };
   {
-    const CliRun r = runCli("--scene " + kChain + " --duration 0.01 --quiet --probe-rfe 0 --probe-rfe=4 --probe-rfe 8 "
-                            "--csv " + csv);
+    const CliRun r = runCli("--scene " + kChain +
+                            " --duration 0.01 --quiet --probe-rfe 0 --probe-rfe=4 --probe-rfe 8 "
+                            "--csv " +
+                            csv);
     ASSERT_EQ(r.code, 0) << r.err;
     std::string header;
     const auto rows = csvRows(readFile(csv), header);
-    EXPECT_EQ(header, std::string(kHeader) + ",x_rfe0,y_rfe0,z_rfe0,tension_rfe0,x_rfe4,y_rfe4,z_rfe4,"
-                                             "tension_rfe4,x_rfe8,y_rfe8,z_rfe8,tension_rfe8");
+    EXPECT_EQ(header, std::string(kHeader) +
+                          ",x_rfe0,y_rfe0,z_rfe0,tension_rfe0,x_rfe4,y_rfe4,z_rfe4,"
+                          "tension_rfe4,x_rfe8,y_rfe8,z_rfe8,tension_rfe8");
     ASSERT_GE(rows.size(), 1u);
     ASSERT_EQ(rows[0].size(), kColumns + 12);
     for (size_t p = 0; p < probes.size(); ++p) {  // straight at -45 deg, unstretched, at rest
@@ -143,8 +145,10 @@ TEST(Cli, ProbeRfeColumns) {
     }
   }
   {
-    const CliRun r = runCli("--scene " + kChain + " --set initial.type=hanging --duration 0.01 --quiet "
-                            "--probe-rfe 0 --probe-rfe 4 --probe-rfe 8 --csv " + csv);
+    const CliRun r = runCli("--scene " + kChain +
+                            " --set initial.type=hanging --duration 0.01 --quiet "
+                            "--probe-rfe 0 --probe-rfe 4 --probe-rfe 8 --csv " +
+                            csv);
     ASSERT_EQ(r.code, 0) << r.err;
     std::string header;
     const auto rows = csvRows(readFile(csv), header);
@@ -154,7 +158,8 @@ TEST(Cli, ProbeRfeColumns) {
     for (size_t p = 0; p < probes.size(); ++p) {
       const double s = sK(probes[p]);
       EXPECT_NEAR(rows[0][kColumns + 4 * p], 0.0, 1e-9) << "rfe " << probes[p];
-      EXPECT_LE(rows[0][kColumns + 2 + 4 * p], -s) << "rfe " << probes[p];  // stretched, but by less than the top strain
+      EXPECT_LE(rows[0][kColumns + 2 + 4 * p], -s)
+          << "rfe " << probes[p];  // stretched, but by less than the top strain
       EXPECT_GE(rows[0][kColumns + 2 + 4 * p], -s * (1.0 + strain_max)) << "rfe " << probes[p];
       EXPECT_NEAR(rows[0][kColumns + 3 + 4 * p], g * (mu * (L - s) + m_end), 1e-8 * weight) << "rfe " << probes[p];
     }
@@ -246,4 +251,3 @@ int main(int argc, char** argv) {
   testing::InitGoogleTest(&argc, argv);
   return RUN_ALL_TESTS();
 }
-

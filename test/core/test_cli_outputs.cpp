@@ -63,8 +63,7 @@ TEST(Cli, EndlessSceneFailsAtTheSizeLimit) {
     const CliRun r = runCli(args, prefix);
     EXPECT_EQ(r.code, 2) << r.err;
     const std::string path = args.substr(8, args.find(' ', 8) - 8);
-    EXPECT_NE(r.err.find("scene file '" + path + "' is larger than 1 MiB (1048576 bytes)"), std::string::npos)
-        << r.err;
+    EXPECT_NE(r.err.find("scene file '" + path + "' is larger than 1 MiB (1048576 bytes)"), std::string::npos) << r.err;
   }
 }
 
@@ -90,7 +89,8 @@ TEST(Cli, HugeOutputDtWritesFirstAndLastRows) {
 // dopri5 at a tolerance far below round-off: the step size underflows; the message gives the step as a
 // number and the tolerance to loosen (it said "h = -nan s": the starting step's norms overflowed).
 TEST(Cli, Dopri5UnderflowMessageIsFinite) {
-  const CliRun r = runCli("--scene " + kChain + " --set solver.integrator=dopri5 --set solver.tolerance=1e-300 "
+  const CliRun r = runCli("--scene " + kChain +
+                          " --set solver.integrator=dopri5 --set solver.tolerance=1e-300 "
                           "--duration 0.01 --quiet");
   EXPECT_EQ(r.code, 3) << r.err;
   const size_t at = r.err.find("dopri5: step size underflow (h = ");
@@ -108,7 +108,8 @@ TEST(Cli, Dopri5UnderflowMessageIsFinite) {
 // resolved run has no warning. rosenbrock2 at h = 0.02 s on the J-lay damps its unresolved axial modes
 // and loses 12 % of m g L (its top tension is 74 % off); midpoint at the same h closes to 2e-7.
 TEST(Cli, UnresolvedRunWarnsOnEnergyBalance) {
-  const std::string jlay = kScenes + "paper_jlay_170m.yaml --set solver.formulation=recursive --set solver.dt=0.02 "
+  const std::string jlay = kScenes +
+                           "paper_jlay_170m.yaml --set solver.formulation=recursive --set solver.dt=0.02 "
                            "--duration 10 --summary --quiet";
   const CliRun bad = runCli("--scene " + jlay + " --set solver.integrator=rosenbrock2");
   EXPECT_EQ(bad.code, 0) << bad.err;
@@ -126,7 +127,8 @@ TEST(Cli, UnresolvedRunWarnsOnEnergyBalance) {
 // (76 % RMS off rk4 at 2.5e-4 s; estimate 0.69); the advised generalized_alpha at rho_inf 0 damps them
 // (2.7 % RMS; estimate 0.014). Both close their energy balance, so only the force estimate can tell.
 TEST(Cli, UnresolvedForcesWarnAndTheAdviceResolvesThem) {
-  const std::string jlay = kScenes + "paper_jlay_170m.yaml --set solver.formulation=recursive --set line.elements=100 "
+  const std::string jlay = kScenes +
+                           "paper_jlay_170m.yaml --set solver.formulation=recursive --set line.elements=100 "
                            "--set solver.dt=0.1 --duration 27 --summary --quiet";
   const CliRun bad = runCli("--scene " + jlay + " --set solver.integrator=midpoint");
   EXPECT_EQ(bad.code, 0) << bad.err;
@@ -152,4 +154,3 @@ int main(int argc, char** argv) {
   testing::InitGoogleTest(&argc, argv);
   return RUN_ALL_TESTS();
 }
-

@@ -108,7 +108,10 @@ TEST(CliSpatial, YawedSceneGivesTheRotatedResult) {
   };
   const std::vector<Case> cases = {
       {"hanging_chain.yaml", {"run.duration=0.5"}, Vec3(2.0, 0.0, 1.0), Vec3(0.5, 0.0, 0.2), Eigen::Vector2d::Zero()},
-      {"paper_table1.yaml", {"run.duration=0.5"}, Vec3(1.0, 0.0, -2.0), Vec3(0.3, 0.0, 0.1),
+      {"paper_table1.yaml",
+       {"run.duration=0.5"},
+       Vec3(1.0, 0.0, -2.0),
+       Vec3(0.3, 0.0, 0.1),
        Eigen::Vector2d(-50.0, 0.0)},
   };
   for (const auto& c : cases) {
@@ -184,18 +187,18 @@ TEST(CliSpatial, DisplacedStaticsAlongTheDiagonal) {
   const auto later = runFor(run, 0.1);
   const double moved = (later.points.back() - start).norm();
   EXPECT_LE(moved, 1e-6);
-  std::printf("[ measured ] diagonal displaced: acceleration at rest %.3g m/s^2 (bound %.3g; %.3g without the end "
-              "force), end force |F3 - R F2| %.3g N of %.6g N, end moved %.3g m in 0.1 s held\n",
-              init.max_acceleration, init.acceleration_bound, released, (init.end_force - expected).norm(), f2.norm(), moved);
+  std::printf(
+      "[ measured ] diagonal displaced: acceleration at rest %.3g m/s^2 (bound %.3g; %.3g without the end "
+      "force), end force |F3 - R F2| %.3g N of %.6g N, end moved %.3g m in 0.1 s held\n",
+      init.max_acceleration, init.acceleration_bound, released, (init.end_force - expected).norm(), f2.norm(), moved);
 }
 
 // between_points anywhere: the anchor off both axes, pinned; the run stays at rest and the anchor force
 // balances the weight with the top force.
 TEST(CliSpatial, BetweenPointsAnywhere) {
   const Scene s = riser_sim::loadSceneFile(
-      kScenes + "paper_table1.yaml",
-      {"space=spatial", "top.position=[3,-4,2]", "bottom.type=pinned", "bottom.position=[40,35,-70]",
-       "initial.type=between_points", "line.end_mass=0"});
+      kScenes + "paper_table1.yaml", {"space=spatial", "top.position=[3,-4,2]", "bottom.type=pinned",
+                                      "bottom.position=[40,35,-70]", "initial.type=between_points", "line.end_mass=0"});
   SpatialRun run(s);
   EXPECT_LE(run.initial().max_acceleration, run.initial().acceleration_bound);
   const auto o0 = run.outputs();
@@ -207,10 +210,11 @@ TEST(CliSpatial, BetweenPointsAnywhere) {
   EXPECT_LE((o0.top_force + o0.bottom_force - Vec3(0, 0, -W)).norm(), 1e-6 * W);
   const auto o1 = runFor(run, 0.1);
   EXPECT_LE((o1.points[s.elements / 2] - o0.points[s.elements / 2]).norm(), 1e-6);
-  std::printf("[ measured ] between points: end %.3g m from bottom.position, acceleration at rest %.3g m/s^2 (bound "
-              "%.3g), |F_top + F_bottom - W| %.3g of W\n",
-              gap, run.initial().max_acceleration, run.initial().acceleration_bound,
-              (o0.top_force + o0.bottom_force - Vec3(0, 0, -W)).norm() / W);
+  std::printf(
+      "[ measured ] between points: end %.3g m from bottom.position, acceleration at rest %.3g m/s^2 (bound "
+      "%.3g), |F_top + F_bottom - W| %.3g of W\n",
+      gap, run.initial().max_acceleration, run.initial().acceleration_bound,
+      (o0.top_force + o0.bottom_force - Vec3(0, 0, -W)).norm() / W);
 }
 
 TEST(CliSpatial, BadInputNamesTheKey) {
@@ -258,8 +262,9 @@ TEST(CliSpatial, TopMotionsIn3D) {
   const std::string csv = tempPath("motion3.csv");
   const std::string base = "--scene " + swingScene() + " --quiet --output-dt 0.1 --csv " + csv;
   {
-    const CliRun r = runCli(base + " --duration 1.5 --set top.motion.type=velocity_profile "
-                                   "--set 'top.motion.knots=[[0,[0,0,0]],[1,[1,0.5,-0.2]]]'");
+    const CliRun r = runCli(base +
+                            " --duration 1.5 --set top.motion.type=velocity_profile "
+                            "--set 'top.motion.knots=[[0,[0,0,0]],[1,[1,0.5,-0.2]]]'");
     ASSERT_EQ(r.code, 0) << r.err;
     std::string header;
     const auto rows = csvRows(readFile(csv), header);
@@ -269,8 +274,9 @@ TEST(CliSpatial, TopMotionsIn3D) {
     EXPECT_NEAR(rows.back()[3], 0.5 * -0.2 + 0.5 * -0.2, 1e-9);
   }
   {
-    const CliRun r = runCli(base + " --duration 2 --set 'top.motion.amplitude=[2,2,0]' "
-                                   "--set 'top.motion.phase=[0,-1.5707963267948966,0]'");
+    const CliRun r = runCli(base +
+                            " --duration 2 --set 'top.motion.amplitude=[2,2,0]' "
+                            "--set 'top.motion.phase=[0,-1.5707963267948966,0]'");
     ASSERT_EQ(r.code, 0) << r.err;
     std::string header;
     const auto rows = csvRows(readFile(csv), header);
@@ -345,8 +351,9 @@ TEST(CliSpatial, EveryIntegratorRuns) {
     for (const std::string jac : {"auto", "dense"}) {
       if (explicit_scheme && jac == "dense") continue;
       SCOPED_TRACE(integ + " " + jac);
-      const CliRun r = runCli("--scene " + swingScene() + " --duration 0.5 --summary --quiet --set solver.integrator=" +
-                              integ + " --set solver.dt=" + dt + " --set solver.jacobian=" + jac);
+      const CliRun r =
+          runCli("--scene " + swingScene() + " --duration 0.5 --summary --quiet --set solver.integrator=" + integ +
+                 " --set solver.dt=" + dt + " --set solver.jacobian=" + jac);
       ASSERT_EQ(r.code, 0) << r.err;
       auto j = summary(r);
       EXPECT_TRUE(j["status"] == "ok" || j["status"] == "warning") << r.out;
@@ -362,7 +369,8 @@ TEST(CliSpatial, EveryIntegratorRuns) {
 // A finished run whose energy balance is off says so, as the planar CLI: rosenbrock2 damps what 20 ms does
 // not resolve (measured: 1.4 % of m g L over 2 s): status warning, exit 0, a warning line on stderr.
 TEST(CliSpatial, UnresolvedStepWarns) {
-  const CliRun r = runCli("--scene " + swingScene() + " --duration 2 --summary --quiet --set solver.integrator=rosenbrock2 "
+  const CliRun r = runCli("--scene " + swingScene() +
+                          " --duration 2 --summary --quiet --set solver.integrator=rosenbrock2 "
                           "--set solver.dt=0.02");
   ASSERT_EQ(r.code, 0) << r.err;
   auto j = summary(r);
@@ -375,8 +383,10 @@ TEST(CliSpatial, UnresolvedStepWarns) {
 // A step far too large stops with exit code 3 naming solver.dt, and the CSV has no NaN.
 TEST(CliSpatial, DivergenceExits3NamingTheStep) {
   const std::string csv = tempPath("spatial_diverged.csv");
-  const CliRun r = runCli("--scene " + kChain + " --set space=spatial --set solver.dt=0.05 --duration 5 "
-                          "--output-dt 0.05 --summary --csv " + csv);
+  const CliRun r = runCli("--scene " + kChain +
+                          " --set space=spatial --set solver.dt=0.05 --duration 5 "
+                          "--output-dt 0.05 --summary --csv " +
+                          csv);
   EXPECT_EQ(r.code, 3) << r.err;
   EXPECT_NE(r.err.find("solver.dt"), std::string::npos) << r.err;
   auto j = summary(r);
@@ -428,7 +438,8 @@ TEST(CliSpatial, StabilityLimitReportedAndEnforced) {
 // under midpoint at 20 ms) warns "forces not resolved" with status "warning" and exit 0; the advised
 // generalized_alpha at rho_inf 0 is "ok" with noise below 3 %.
 TEST(CliSpatial, UnresolvedForcesWarn) {
-  const std::string scene = "--scene " + kScenes + "spatial_swing.yaml --set line.axial_flexibility=true "
+  const std::string scene = "--scene " + kScenes +
+                            "spatial_swing.yaml --set line.axial_flexibility=true "
                             "--set line.elements=20 --set initial.type=straight --set initial.angle=-80 "
                             "--set solver.dt=0.02 --duration 5 --summary --quiet";
   const CliRun bad = runCli(scene + " --set solver.integrator=midpoint");

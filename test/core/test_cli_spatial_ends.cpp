@@ -77,13 +77,16 @@ TEST(CliSpatialEnds, FlexJointTopMomentBalancesTheWeight) {
   const double a = 40.0 * M_PI / 180.0;
   const Vec3 axis(std::sin(a) / std::sqrt(2.0), std::sin(a) / std::sqrt(2.0), -std::cos(a));
   char top[256];
-  std::snprintf(top, sizeof(top), "top: {position: [1, 2, 3], flex_joint: {stiffness: %.17g, damping: 2.0e4, "
-                "axis: [%.17g, %.17g, %.17g]}}\n", k, axis.x(), axis.y(), axis.z());
+  std::snprintf(top, sizeof(top),
+                "top: {position: [1, 2, 3], flex_joint: {stiffness: %.17g, damping: 2.0e4, "
+                "axis: [%.17g, %.17g, %.17g]}}\n",
+                k, axis.x(), axis.y(), axis.z());
   const std::string scene = writeScene(
       "flex_top", std::string("name: flex_top\nspace: spatial\n") + kLine + ", end_mass: 50}\n" + top +
                       "initial: {type: straight, angle: -50, heading: 45}\nsolver: {integrator: rk4, dt: 5.0e-4}\n");
   const std::string csv = tempPath("flex_top.csv");
-  const CliRun r = runCli("--scene " + scene + " --duration 40 --output-dt 1 --summary --quiet --csv " + csv + probes());
+  const CliRun r =
+      runCli("--scene " + scene + " --duration 40 --output-dt 1 --summary --quiet --csv " + csv + probes());
   ASSERT_EQ(r.code, 0) << r.err;
   auto j = summary(r);
   const Table t = readTable(csv);
@@ -154,12 +157,13 @@ TEST(CliSpatialEnds, PinnedBottomForceAndMoment) {
 // work) over the run after the start (the circle starts with a velocity jump the Baumgarte terms take out,
 // docs/spatial.md), rk4 and midpoint with the structured solves.
 TEST(CliSpatialEnds, DrivenBottomFollowsItsCircle) {
-  const std::string scene = writeScene(
-      "rov", "name: rov\nspace: spatial\nline: {length: 10, elements: 10, mass_per_length: 10, EA: 1.0e7, "
-             "EI: 1.0e4, axial_damping: 1.0e3}\ntop: {position: [0, 0, 0]}\n"
-             "bottom: {type: pinned, position: [4, 0, -8], motion: {type: sinusoid, amplitude: [1, 1, 0], "
-             "period: 8, phase: [0, -1.5707963267948966, 0]}}\ninitial: {type: between_points}\n"
-             "solver: {integrator: rk4, dt: 5.0e-4}\n");
+  const std::string scene =
+      writeScene("rov",
+                 "name: rov\nspace: spatial\nline: {length: 10, elements: 10, mass_per_length: 10, EA: 1.0e7, "
+                 "EI: 1.0e4, axial_damping: 1.0e3}\ntop: {position: [0, 0, 0]}\n"
+                 "bottom: {type: pinned, position: [4, 0, -8], motion: {type: sinusoid, amplitude: [1, 1, 0], "
+                 "period: 8, phase: [0, -1.5707963267948966, 0]}}\ninitial: {type: between_points}\n"
+                 "solver: {integrator: rk4, dt: 5.0e-4}\n");
   for (const std::string integrator : {"rk4", "midpoint"}) {
     SCOPED_TRACE(integrator);
     const std::string csv = tempPath("rov.csv");
@@ -186,10 +190,13 @@ TEST(CliSpatialEnds, DrivenBottomFollowsItsCircle) {
       path = std::max(path, (pb - Vec3(4.0 + std::cos(w * s), std::sin(w * s), -8.0)).norm());
       if (k < r1) continue;
       gap = std::max(gap, (t.vec(k, "x_end", "y_end", "z_end") - pb).norm());
-      balance = std::max(balance, std::abs(t.at(k, "energy") - t.at(r1, "energy") - t.at(k, "work") + t.at(r1, "work")) / mgl);
+      balance = std::max(balance,
+                         std::abs(t.at(k, "energy") - t.at(r1, "energy") - t.at(k, "work") + t.at(r1, "work")) / mgl);
     }
-    std::printf("[rov %s] path %.2e m, end-joint gap after 1 s %.2e m, |ΔE - ΔW| after 1 s %.2e of m g L, "
-                "energy_drift from 0 %.2e\n", integrator.c_str(), path, gap, balance, num(j, "energy_drift"));
+    std::printf(
+        "[rov %s] path %.2e m, end-joint gap after 1 s %.2e m, |ΔE - ΔW| after 1 s %.2e of m g L, "
+        "energy_drift from 0 %.2e\n",
+        integrator.c_str(), path, gap, balance, num(j, "energy_drift"));
     EXPECT_LT(path, 1e-9 * 10.0);  // the anchor is the prescribed circle (shifted by the statics' end gap)
     // Measured by breaking the code: W without the bottom's work gives |ΔE - ΔW| = 8.1e-2 of m g L; the
     // bottom without its prescribed acceleration, a gap of 2.5e-4 m.
@@ -204,13 +211,15 @@ TEST(CliSpatialEnds, DrivenBottomFollowsItsCircle) {
 // 6.2e-7 m quasi-statically (a = 4.93 m/s², EA = 1e9 N), twice that as the sudden start's ringing (no
 // damping). Across the line that inertia would bend it (a sag μ a L² / 8T): the test moves along it.
 TEST(CliSpatialEnds, EndsTranslatingTogetherKeepTheLineRigid) {
-  const std::string scene = writeScene(
-      "rigid", "name: rigid\nspace: spatial\nline: {length: 10, elements: 6, mass_per_length: 10, EA: 1.0e9, "
-               "EI: 1.0e5}\ntop: {position: [1, 2, 0], motion: {type: sinusoid, amplitude: [0, 0, 2], period: 4}}\n"
-               "bottom: {type: pinned, position: [1, 2, -10.001], motion: {type: sinusoid, amplitude: [0, 0, 2], "
-               "period: 4}}\ninitial: {type: between_points}\nsolver: {integrator: rk4, dt: 1.0e-4}\n");
+  const std::string scene =
+      writeScene("rigid",
+                 "name: rigid\nspace: spatial\nline: {length: 10, elements: 6, mass_per_length: 10, EA: 1.0e9, "
+                 "EI: 1.0e5}\ntop: {position: [1, 2, 0], motion: {type: sinusoid, amplitude: [0, 0, 2], period: 4}}\n"
+                 "bottom: {type: pinned, position: [1, 2, -10.001], motion: {type: sinusoid, amplitude: [0, 0, 2], "
+                 "period: 4}}\ninitial: {type: between_points}\nsolver: {integrator: rk4, dt: 1.0e-4}\n");
   const std::string csv = tempPath("rigid.csv");
-  const CliRun r = runCli("--scene " + scene + " --duration 4 --output-dt 0.05 --summary --quiet --csv " + csv + probes());
+  const CliRun r =
+      runCli("--scene " + scene + " --duration 4 --output-dt 0.05 --summary --quiet --csv " + csv + probes());
   ASSERT_EQ(r.code, 0) << r.err;
   const Table t = readTable(csv);
   double dev = 0.0, travel = 0.0;
@@ -226,7 +235,8 @@ TEST(CliSpatialEnds, EndsTranslatingTogetherKeepTheLineRigid) {
       dev = std::max(dev, moved("x_rfe" + K, "y_rfe" + K, "z_rfe" + K));
     }
   }
-  std::printf("[rigid translation] ends travel %.3f m; largest deviation from the translated line %.2e m\n", travel, dev);
+  std::printf("[rigid translation] ends travel %.3f m; largest deviation from the translated line %.2e m\n", travel,
+              dev);
   EXPECT_GT(travel, 3.9);
   // Bound: 4x the quasi-static axial response + the CSV's 9 digits of ~10 m. A bottom without its prescribed
   // acceleration lags by ~a/ω² ~ 2e-3 m (ω = 50 rad/s Baumgarte; measured by breaking the code: 3.0e-3 m).
@@ -234,8 +244,9 @@ TEST(CliSpatialEnds, EndsTranslatingTogetherKeepTheLineRigid) {
 }
 
 TEST(CliSpatialEnds, BadKeysAreRefusedNamingTheKey) {
-  const std::string pinned = " --set space=spatial --set bottom.type=pinned --set bottom.position=[0,0,-9.9]"
-                             " --set initial.type=between_points";
+  const std::string pinned =
+      " --set space=spatial --set bottom.type=pinned --set bottom.position=[0,0,-9.9]"
+      " --set initial.type=between_points";
   const std::vector<std::pair<std::string, std::string>> cases = {
       {"--set top.flex_joint.stiffness=1e4", "top.flex_joint: needs space: spatial"},
       {"--set space=spatial --set top.flex_joint.damping=1", "top.flex_joint.stiffness: missing"},
@@ -257,7 +268,8 @@ TEST(CliSpatialEnds, BadKeysAreRefusedNamingTheKey) {
       {"--set space=spatial --set bottom.type=pinned --set bottom.position=[0,0,-9] --set initial.type=straight",
        "m from the end of the straight initial line"},
       {pinned + " --set bottom.motion.type=sinusoid --set bottom.motion.amplitude=[1,0,0] --set bottom.motion.period=5 "
-                "--modes 3", "bottom.motion: the modes with space: spatial need a fixed or free bottom"},
+                "--modes 3",
+       "bottom.motion: the modes with space: spatial need a fixed or free bottom"},
   };
   for (const auto& c : cases) {
     SCOPED_TRACE(c.first);
@@ -283,7 +295,10 @@ TEST(CliSpatialEnds, StraightPinnedStartAndExternalBottomRun) {
     EXPECT_EQ(j.count("x_bottom"), 0u);
     const Table t = readTable(csv);
     const size_t last = t.rows.size() - 1;
-    EXPECT_LT((t.vec(last, "x_end", "y_end", "z_end") - Vec3(10.0 * std::cos(M_PI / 4.0), 0, -10.0 * std::sin(M_PI / 4.0))).norm(), 1e-6);
+    EXPECT_LT(
+        (t.vec(last, "x_end", "y_end", "z_end") - Vec3(10.0 * std::cos(M_PI / 4.0), 0, -10.0 * std::sin(M_PI / 4.0)))
+            .norm(),
+        1e-6);
     EXPECT_GT(t.vec(last, "bottom_fx", "bottom_fy", "bottom_fz").norm(), 0.0);
   }
 }

@@ -63,8 +63,9 @@ TEST(CliSpatialEnds, ModesIn3DArePairsAtThePlanarFrequencies) {
       if (planar[k].character == "axial" || transverse >= out.size()) continue;
       worst_out = std::max(worst_out, std::abs(out[transverse++].f / planar[k].f - 1.0));
     }
-    std::printf("[modes %s] %zu in-plane/axial modes vs planar: %.2e; %zu out-of-plane vs the planar transverse: %.2e\n",
-                file.c_str(), matched, worst_in, transverse, worst_out);
+    std::printf(
+        "[modes %s] %zu in-plane/axial modes vs planar: %.2e; %zu out-of-plane vs the planar transverse: %.2e\n",
+        file.c_str(), matched, worst_in, transverse, worst_out);
     EXPECT_GE(matched, 5u);
     EXPECT_GE(transverse, 5u);
     EXPECT_LT(worst_in, 1e-5);  // 6 printed digits
@@ -81,10 +82,11 @@ TEST(CliSpatialEnds, ModesIn3DArePairsAtThePlanarFrequencies) {
 // modes (docs/modal.md), the transverse ones in degenerate pairs (the line is symmetric about its axis).
 // Bound 1e-5: the tables' 6 printed digits.
 TEST(CliSpatialEnds, PinnedModesIn3DArePairsAtThePlanarFrequencies) {
-  const std::string scene = writeScene(
-      "pinned_modes", "name: pinned_modes\nline: {length: 10, elements: 8, mass_per_length: 10, EA: 1.0e6, EI: 2.0e3}\n"
-                      "top: {position: [0, 0]}\nbottom: {type: pinned, position: [0, -10.05]}\n"
-                      "initial: {type: between_points}\nsolver: {integrator: rk4, dt: 1.0e-4}\n");
+  const std::string scene =
+      writeScene("pinned_modes",
+                 "name: pinned_modes\nline: {length: 10, elements: 8, mass_per_length: 10, EA: 1.0e6, EI: 2.0e3}\n"
+                 "top: {position: [0, 0]}\nbottom: {type: pinned, position: [0, -10.05]}\n"
+                 "initial: {type: between_points}\nsolver: {integrator: rk4, dt: 1.0e-4}\n");
   const CliRun p = runCli("--scene " + scene + " --quiet --modes 8");
   const CliRun s = runCli("--scene " + scene + " --quiet --set space=spatial --modes 16");
   ASSERT_EQ(p.code, 0) << p.err;
@@ -109,10 +111,11 @@ TEST(CliSpatialEnds, PinnedModesIn3DArePairsAtThePlanarFrequencies) {
 // The same line sagging between (0, 0) and (6, -7) m: the anchor's force has a horizontal part, whose geometric
 // stiffness the in-plane modes need; the in-plane and axial 3D modes are the planar pinned ones (6 digits).
 TEST(CliSpatialEnds, SaggingPinnedModesInPlaneAreThePlanarOnes) {
-  const std::string scene = writeScene(
-      "sag_modes", "name: sag_modes\nline: {length: 10, elements: 8, mass_per_length: 10, EA: 1.0e6, EI: 2.0e3}\n"
-                   "top: {position: [0, 0]}\nbottom: {type: pinned, position: [6, -7]}\n"
-                   "initial: {type: between_points}\nsolver: {integrator: rk4, dt: 1.0e-4}\n");
+  const std::string scene =
+      writeScene("sag_modes",
+                 "name: sag_modes\nline: {length: 10, elements: 8, mass_per_length: 10, EA: 1.0e6, EI: 2.0e3}\n"
+                 "top: {position: [0, 0]}\nbottom: {type: pinned, position: [6, -7]}\n"
+                 "initial: {type: between_points}\nsolver: {integrator: rk4, dt: 1.0e-4}\n");
   const CliRun p = runCli("--scene " + scene + " --quiet --modes 6");
   const CliRun s = runCli("--scene " + scene + " --quiet --set space=spatial --modes 14");
   ASSERT_EQ(p.code, 0) << p.err;
@@ -135,17 +138,19 @@ TEST(CliSpatialEnds, SaggingPinnedModesInPlaneAreThePlanarOnes) {
 // (the joint turns rfe 0 against the bending springs c = EI/d = 6e9 N m/rad) lowers ω by ~k/2c = 2.5e-6;
 // without the joint ω would be 1.085 rad/s, half of it.
 TEST(CliSpatialEnds, ModesWithATopFlexJoint) {
-  const std::string scene = writeScene(
-      "rod", "name: rod\nspace: spatial\nline: {length: 10, elements: 6, mass_per_length: 10, EI: 1.0e10, "
-             "axial_flexibility: false, end_mass: 50}\ntop: {position: [0, 0, 0], flex_joint: {stiffness: 3.0e4, "
-             "damping: 100}}\ninitial: {type: hanging}\n");
+  const std::string scene =
+      writeScene("rod",
+                 "name: rod\nspace: spatial\nline: {length: 10, elements: 6, mass_per_length: 10, EI: 1.0e10, "
+                 "axial_flexibility: false, end_mass: 50}\ntop: {position: [0, 0, 0], flex_joint: {stiffness: 3.0e4, "
+                 "damping: 100}}\ninitial: {type: hanging}\n");
   const CliRun r = runCli("--scene " + scene + " --quiet --modes 2");
   ASSERT_EQ(r.code, 0) << r.err;
   const auto modes = modeTable(r.out);
   ASSERT_EQ(modes.size(), 2u);
   const double J = 100.0 * 100.0 / 3.0 + 50.0 * 100.0;
   const double f = std::sqrt((3.0e4 + kG * (100.0 * 5.0 + 50.0 * 10.0)) / J) / (2.0 * M_PI);
-  std::printf("[modes flex joint] %.6g, %.6g Hz vs the rigid pendulum on its spring %.6g Hz\n", modes[0].f, modes[1].f, f);
+  std::printf("[modes flex joint] %.6g, %.6g Hz vs the rigid pendulum on its spring %.6g Hz\n", modes[0].f, modes[1].f,
+              f);
   EXPECT_EQ(modes[0].character, "in-plane");
   EXPECT_EQ(modes[1].character, "out-of-plane");
   for (const ModeRow& m : modes) EXPECT_NEAR(m.f / f, 1.0, 2e-5);  // compliance 2.5e-6 + 6 printed digits

@@ -35,9 +35,13 @@ std::vector<Row> table(const std::string& out) {
 // test_spatial_torsion's shaft: L = 10 m, 16 rfes, no bending, inextensible, GJ = 1e4 N m², ρI_p = 1 kg m,
 // J_end = 10 kg m² (x tan x = 1 held; tan x = -x free).
 std::string shaftScene(const std::string& name, const std::string& torsion, const std::string& top = "") {
-  return writeScene(name, "name: " + name + "\nspace: spatial\nline: {length: 10, elements: 16, mass_per_length: 10, "
-                          "bending: false, axial_flexibility: false, end_mass: 50" + torsion + "}\ntop: {position: "
-                          "[0, 0, 0]" + top + "}\ninitial: {type: hanging}\n");
+  return writeScene(name, "name: " + name +
+                              "\nspace: spatial\nline: {length: 10, elements: 16, mass_per_length: 10, "
+                              "bending: false, axial_flexibility: false, end_mass: 50" +
+                              torsion +
+                              "}\ntop: {position: "
+                              "[0, 0, 0]" +
+                              top + "}\ninitial: {type: hanging}\n");
 }
 const std::string kTorsion = ", torsion: {stiffness: 1.0e4, polar_inertia: 1, end_polar_inertia: 10}";
 
@@ -91,8 +95,11 @@ TEST(CliSpatialTorsion, FreeAndSpringHeldTops) {
               twist[0].f / f - 1.0);
   EXPECT_NEAR(twist[0].f / f, 1.0, 2e-3);  // 16 rfes, order 2 (test_spatial_torsion_modes), + 6 digits
 
-  const CliRun sp = runCli("--scene " + shaftScene("shaft_spring", kTorsion, ", flex_joint: {stiffness: 1.0e9, "
-                                                   "torsional_stiffness: 1.0e3}") + " --quiet --modes 60");
+  const CliRun sp = runCli("--scene " +
+                           shaftScene("shaft_spring", kTorsion,
+                                      ", flex_joint: {stiffness: 1.0e9, "
+                                      "torsional_stiffness: 1.0e3}") +
+                           " --quiet --modes 60");
   ASSERT_EQ(sp.code, 0) << sp.err;
   std::vector<Row> held;
   for (const Row& r : table(sp.out))
@@ -110,8 +117,9 @@ TEST(CliSpatialTorsion, FreeAndSpringHeldTops) {
 // beyond the twist's stability limit (~8.7e-3 s: ω_max ~ 2 sqrt(GJ/d / ρI_p d) = 320 rad/s) but within the
 // swing's (~39 rad/s): the run stops with exit 3 naming the spin.
 TEST(CliSpatialTorsion, TopTwistColumnAndSpinDivergence) {
-  const std::string scene = shaftScene("shaft_whirl", kTorsion, ", motion: {type: sinusoid, amplitude: [0.5, 0.5, 0.0], "
-                                                                "period: 2.0, phase: [0.0, -1.5708, 0.0]}");
+  const std::string scene = shaftScene("shaft_whirl", kTorsion,
+                                       ", motion: {type: sinusoid, amplitude: [0.5, 0.5, 0.0], "
+                                       "period: 2.0, phase: [0.0, -1.5708, 0.0]}");
   const std::string csv = tempPath("shaft_whirl.csv");
   const CliRun r = runCli("--scene " + scene + " --duration 2 --quiet --summary --csv " + csv +
                           " --set solver.integrator=rk4 --set solver.dt=0.001");
@@ -126,14 +134,15 @@ TEST(CliSpatialTorsion, TopTwistColumnAndSpinDivergence) {
   double big = 0.0, worst = 0.0;
   for (const auto& row : rows) big = std::max(big, std::abs(row[twist]));
   for (const auto& row : rows) worst = std::max(worst, std::abs(row[twist] + row[mz]));
-  EXPECT_GT(big, 1e-3);                 // the swing twists the line
-  EXPECT_LE(worst, 1e-8 * big);         // 9 printed digits
+  EXPECT_GT(big, 1e-3);          // the swing twists the line
+  EXPECT_LE(worst, 1e-8 * big);  // 9 printed digits
   std::map<std::string, std::string> j = summary(r);
   EXPECT_NEAR(num(j, "top_twist"), rows.back()[twist], 1e-8 * big);  // the CSV's 9 digits
   std::printf("[cli torsion] whirling shaft: max |top_twist| %.4g N m, |top_twist - top_m·h| %.1e of it\n", big,
               worst / big);
 
-  const CliRun d = runCli("--scene " + scene + " --duration 2 --quiet --set solver.integrator=rk4 --set solver.dt=0.02");
+  const CliRun d =
+      runCli("--scene " + scene + " --duration 2 --quiet --set solver.integrator=rk4 --set solver.dt=0.02");
   EXPECT_EQ(d.code, 3) << d.err;
   EXPECT_NE(d.err.find("spins by"), std::string::npos) << d.err;
 }
@@ -164,7 +173,8 @@ TEST(CliSpatialTorsion, BadKeysAreNamed) {
   const std::vector<std::pair<std::string, std::string>> cases = {
       {"--set space=spatial --set top.torsion=free", "top.torsion: needs line.torsion"},
       {"--set space=spatial --set line.torsion.stiffness=1e4 --set line.torsion.polar_inertia=1 "
-       "--set top.torsion=loose", "top.torsion: unknown value 'loose'"},
+       "--set top.torsion=loose",
+       "top.torsion: unknown value 'loose'"},
       {"--set space=spatial --set top.flex_joint.stiffness=1e4 --set top.flex_joint.torsional_stiffness=1e3",
        "top.flex_joint.torsional_stiffness: needs line.torsion"},
       {"--set space=spatial --set line.torsion.stiffness=1e4 --set line.torsion.polar_inertia=1 --set top.torsion=free "

@@ -44,9 +44,12 @@ std::string prose(const std::string& md) {
 std::string slug(const std::string& heading) {
   std::string s;
   for (unsigned char c : heading) {
-    if (std::isalnum(c) || c == '-' || c == '_') s += static_cast<char>(std::tolower(c));
-    else if (c == ' ') s += '-';
-    else if (c >= 0x80) s += static_cast<char>(c);  // UTF-8 letters stay
+    if (std::isalnum(c) || c == '-' || c == '_')
+      s += static_cast<char>(std::tolower(c));
+    else if (c == ' ')
+      s += '-';
+    else if (c >= 0x80)
+      s += static_cast<char>(c);  // UTF-8 letters stay
   }
   return s;
 }
@@ -138,9 +141,9 @@ bool looksLikePath(const std::string& t) {
 }
 
 bool pathExists(const std::string& t) {
-  for (const char* base : {"", "docs", "include/riser_sim", "include/riser_sim/spatial", "include", "src", "src/core",
-                           "src/core/spatial", "src/node", "src/cli", "test", "test/core", "test/ros", "bench",
-                           "scripts", "config/scenes", "launch", "cmake"})
+  for (const char* base :
+       {"", "docs", "include/riser_sim", "include/riser_sim/spatial", "include", "src", "src/core", "src/core/spatial",
+        "src/node", "src/cli", "test", "test/core", "test/ros", "bench", "scripts", "config/scenes", "launch", "cmake"})
     if (fs::exists(kRoot / base / t)) return true;
   return false;
 }
@@ -161,12 +164,15 @@ TEST(DocsLinks, ArchitectureNamesExist) {
       continue;
     }
     // A code symbol: `name(...)`, `Class::member`, `Class` in CamelCase.
-    static const std::regex call(R"(^([A-Za-z_][A-Za-z0-9_:]*)\()"), qualified(R"(^[A-Za-z_][A-Za-z0-9_]*(::[A-Za-z_][A-Za-z0-9_]*)+$)"),
+    static const std::regex call(R"(^([A-Za-z_][A-Za-z0-9_:]*)\()"),
+        qualified(R"(^[A-Za-z_][A-Za-z0-9_]*(::[A-Za-z_][A-Za-z0-9_]*)+$)"),
         camel(R"(^[A-Z][a-z0-9]+[A-Z][A-Za-z0-9]*$)");
     std::smatch m;
     std::string name;
-    if (std::regex_search(t, m, call)) name = m[1];
-    else if (std::regex_match(t, qualified) || std::regex_match(t, camel)) name = t;
+    if (std::regex_search(t, m, call))
+      name = m[1];
+    else if (std::regex_match(t, qualified) || std::regex_match(t, camel))
+      name = t;
     if (name.empty()) continue;
     ++symbols;
     const std::string gone = missingSymbol(name, t.find('(') != std::string::npos);
@@ -179,8 +185,10 @@ TEST(DocsLinks, ArchitectureNamesExist) {
     std::string line;
     bool fenced = false;
     while (std::getline(in, line)) {
-      if (line.rfind("```", 0) == 0) fenced = !fenced;
-      else if (fenced) fences += line + "\n";
+      if (line.rfind("```", 0) == 0)
+        fenced = !fenced;
+      else if (fenced)
+        fences += line + "\n";
     }
   }
   const std::regex fenced_call(R"(([A-Za-z_][A-Za-z0-9_]*(::[A-Za-z_][A-Za-z0-9_]*)*)\()"),

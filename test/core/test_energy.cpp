@@ -10,8 +10,8 @@ namespace riser_sim {
 namespace {
 
 constexpr int kElements = 10;
-constexpr double kDt = 1e-4;        // [s] the paper's step
-constexpr double kDuration = 20.0;  // [s] the paper's run
+constexpr double kDt = 1e-4;           // [s] the paper's step
+constexpr double kDuration = 20.0;     // [s] the paper's run
 constexpr double kOutputEvery = 0.01;  // [s] energy sampled at 100 Hz
 // Conservative run: RK4 is not symplectic, its energy error grows like t (ω h)^4 per unit time for
 // each excited mode. The pendulum mode (ω ≈ 0.3 rad/s) contributes ~1e-16; the axial modes
@@ -71,13 +71,14 @@ TEST(Energy, DampedRunLosesEnergyMonotonicallyAndBalances) {
   s.line.axial_damping = 1e5;    // [N s]: ~0.1 of critical for the axial mode at n = 10
   s.line.bending_damping = 1e4;  // [N m² s]
   const EnergyRun r = runScene(s);
-  std::printf("[energy damped] max |drift| %.2e, E0 %.3f J, E(20) %.3f J, dissipated %.3f J, largest E increase "
-              "%.2e J (%.2e of m g L), constraint %.2e m\n",
-              r.drift, r.e0, r.e_end, -r.work, r.max_increase, r.max_increase / r.scale, r.cerr);
+  std::printf(
+      "[energy damped] max |drift| %.2e, E0 %.3f J, E(20) %.3f J, dissipated %.3f J, largest E increase "
+      "%.2e J (%.2e of m g L), constraint %.2e m\n",
+      r.drift, r.e0, r.e_end, -r.work, r.max_increase, r.max_increase / r.scale, r.cerr);
   EXPECT_LT(r.max_increase, kMonotoneTolRel * r.scale);
   EXPECT_LT(r.drift, kBalanceDriftTol);
-  EXPECT_LT(r.work, 0.0);          // damping removes energy...
-  EXPECT_LT(r.e_end, r.e0);        // ...and the loss is visible, not round-off:
+  EXPECT_LT(r.work, 0.0);    // damping removes energy...
+  EXPECT_LT(r.e_end, r.e0);  // ...and the loss is visible, not round-off:
   EXPECT_GT(-r.work, 1e-6 * r.scale);
   EXPECT_LT(r.cerr, kConstraintTol);
 }

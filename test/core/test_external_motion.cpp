@@ -96,10 +96,12 @@ TEST(ExternalMotion, ContinuousPositionVelocityAccelerationAcrossArrivals) {
     // Smooth pieces give O(h²) mismatches (< 1e-4 here); a jump of size J would give >= J/2.
     const double tol_v = 1e-4;  // [m/s]: any velocity jump > 2e-4 m/s would fail
     const double tol_a = 1e-3;  // [m/s²]: any acceleration jump > 2e-3 m/s² would fail
-    EXPECT_LT(fdMismatch(tr, [](const PointMotion& m) { return m.p; }, [](const PointMotion& m) { return m.v; }),
+    EXPECT_LT(fdMismatch(
+                  tr, [](const PointMotion& m) { return m.p; }, [](const PointMotion& m) { return m.v; }),
               tol_v)
         << hz << " Hz";
-    EXPECT_LT(fdMismatch(tr, [](const PointMotion& m) { return m.v; }, [](const PointMotion& m) { return m.a; }),
+    EXPECT_LT(fdMismatch(
+                  tr, [](const PointMotion& m) { return m.v; }, [](const PointMotion& m) { return m.a; }),
               tol_a)
         << hz << " Hz";
   }
@@ -179,7 +181,7 @@ TEST(ExternalMotion, NoisySamplesGiveBoundedAcceleration) {
   for (size_t i = 0; i < tr.t.size(); ++i)
     if (tr.t[i] > 1.0) amax = std::max(amax, tr.m[i].a.norm());
   EXPECT_LT(amax, 4.0 * kAmp * kOmega * kOmega);  // measured 2.7 m/s² (seed 1)
-  EXPECT_LT(maxError(tr, 1.0), 0.01);  // [m]: noise 1 mm, bias of the prediction small
+  EXPECT_LT(maxError(tr, 1.0), 0.01);             // [m]: noise 1 mm, bias of the prediction small
 }
 
 TEST(ExternalMotion, HoldsStillAfterTimeout) {
@@ -235,7 +237,7 @@ TEST(ExternalMotion, ShiftedSampleTimesKeepTheVelocityEstimate) {
     em.addSample(t, Vec2(t, 0.0), t);
   }
   em.shiftSampleTimes(0.5);
-  const double t_now = t + 0.1;                    // integration time (not re-mapped)
+  const double t_now = t + 0.1;                        // integration time (not re-mapped)
   em.addSample(t_now - 0.5, Vec2(t_now, 0.0), t_now);  // stamp in the new mapping
   const PointMotion end = em.at(t_now + em.blendTime());
   EXPECT_NEAR(end.v.x(), 1.0, 1e-9);
@@ -276,9 +278,10 @@ TEST(ExternalMotion, StartBlendSpreadsTheCatchUp) {
       if (on && t >= T) (t < T + 0.5 ? handover : after) = std::max(t < T + 0.5 ? handover : after, gap);
     }
   }
-  std::printf("[ measured ] start against a source at 2 m/s: peak |a| %.3g m/s^2 without a start blend, %.3g with "
-              "2 s (3.94 v/T = %.3g); |p - source| %.1e m in the 0.5 s after it, %.1e later\n", peak[0], peak[1],
-              3.94 * v / T, handover, after);
+  std::printf(
+      "[ measured ] start against a source at 2 m/s: peak |a| %.3g m/s^2 without a start blend, %.3g with "
+      "2 s (3.94 v/T = %.3g); |p - source| %.1e m in the 0.5 s after it, %.1e later\n",
+      peak[0], peak[1], 3.94 * v / T, handover, after);
   EXPECT_LE(peak[1], 1.1 * 3.94 * v / T);  // one quintic, the first samples' fit aside
   EXPECT_GT(peak[0], 5.0 * peak[1]);
   EXPECT_LE(handover, 1e-4);
@@ -362,16 +365,17 @@ TEST(ExternalMotion, GapsRejoinWithBoundedAccelerationAndSpeed) {
     double old_peak = 0.0;
     for (size_t i = 0; i < old.t.size(); ++i)
       if (old.t[i] > 3.9) old_peak = std::max(old_peak, old.m[i].a.norm());
-    std::printf("[ measured ] gap %.1f s%s: peak |a| %.3f m/s^2 (%.1f unbounded), peak |v| %.3f m/s, rejoin %.2f s, "
-                "then |p - source| + |v - source| %.1e; fd mismatch v %.1e, a %.1e\n",
-                c.gap, c.jump.norm() > 0.0 ? " + 10 m" : "", peak_a, old_peak, peak_v,
-                tr.gaps.rejoin_end - tr.t_return, err_after, fd_v, fd_a);
+    std::printf(
+        "[ measured ] gap %.1f s%s: peak |a| %.3f m/s^2 (%.1f unbounded), peak |v| %.3f m/s, rejoin %.2f s, "
+        "then |p - source| + |v - source| %.1e; fd mismatch v %.1e, a %.1e\n",
+        c.gap, c.jump.norm() > 0.0 ? " + 10 m" : "", peak_a, old_peak, peak_v, tr.gaps.rejoin_end - tr.t_return,
+        err_after, fd_v, fd_a);
     // The bound is checked at 64 points per planned quintic: between them its cubic acceleration exceeds the
     // checked values by O((T/64)² |a''|) ~ 1e-3 relative; 1 % leaves room.
     EXPECT_LE(peak_a, 1.01 * o.rejoin_max_acceleration) << c.gap;
     EXPECT_LE(peak_v, vel.norm() + o.rejoin_max_velocity) << c.gap;
-    EXPECT_LT(fd_v, 1e-5) << c.gap;  // [m/s]
-    EXPECT_LT(fd_a, 1e-4) << c.gap;  // [m/s²]
+    EXPECT_LT(fd_v, 1e-5) << c.gap;       // [m/s]
+    EXPECT_LT(fd_a, 1e-4) << c.gap;       // [m/s²]
     EXPECT_LT(err_after, 1e-6) << c.gap;  // a linear source is fitted and predicted exactly
     EXPECT_GT(old_peak, 10.0 * peak_a) << c.gap;
     EXPECT_EQ(tr.gaps.count, 1) << c.gap;

@@ -59,8 +59,8 @@ TEST(ExternalMotion3, EachAxisIsThePlanarExternalMotion) {
     const PointMotion3 m = m3.at(t);
     const PointMotion a = xz.at(t), b = yz.at(t);
     const Vec3 p(a.p.x(), b.p.x(), a.p.y()), v(a.v.x(), b.v.x(), a.v.y()), acc(a.a.x(), b.a.x(), a.a.y());
-    worst = std::max({worst, (m.p - p).cwiseAbs().maxCoeff(), (m.v - v).cwiseAbs().maxCoeff(),
-                      (m.a - acc).cwiseAbs().maxCoeff()});
+    worst = std::max(
+        {worst, (m.p - p).cwiseAbs().maxCoeff(), (m.v - v).cwiseAbs().maxCoeff(), (m.a - acc).cwiseAbs().maxCoeff()});
     if (t > 1.0) worst_track = std::max(worst_track, (m.p - path(t)).norm());
   }
   EXPECT_LT(worst, 1e-12);  // [m, m/s, m/s^2]: the same arithmetic per axis
@@ -74,12 +74,12 @@ TEST(ExternalMotion3, RefusesBadSamplesChangingNothing) {
   ASSERT_TRUE(m.addSample(0.1, Vec3(1.1, 2.1, 3.0), 0.1));
   const PointMotion3 before = m.at(0.15);
   const double nan = std::nan("");
-  EXPECT_FALSE(m.addSample(0.2, Vec3(1.0, nan, 3.0), 0.12));                         // NaN in y only
-  EXPECT_FALSE(m.addSample(0.2, Vec3(INFINITY, 2.0, 3.0), 0.12));                    // Inf
-  EXPECT_FALSE(m.addSample(nan, Vec3(1.0, 2.0, 3.0), 0.12));                         // NaN stamp
-  EXPECT_FALSE(m.addSample(0.2, Vec3(1.0, 2.0, 3.0), nan));                          // NaN time now
-  EXPECT_FALSE(m.addSample(0.1, Vec3(5.0, 5.0, 5.0), 0.12));                         // repeated stamp
-  EXPECT_FALSE(m.addSample(0.05, Vec3(5.0, 5.0, 5.0), 0.12));                        // out of order
+  EXPECT_FALSE(m.addSample(0.2, Vec3(1.0, nan, 3.0), 0.12));       // NaN in y only
+  EXPECT_FALSE(m.addSample(0.2, Vec3(INFINITY, 2.0, 3.0), 0.12));  // Inf
+  EXPECT_FALSE(m.addSample(nan, Vec3(1.0, 2.0, 3.0), 0.12));       // NaN stamp
+  EXPECT_FALSE(m.addSample(0.2, Vec3(1.0, 2.0, 3.0), nan));        // NaN time now
+  EXPECT_FALSE(m.addSample(0.1, Vec3(5.0, 5.0, 5.0), 0.12));       // repeated stamp
+  EXPECT_FALSE(m.addSample(0.05, Vec3(5.0, 5.0, 5.0), 0.12));      // out of order
   EXPECT_EQ(m.sampleCount(), 2);
   EXPECT_EQ(m.position().sampleCount(), 2);
   const PointMotion3 after = m.at(0.15);
@@ -87,7 +87,12 @@ TEST(ExternalMotion3, RefusesBadSamplesChangingNothing) {
   EXPECT_EQ(after.v, before.v);
   EXPECT_EQ(after.a, before.a);
   EXPECT_TRUE(m.addSample(0.2, Vec3(1.2, 2.2, 3.0), 0.2));
-  EXPECT_THROW(ExternalMotion3(Vec3::Zero(), 0.0, [] { ExternalMotionOptions o; o.stop_time = 0.0; return o; }()),
+  EXPECT_THROW(ExternalMotion3(Vec3::Zero(), 0.0,
+                               [] {
+                                 ExternalMotionOptions o;
+                                 o.stop_time = 0.0;
+                                 return o;
+                               }()),
                std::invalid_argument);
 }
 
@@ -205,7 +210,8 @@ namespace {
 // wraps; R stays a rotation.
 Mat3 attitude(double t) {
   return (Eigen::AngleAxisd(0.5 * t + 2.5, Vec3::UnitZ()) * Eigen::AngleAxisd(0.05 * std::sin(0.8 * t), Vec3::UnitY()) *
-          Eigen::AngleAxisd(0.1 * std::sin(1.2 * t), Vec3::UnitX())).toRotationMatrix();
+          Eigen::AngleAxisd(0.1 * std::sin(1.2 * t), Vec3::UnitX()))
+      .toRotationMatrix();
 }
 Vec3 angularVelocity(double t) {  // ψ' z + θ' Rz y + φ' Rz Ry x
   const Mat3 Rz = Eigen::AngleAxisd(0.5 * t + 2.5, Vec3::UnitZ()).toRotationMatrix();
@@ -230,8 +236,8 @@ TEST(ExternalMotion3, FollowsTheHoldersAttitude) {
       worst_w = std::max(worst_w, (p.w - angularVelocity(s)).norm());
     }
   }
-  std::printf("ExternalMotion3 attitude: |R error| <= %.2e rad, |w error| <= %.2e rad/s, |RᵀR - I| <= %.1e\n",
-              worst_R, worst_w, worst_orth);
+  std::printf("ExternalMotion3 attitude: |R error| <= %.2e rad, |w error| <= %.2e rad/s, |RᵀR - I| <= %.1e\n", worst_R,
+              worst_w, worst_orth);
   // The smoothing's lag on a 0.5 rad/s turn with 1.2 rad/s roll: its fit and blend (as on the position's own
   // axes, ExternalMotion). A yaw jump of 2π at the wrap would be an error of ~π.
   EXPECT_LT(worst_R, 2e-3);
@@ -259,7 +265,8 @@ TEST(ExternalMotion3, TurnsTheTopFlexJoint) {
   for (bool turning : {true, false}) {
     RunInputs3 in;
     in.top = top;
-    auto motion = turning ? std::make_unique<ExternalMotion3>(top, yawed, 0.0) : std::make_unique<ExternalMotion3>(top, 0.0);
+    auto motion =
+        turning ? std::make_unique<ExternalMotion3>(top, yawed, 0.0) : std::make_unique<ExternalMotion3>(top, 0.0);
     ExternalMotion3* em = motion.get();
     in.motion = std::move(motion);
     SpatialRun run(scene, std::move(in));
@@ -267,7 +274,8 @@ TEST(ExternalMotion3, TurnsTheTopFlexJoint) {
     EXPECT_EQ(run.topFlexJoint()->turnsWithHolder(), turning);
     // The vessel rolls 0.2 rad more over 1 s: a joint that turns with it is loaded; one fixed in the world is not.
     const Eigen::Quaterniond rolled(Eigen::AngleAxisd(0.7, Vec3::UnitZ()) * Eigen::AngleAxisd(0.3, Vec3::UnitX()));
-    for (int k = 1; k <= 10; ++k) em->addSample(0.1 * k, top, k == 10 ? rolled : yawed.slerp(0.1 * k, rolled), run.time());
+    for (int k = 1; k <= 10; ++k)
+      em->addSample(0.1 * k, top, k == 10 ? rolled : yawed.slerp(0.1 * k, rolled), run.time());
     const Vec3 d0 = run.topFlexJoint()->axis(0.0).d;
     EXPECT_LT((d0 - Vec3(0, 0, -1)).norm(), 1e-9);  // unloaded along the hanging line at the start
     const Vec3 d = run.topFlexJoint()->axis(5.0).d;
@@ -281,7 +289,6 @@ TEST(ExternalMotion3, TurnsTheTopFlexJoint) {
     }
   }
 }
-
 
 // A driven bottom with a flex joint (the ROV's end of a tether): on an ExternalMotion3 with the ROV's attitude
 // the bottom joint turns with the ROV, and the ROV's yaw of 0.5 rad turns its axis by that yaw.
@@ -365,7 +372,8 @@ AttitudeTrace followAttitude(Attitude truth, double hz, double t_end, unsigned s
       // R against w, w against the angular acceleration: O(h²) for smooth pieces, half of any jump.
       tr.fd_R = std::max(tr.fd_R, (Eigen::AngleAxisd(p.R * prev.R.transpose()).angle() *
                                        Eigen::AngleAxisd(p.R * prev.R.transpose()).axis() / h -
-                                   0.5 * (p.w + prev.w)).norm());
+                                   0.5 * (p.w + prev.w))
+                                      .norm());
       tr.fd_w = std::max(tr.fd_w, ((p.w - prev.w) / h - 0.5 * (alpha + prev_alpha)).norm());
       tr.max_dw = std::max(tr.max_dw, (p.w - prev.w).norm());
     }
@@ -389,7 +397,8 @@ TEST(ExternalMotion3, AttitudeThroughEveryOrientation) {
   const Vec3 n = Vec3(1.0, 2.0, 0.5).normalized();
   const auto pitch = [](double t) {
     return Mat3((Eigen::AngleAxisd(0.3, Vec3::UnitZ()) * Eigen::AngleAxisd(0.8 * t, Vec3::UnitY()) *
-                 Eigen::AngleAxisd(0.2 + 0.1 * std::sin(t), Vec3::UnitX())).toRotationMatrix());
+                 Eigen::AngleAxisd(0.2 + 0.1 * std::sin(t), Vec3::UnitX()))
+                    .toRotationMatrix());
   };
   const auto yaw = [](double t) {
     return Mat3((Eigen::AngleAxisd(1.5 * t, Vec3::UnitZ()) * Eigen::AngleAxisd(0.3 * std::sin(t), Vec3::UnitY()))
@@ -404,9 +413,10 @@ TEST(ExternalMotion3, AttitudeThroughEveryOrientation) {
     const AttitudeTrace b = followAttitude(yaw, hz, 20.0, seed++);    // yaw 30 rad: 4.8 turns
     const AttitudeTrace c = followAttitude(tumble, hz, 12.0, seed++);
     for (const auto& [name, e] : {std::pair<const char*, AttitudeTrace>{"pitch", a}, {"yaw", b}, {"tumble", c}}) {
-      std::printf("[ measured ] %s at %.0f Hz: |R error| %.2e rad, |w error| %.2e rad/s (|w| <= %.2f), fd R-w %.1e, "
-                  "fd w-alpha %.1e, max |dw| per ms %.1e rad/s, jump at a sample %.1e\n", name, hz, e.err_R, e.err_w,
-                  e.max_rate, e.fd_R, e.fd_w, e.max_dw, e.jump);
+      std::printf(
+          "[ measured ] %s at %.0f Hz: |R error| %.2e rad, |w error| %.2e rad/s (|w| <= %.2f), fd R-w %.1e, "
+          "fd w-alpha %.1e, max |dw| per ms %.1e rad/s, jump at a sample %.1e\n",
+          name, hz, e.err_R, e.err_w, e.max_rate, e.fd_R, e.fd_w, e.max_dw, e.jump);
       EXPECT_LT(e.err_R, 0.1 * e.max_rate * 0.1) << name << " " << hz;
       EXPECT_LT(e.err_w, 0.1 * e.max_rate) << name << " " << hz;
       EXPECT_LT(e.jump, 1e-9) << name << " " << hz;  // round-off of the re-base
@@ -414,7 +424,7 @@ TEST(ExternalMotion3, AttitudeThroughEveryOrientation) {
       EXPECT_LT(e.fd_R, 1e-4) << name << " " << hz;  // [rad/s]
       // O(h |jump of the angular jerk at a blend's start| / 8): tens of rad/s³ at 10 Hz, which is no jump in
       // the angular acceleration (that is `jump` above); a jump of J rad/s in w would show as J / h.
-      EXPECT_LT(e.fd_w, 0.05) << name << " " << hz;  // [rad/s²]
+      EXPECT_LT(e.fd_w, 0.05) << name << " " << hz;    // [rad/s²]
       EXPECT_LT(e.max_dw, 1e-2) << name << " " << hz;  // [rad/s] per 1 ms: |alpha| < 10 rad/s²
     }
   }
@@ -463,8 +473,10 @@ TEST(ExternalMotion3, GapRejoinsPositionAndAttitude) {
       err_after = std::max({err_after, (p.p - vel * t).norm(), Eigen::AngleAxisd(p.R * R(t).transpose()).angle(),
                             (p.w - 0.3 * Vec3::UnitZ()).norm()});
   }
-  std::printf("[ measured ] 3D gap of 3 s: peak |a| %.3f m/s^2, |alpha| %.3f rad/s^2, rejoin until t = %.2f s, then "
-              "error %.1e; largest jump %.1e\n", peak_a, peak_alpha, m.gaps().rejoin_end, err_after, jump);
+  std::printf(
+      "[ measured ] 3D gap of 3 s: peak |a| %.3f m/s^2, |alpha| %.3f rad/s^2, rejoin until t = %.2f s, then "
+      "error %.1e; largest jump %.1e\n",
+      peak_a, peak_alpha, m.gaps().rejoin_end, err_after, jump);
   EXPECT_EQ(m.gaps().count, 1);
   EXPECT_NEAR(m.gaps().last, 3.1, 1e-9);  // samples at 3.95 and 7.05 s
   EXPECT_LE(peak_a, 1.01 * o.rejoin_max_acceleration);
@@ -507,8 +519,10 @@ TEST(ExternalMotion3, FlexJointMomentSmoothThroughPitchNinety) {
     }
   }
   const double bound = 2.0 * k * w_max * scene.solver.dt;
-  std::printf("[ measured ] ROV pitching through 90 deg: bottom joint moment %.0f N m at 90 deg, peak %.0f N m; largest "
-              "change between 2 ms outputs %.2f N m (bound 2 k w dt = %.1f)\n", at_90, peak, max_step, bound);
+  std::printf(
+      "[ measured ] ROV pitching through 90 deg: bottom joint moment %.0f N m at 90 deg, peak %.0f N m; largest "
+      "change between 2 ms outputs %.2f N m (bound 2 k w dt = %.1f)\n",
+      at_90, peak, max_step, bound);
   EXPECT_LT(max_step, bound);
   EXPECT_GT(peak, 1000.0);  // the joint is loaded: the pitch turns its axis away from the line
 }

@@ -35,10 +35,10 @@ struct Case {
   std::string name;
   std::function<Scene()> scene;
   std::vector<std::string> integrators;
-  double duration;      // simulated [s]
+  double duration;  // simulated [s]
   Expect expect;
-  double energy_bound;  // |E - E0 - W| / max(|E0|, m g L) for a sound run (see each case)
-  double dt_factor;     // > 0: rk4 runs at this multiple of Simulator::stableStepEstimate()
+  double energy_bound;                              // |E - E0 - W| / max(|E0|, m g L) for a sound run (see each case)
+  double dt_factor;                                 // > 0: rk4 runs at this multiple of Simulator::stableStepEstimate()
   std::function<void(Simulator&)> setup = nullptr;  // e.g. replace the top motion
   std::vector<std::string> formulations = {"absolute", "recursive"};
   // Numerical damping allowed (an unresolved mode driven at resonance, drag-dominated motion under the
@@ -104,20 +104,41 @@ std::vector<Case> cases() {
   std::vector<Case> c;
   c.push_back({"n1", [] { return validation::table1Scene(1); }, kAll, 2.0, Expect::kSound, kEnergyBound, 0.8});
   // n = 1000: the explicit schemes at 0.8x rk4's limit (1.5e-5 s), the implicit ones at 1e-3 s (67x it).
-  c.push_back({"n1000", [] { return validation::table1Scene(1000); }, kAll, 0.01, Expect::kSound, kEnergyBound, 0.8,
-               nullptr, {"recursive"}});
-  c.push_back({"n1000_absolute", [] { return validation::table1Scene(1000); }, {"rk4", "dopri5"}, 0.004,
-               Expect::kSound, kEnergyBound, 0.8, nullptr, {"absolute"}});
+  c.push_back({"n1000",
+               [] { return validation::table1Scene(1000); },
+               kAll,
+               0.01,
+               Expect::kSound,
+               kEnergyBound,
+               0.8,
+               nullptr,
+               {"recursive"}});
+  c.push_back({"n1000_absolute",
+               [] { return validation::table1Scene(1000); },
+               {"rk4", "dopri5"},
+               0.004,
+               Expect::kSound,
+               kEnergyBound,
+               0.8,
+               nullptr,
+               {"absolute"}});
   // The implicit schemes on the absolute formulation have only the dense Jacobian: p = 4004 is refused.
-  c.push_back({"n1000_absolute_implicit", [] { return validation::table1Scene(1000); }, kImplicit, 0.004,
-               Expect::kRefused, 0.0, 0.8, nullptr, {"absolute"}});
+  c.push_back({"n1000_absolute_implicit",
+               [] { return validation::table1Scene(1000); },
+               kImplicit,
+               0.004,
+               Expect::kRefused,
+               0.0,
+               0.8,
+               nullptr,
+               {"absolute"}});
   for (double E : {1e6, 1e9, 2.1e11}) {
-    c.push_back({"E" + std::to_string(int(std::log10(E))) + "_short", [E] { return shortLine(E, 20, 10.0); }, kAll,
-                 0.2, Expect::kSound, kEnergyBound, 0.8});
+    c.push_back({"E" + std::to_string(int(std::log10(E))) + "_short", [E] { return shortLine(E, 20, 10.0); }, kAll, 0.2,
+                 Expect::kSound, kEnergyBound, 0.8});
   }
   c.push_back({"end_mass_0", [] { return shortLine(1e9, 10, 0.0); }, kAll, 0.5, Expect::kSound, kEnergyBound, 0.8});
-  c.push_back({"end_mass_1e6", [] { return shortLine(2.1e11, 10, 1e6); }, kAll, 0.5, Expect::kSound, kEnergyBound,
-               0.8});
+  c.push_back(
+      {"end_mass_1e6", [] { return shortLine(2.1e11, 10, 1e6); }, kAll, 0.5, Expect::kSound, kEnergyBound, 0.8});
   c.push_back({"all_bending",
                [] {
                  Scene s = shortLine(2.1e11, 20, 0.0);
@@ -129,8 +150,7 @@ std::vector<Case> cases() {
                  return s;
                },
                kAll, 0.5, Expect::kSound, kEnergyBound, 0.8});
-  c.push_back({"no_bending", [] { return validation::table1Scene(20); }, kAll, 1.0, Expect::kSound, kEnergyBound,
-               0.8});
+  c.push_back({"no_bending", [] { return validation::table1Scene(20); }, kAll, 1.0, Expect::kSound, kEnergyBound, 0.8});
   // Slack: a horizontal straight line (no tension) falls while the top is driven down at 20 m/s.
   c.push_back({"slack_top_down_fast",
                [] {
@@ -155,8 +175,8 @@ std::vector<Case> cases() {
   c.push_back({"top_at_highest_mode", [] { return shortLine(1e9, 10, 10.0); }, kAll, 0.2, Expect::kSound, 1e-3, 0.8,
                [](Simulator& sim) {
                  const Vec2 p = sim.topMotion().at(0.0).p;
-                 sim.setTopMotion(std::make_unique<SinusoidMotion>(p, Vec2(1e-3, 1e-3),
-                                                                   2.0 * M_PI / sim.highestFrequency(), 0.0));
+                 sim.setTopMotion(
+                     std::make_unique<SinusoidMotion>(p, Vec2(1e-3, 1e-3), 2.0 * M_PI / sim.highestFrequency(), 0.0));
                }});
   c.back().dissipative = true;
   c.back().constraint_per_d = 1e-2;
@@ -190,8 +210,8 @@ std::vector<Case> cases() {
     const auto table1 = [n] { return validation::table1Scene(n); };
     c.push_back({"rk4_0.9x_limit_n" + std::to_string(n), table1, {"rk4"}, 0.5, Expect::kSound, kEnergyBound, 0.9});
     c.push_back({"rk4_1.5x_limit_n" + std::to_string(n), table1, {"rk4"}, 0.5, Expect::kCleanDivergence, 0.0, 1.5});
-    c.push_back({"dopri5_1.5x_rk4_limit_n" + std::to_string(n), table1, {"dopri5"}, 0.5, Expect::kSound, kEnergyBound,
-                 1.5});
+    c.push_back(
+        {"dopri5_1.5x_rk4_limit_n" + std::to_string(n), table1, {"dopri5"}, 0.5, Expect::kSound, kEnergyBound, 1.5});
   }
   const auto inextensible = [] {
     Scene s = validation::table1Scene(40);
@@ -212,14 +232,27 @@ std::vector<Case> cases() {
                  s.solver.dt = 0.1;
                  return s;
                },
-               {"rosenbrock2"}, 27.0, Expect::kCleanOrFlagged, 0.0, 0.0, nullptr, {"recursive"}});
+               {"rosenbrock2"},
+               27.0,
+               Expect::kCleanOrFlagged,
+               0.0,
+               0.0,
+               nullptr,
+               {"recursive"}});
   // Midpoint's Newton cannot follow the undamped axial mode at h = 1 s (5400x rk4's limit, n = 100),
   // not even on h/8 (h = 0.05 s works through 2-4 substeps): it must stop at once, naming solver.dt,
   // with the last good state kept.
   // generalized_alpha (ρ∞ = 0.5) shares midpoint's Newton and stops the same way there (at h = 0.1 s it runs
   // the 20 s, midpoint stops at t = 3.5 s: the damped axial mode keeps Newton in reach).
-  c.push_back({"midpoint_beyond_newton", [] { return validation::table1Scene(100, 1.0); },
-               {"midpoint", "generalized_alpha"}, 2.0, Expect::kCleanDivergence, 0.0, 0.0, nullptr, {"recursive"}});
+  c.push_back({"midpoint_beyond_newton",
+               [] { return validation::table1Scene(100, 1.0); },
+               {"midpoint", "generalized_alpha"},
+               2.0,
+               Expect::kCleanDivergence,
+               0.0,
+               0.0,
+               nullptr,
+               {"recursive"}});
   // generalized_alpha on the J-lay scene at h = 0.1 s (where rosenbrock2 stops): sound, the energy balance
   // within 1e-5 (measured 5.8e-7 at n = 100, the default n = 40 here).
   c.push_back({"jlay_generalized_alpha_h0.1",
@@ -228,12 +261,25 @@ std::vector<Case> cases() {
                  s.solver.dt = 0.1;
                  return s;
                },
-               {"generalized_alpha"}, 27.0, Expect::kSound, 1e-5, 0.0, nullptr, {"recursive"}});
+               {"generalized_alpha"},
+               27.0,
+               Expect::kSound,
+               1e-5,
+               0.0,
+               nullptr,
+               {"recursive"}});
   // dopri5 with an output step far beyond the dynamics (solver.dt = 1000 s on the elastic steel line, n = 8:
   // substeps of ~1e-3 s) must stop after its 1e5 substeps per call, naming solver.dt, instead of blocking its
   // caller for ~1e6 substeps (found by the fuzzer: dt = 100 s took > 25 s per input).
-  c.push_back({"dopri5_dt_beyond_dynamics", [] { return validation::table1Scene(8, 1000.0); }, {"dopri5"}, 1000.0,
-               Expect::kCleanDivergence, 0.0, 0.0, nullptr, {"recursive"}});
+  c.push_back({"dopri5_dt_beyond_dynamics",
+               [] { return validation::table1Scene(8, 1000.0); },
+               {"dopri5"},
+               1000.0,
+               Expect::kCleanDivergence,
+               0.0,
+               0.0,
+               nullptr,
+               {"recursive"}});
   return c;
 }
 
@@ -280,8 +326,9 @@ TEST(Extremes, Table) {
         char what[120];
         std::snprintf(what, sizeof(what), "ok, energy drift %.2e, constraint %.2e m", ok ? sim->energyDrift() : 0.0,
                       ok ? sim->constraintError() : 0.0);
-        std::printf("  %-28s %-12s %-10s dt %-10.3g %s\n", c.name.c_str(), integ.c_str(), form.c_str(), s.solver.dt,
-                    ok ? what : ("stopped at step " + std::to_string(sim->steps()) + ": " + sim->divergenceReason()).c_str());
+        std::printf(
+            "  %-28s %-12s %-10s dt %-10.3g %s\n", c.name.c_str(), integ.c_str(), form.c_str(), s.solver.dt,
+            ok ? what : ("stopped at step " + std::to_string(sim->steps()) + ": " + sim->divergenceReason()).c_str());
         if (!ok) {
           EXPECT_NE(c.expect, Expect::kSound) << "diverged: " << sim->divergenceReason();
           EXPECT_NE(sim->divergenceReason().find("solver.dt"), std::string::npos) << sim->divergenceReason();
@@ -392,7 +439,6 @@ TEST(Extremes, OneHourMidpointEnergyBounded) {
   EXPECT_LE(sim->maxConstraintError(), 1e-9);  // free bottom, recursive: joints hold by construction
   EXPECT_TRUE(outputsFinite(sim->outputs()));
 }
-
 
 // The same hour on the absolute formulation, where the joints are held by Baumgarte stabilisation
 // (ω_c = 50 rad/s): rk4 at h = 0.01 s (inextensible, n = 10). The constraint violation must stay bounded.

@@ -101,7 +101,8 @@ TEST(Formulation, ForcesAreMinusGradientOfPotential) {
         worst = std::max(worst, std::abs(Q[j] + dV));
       }
       const double scale = Q.lpNorm<Eigen::Infinity>();
-      if (trial == 0) std::printf("[formulation] %s: max |Q + dV/dq| = %.2e (max |Q| %.2e)\n", term->name().c_str(), worst, scale);
+      if (trial == 0)
+        std::printf("[formulation] %s: max |Q + dV/dq| = %.2e (max |Q| %.2e)\n", term->name().c_str(), worst, scale);
       EXPECT_GT(scale, 0.0) << term->name();
       EXPECT_LT(worst, kForceFdRelTol * scale) << term->name() << " trial " << trial;
     }

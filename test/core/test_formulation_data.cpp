@@ -167,9 +167,12 @@ TEST(FormulationData, ReadingOutputsBetweenStepsDoesNotChangeTheRun) {
     const char* formulation;
     const char* jacobian;
   };
-  const Run runs[] = {{"rk4", "recursive", "auto"},           {"rk4", "absolute", "auto"},
-                      {"dopri5", "independent", "auto"},      {"midpoint", "recursive", "structured"},
-                      {"rosenbrock2", "independent", "structured"}, {"rosenbrock2", "absolute", "dense"}};
+  const Run runs[] = {{"rk4", "recursive", "auto"},
+                      {"rk4", "absolute", "auto"},
+                      {"dopri5", "independent", "auto"},
+                      {"midpoint", "recursive", "structured"},
+                      {"rosenbrock2", "independent", "structured"},
+                      {"rosenbrock2", "absolute", "dense"}};
   for (const Run& r : runs) {
     Scene scene = jlay(true);
     scene.solver.integrator = toChoice<IntegratorKind>(r.integrator);

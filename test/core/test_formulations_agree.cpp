@@ -59,7 +59,7 @@ class RandomInertia : public ForceTerm {
 struct Case {
   const char* label;
   bool axial, bending, end_mass, damping, inertia, pinned;
-  int n = 12;            // segments
+  int n = 12;              // segments
   bool table1_ea = false;  // keep Table 1's stiff EA (else a softer one, so that Δ'' is not dwarfed)
 };
 
@@ -78,7 +78,9 @@ std::shared_ptr<Model> caseModel(const Case& c, int n) {
   return model;
 }
 
-double relDiff(const VecX& a, const VecX& b) { return (a - b).lpNorm<Eigen::Infinity>() / std::max(a.lpNorm<Eigen::Infinity>(), 1e-300); }
+double relDiff(const VecX& a, const VecX& b) {
+  return (a - b).lpNorm<Eigen::Infinity>() / std::max(a.lpNorm<Eigen::Infinity>(), 1e-300);
+}
 
 void compareAtRandomStates(const Case& c) {
   auto model = caseModel(c, c.n);
@@ -95,7 +97,7 @@ void compareAtRandomStates(const Case& c) {
     for (int i = 0; i < nb; ++i) {
       const double l = model->rfe(i).length;
       y[ind.dofsPerRfe() * i + ind.dofsPerRfe() - 1] = -M_PI / 2 + 0.8 * u(rng);  // φ_i
-      y[nt + ind.dofsPerRfe() * i + ind.dofsPerRfe() - 1] = 0.5 * u(rng);        // φ'_i
+      y[nt + ind.dofsPerRfe() * i + ind.dofsPerRfe() - 1] = 0.5 * u(rng);         // φ'_i
       if (c.axial) {
         y[2 * i] = 1e-3 * l * u(rng);
         y[nt + 2 * i] = 1e-2 * l * u(rng);
@@ -190,9 +192,10 @@ TEST(FormulationsAgree, Table1EndPositionAfter20s) {
       EXPECT_EQ(sim->maxConstraintError(), 0.0);
     }
   }
-  std::printf("[table1 n=10] |independent - absolute| = %.2e m, |recursive - absolute| = %.2e m, "
-              "|recursive - independent| = %.2e m\n",
-              (end[1] - end[0]).norm(), (end[2] - end[0]).norm(), (end[2] - end[1]).norm());
+  std::printf(
+      "[table1 n=10] |independent - absolute| = %.2e m, |recursive - absolute| = %.2e m, "
+      "|recursive - independent| = %.2e m\n",
+      (end[1] - end[0]).norm(), (end[2] - end[0]).norm(), (end[2] - end[1]).norm());
   EXPECT_LT((end[1] - end[0]).norm(), kTable1AgreementTol);
   EXPECT_LT((end[2] - end[0]).norm(), kTable1AgreementTol);
   EXPECT_LT((end[2] - end[1]).norm(), kTable1AgreementTol);

@@ -19,7 +19,7 @@ constexpr double kG = 9.81;
 constexpr double kRhoW = 1025.0, kRhoR = 7850.0;
 constexpr double kDout = 0.3, kDin = 0.26;
 const double kAout = M_PI / 4 * kDout * kDout, kAin = M_PI / 4 * kDin * kDin, kAwall = kAout - kAin;
-const double kWallMass = kRhoR * kAwall;                     // [kg/m]
+const double kWallMass = kRhoR * kAwall;                                // [kg/m]
 const double kSubmergedWeight = (kRhoR * kAwall - kRhoW * kAout) * kG;  // w [N/m]
 
 // --- terminal velocity ----------------------------------------------------------------------------------
@@ -37,12 +37,12 @@ struct SinkResult {
 
 SinkResult sink(double velocity_scale, double cm) {
   const double L = 20.0, cd = 1.0;
-  Scene s = parseScene(YAML::Load(
-      "line: {length: 20, elements: 10, outer_diameter: 0.3, inner_diameter: 0.26, youngs_modulus: 2.07e11,"
-      " density: 7850, axial_flexibility: false}\n"
-      "environment: {water: {density: 1025, surface: 0}}\n"
-      "hydrodynamics: {drag_normal: 1.0, drag_tangential: 0.0, inertia_coefficient: " +
-      std::to_string(cm) + "}\n"));
+  Scene s = parseScene(
+      YAML::Load("line: {length: 20, elements: 10, outer_diameter: 0.3, inner_diameter: 0.26, youngs_modulus: 2.07e11,"
+                 " density: 7850, axial_flexibility: false}\n"
+                 "environment: {water: {density: 1025, surface: 0}}\n"
+                 "hydrodynamics: {drag_normal: 1.0, drag_tangential: 0.0, inertia_coefficient: " +
+                 std::to_string(cm) + "}\n"));
   const double k = 0.5 * kRhoW * kDout * cd, w = kSubmergedWeight;
   const double vt = std::sqrt(w / k), tau = (kWallMass + (cm - 1.0) * kRhoW * kAout) / (k * vt);
   std::vector<VelocityProfileMotion::Knot> knots;
@@ -89,13 +89,13 @@ TEST(HydroDynamics, HorizontalLineSinksAtTheTerminalVelocity) {
 // the k-th zero crossing of x_end scales by sqrt((m + m_a)/m) between C_M = 1 and C_M, and by
 // sqrt(m g / w) between air and water (C_M = 1).
 std::vector<double> crossings(const std::string& env_hydro) {
-  Scene s = parseScene(YAML::Load(
-      "line: {length: 20, elements: 10, outer_diameter: 0.3, inner_diameter: 0.26, youngs_modulus: 2.07e11,"
-      " density: 7850, axial_flexibility: false, bending: false}\n"
-      "top: {position: [0, -1]}\n"
-      "initial: {type: displaced, end_dx: 0.2}\n"
-      "solver: {dt: 1e-3}\n" +
-      env_hydro));
+  Scene s = parseScene(
+      YAML::Load("line: {length: 20, elements: 10, outer_diameter: 0.3, inner_diameter: 0.26, youngs_modulus: 2.07e11,"
+                 " density: 7850, axial_flexibility: false, bending: false}\n"
+                 "top: {position: [0, -1]}\n"
+                 "initial: {type: displaced, end_dx: 0.2}\n"
+                 "solver: {dt: 1e-3}\n" +
+                 env_hydro));
   auto sim = buildSimulator(s);
   std::vector<double> t, x;
   while (sim->time() < 40.0 - 1e-9) {
@@ -125,8 +125,8 @@ TEST(HydroDynamics, AddedMassAndBuoyancyScaleThePeriod) {
   // part centroids (no rotational added inertia of the parts), O((d/L)²/12); a missing added mass is
   // a 23 % error.
   const int k = 1;
-  std::printf("crossing %d: air %.4f  C_M=1 %.4f (ratio %.5f, expected %.5f)  1.5: %.5f (%.5f)  2: %.5f (%.5f)\n", k + 1,
-              air[k], cm1[k], cm1[k] / air[k], buoy, cm15[k] / cm1[k], f15, cm2[k] / cm1[k], f2);
+  std::printf("crossing %d: air %.4f  C_M=1 %.4f (ratio %.5f, expected %.5f)  1.5: %.5f (%.5f)  2: %.5f (%.5f)\n",
+              k + 1, air[k], cm1[k], cm1[k] / air[k], buoy, cm15[k] / cm1[k], f15, cm2[k] / cm1[k], f2);
   EXPECT_NEAR(cm1[k] / air[k] / buoy, 1.0, 1e-3);
   EXPECT_NEAR(cm15[k] / cm1[k] / f15, 1.0, 1e-3);
   EXPECT_NEAR(cm2[k] / cm1[k] / f2, 1.0, 1e-3);

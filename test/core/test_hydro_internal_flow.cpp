@@ -160,8 +160,8 @@ TEST(HydroInternalFlow, BendGivesAMomentProportionalToUSquaredTimesAngle) {
     for (int i = j; i < model->bodies(); ++i) {  // rotate rfes j.. about A_j
       BodyKinematics& b = kin[i];
       const Vec2 r = b.A - kin[j].A;
-      b.A = kin[j].A + Vec2(std::cos(alpha) * r.x() - std::sin(alpha) * r.y(),
-                            std::sin(alpha) * r.x() + std::cos(alpha) * r.y());
+      b.A = kin[j].A +
+            Vec2(std::cos(alpha) * r.x() - std::sin(alpha) * r.y(), std::sin(alpha) * r.x() + std::cos(alpha) * r.y());
       b.phi += alpha;
       b.c = std::cos(b.phi);
       b.s = std::sin(b.phi);
@@ -192,9 +192,8 @@ TEST(HydroInternalFlow, BendGivesAMomentProportionalToUSquaredTimesAngle) {
 // (potential −T3) and the power of the accelerating flow, −∂L/∂t.
 TEST(HydroInternalFlow, EnergyBalanceHoldsWithConstantAndAcceleratingFlow) {
   for (double ud : {0.0, 1.0}) {
-    Scene s = parseScene(YAML::Load(sceneYaml(10.0, ud, 10) +
-                                    "initial: {type: displaced, end_dx: -12}\n"
-                                    "solver: {dt: 2e-4}\n"));
+    Scene s = parseScene(YAML::Load(sceneYaml(10.0, ud, 10) + "initial: {type: displaced, end_dx: -12}\n"
+                                                              "solver: {dt: 2e-4}\n"));
     auto sim = buildSimulator(s);
     double worst = 0.0;
     for (int k = 1; k <= 10; ++k) {

@@ -28,8 +28,11 @@ Scene pipeScene(const std::string& line_extra, const std::string& extra,
                 const std::string& env = "{water: {density: 1025, surface: 0}}") {
   const std::string yaml =
       "line: {length: 100, outer_diameter: 0.3, inner_diameter: 0.26, youngs_modulus: 2.07e11,"
-      " density: 7850, " + line_extra + "}\n"
-      "environment: " + env + "\n" + extra;
+      " density: 7850, " +
+      line_extra +
+      "}\n"
+      "environment: " +
+      env + "\n" + extra;
   return parseScene(YAML::Load(yaml));
 }
 
@@ -41,10 +44,10 @@ TEST(HydroStatics, VerticalRiserTopTensionIsSubmergedWeight) {
   const double m_s = 500.0, L = 100.0;
   const double expected = (kRhoR * kAwall + kRhoF * kAin - kRhoW * kAout) * kG * L + m_s * kG;
   for (bool extensible : {false, true}) {
-    const Scene s = pipeScene(std::string("elements: 20, end_mass: 500, axial_flexibility: ") +
-                                  (extensible ? "true" : "false"),
-                              "internal_fluid: {density: 840}\n"
-                              "top: {position: [0, -1]}\n");
+    const Scene s =
+        pipeScene(std::string("elements: 20, end_mass: 500, axial_flexibility: ") + (extensible ? "true" : "false"),
+                  "internal_fluid: {density: 840}\n"
+                  "top: {position: [0, -1]}\n");
     auto sim = buildSimulator(s);
     const LineOutputs& o = sim->outputs();
     // Inextensible: exact up to the statics tolerance (1e-9 of the weight). Extensible: the displaced
@@ -101,10 +104,11 @@ TEST(HydroStatics, UniformCurrentGivesTheDragCableShape) {
   const CableResult ref = dragCable(L, w, m_s * kG, k, Vec2(U, 0.0), 20000);
   double prev_err = 0.0;
   for (int n : {20, 40}) {
-    const Scene s = pipeScene("elements: " + std::to_string(n) + ", end_mass: 500, axial_flexibility: false, bending: false",
-                              "hydrodynamics: {drag_normal: 1.0, drag_tangential: 0.0}\n"
-                              "top: {position: [0, -1]}\n",
-                              "{water: {density: 1025, surface: 0}, current: {velocity: [1.5, 0]}}");
+    const Scene s =
+        pipeScene("elements: " + std::to_string(n) + ", end_mass: 500, axial_flexibility: false, bending: false",
+                  "hydrodynamics: {drag_normal: 1.0, drag_tangential: 0.0}\n"
+                  "top: {position: [0, -1]}\n",
+                  "{water: {density: 1025, surface: 0}, current: {velocity: [1.5, 0]}}");
     auto sim = buildSimulator(s);  // the statics include the drag of the current on the line at rest
     const LineOutputs& o = sim->outputs();
     const Vec2 top_from_end = o.points.front() - o.points.back();
@@ -152,11 +156,11 @@ TEST(HydroStatics, LineOnSeabedSinksByWeightPerContactPointOverStiffness) {
   const int n = 20;
   const double d = L / n;
   const Scene s = pipeScene("elements: 20, axial_flexibility: false, bending: false",
-                      "seabed: {level: -80, stiffness_normal: 1.0e6, stiffness_tangential: 1.0e7,"
-                      " damping_normal: 3.0e4, damping_tangential: 3.0e4}\n"
-                      "top: {position: [0, -80]}\n"
-                      "initial: {type: straight, angle: 0}\n"
-                      "solver: {dt: 1e-3}\n");
+                            "seabed: {level: -80, stiffness_normal: 1.0e6, stiffness_tangential: 1.0e7,"
+                            " damping_normal: 3.0e4, damping_tangential: 3.0e4}\n"
+                            "top: {position: [0, -80]}\n"
+                            "initial: {type: straight, angle: 0}\n"
+                            "solver: {dt: 1e-3}\n");
   auto sim = buildSimulator(s);
   ASSERT_TRUE(sim->advanceTo(10.0));  // damping ~0.6 of critical per point: settled in ~1 s
   const LineOutputs& o = sim->outputs();
@@ -183,14 +187,15 @@ TEST(HydroStatics, DisplacedEndHeldStaysReleasedSwings) {
       "solver: {dt: 1e-3}\n";
   double moved[2];
   for (int hold = 0; hold < 2; ++hold) {
-    const Scene s = parseScene(YAML::Load(yaml + "initial: {type: displaced, end_dx: -30, end_force: " +
-                                          (hold ? "hold" : "release") + "}\n"));
+    const Scene s = parseScene(
+        YAML::Load(yaml + "initial: {type: displaced, end_dx: -30, end_force: " + (hold ? "hold" : "release") + "}\n"));
     auto sim = buildSimulator(s);
     EXPECT_EQ(sim->model().findTerm("end_load") != nullptr, hold == 1);
     const AlignedVector<Vec2> p0 = sim->outputs().points;
     ASSERT_TRUE(sim->advanceTo(1.0));
     moved[hold] = 0.0;
-    for (size_t j = 0; j < p0.size(); ++j) moved[hold] = std::max(moved[hold], (sim->outputs().points[j] - p0[j]).norm());
+    for (size_t j = 0; j < p0.size(); ++j)
+      moved[hold] = std::max(moved[hold], (sim->outputs().points[j] - p0[j]).norm());
   }
   std::printf("[hydro_statics] largest point motion in 1 s: released %.3g m, held %.3g m\n", moved[0], moved[1]);
   EXPECT_LT(moved[1], 1e-6);
@@ -224,10 +229,10 @@ TEST(HydroStatics, TermsThatAreOffAreNotBuiltAndChangeNothing) {
   std::vector<std::string> names_ref, names_off;
   const auto ref = trajectory(parseScene(YAML::Load(base)), &names_ref);
   // Drag 0, C_M = 1, no current, internal fluid at rest, a seabed far below the line.
-  const auto off = trajectory(parseScene(YAML::Load(
-                                  base + "hydrodynamics: {drag_normal: 0, drag_tangential: 0, inertia_coefficient: 1}\n"
-                                         "internal_fluid: {density: 0, velocity: 0}\n")),
-                              &names_off);
+  const auto off = trajectory(
+      parseScene(YAML::Load(base + "hydrodynamics: {drag_normal: 0, drag_tangential: 0, inertia_coefficient: 1}\n"
+                                   "internal_fluid: {density: 0, velocity: 0}\n")),
+      &names_off);
   EXPECT_EQ(names_ref, names_off);
   EXPECT_FALSE(has(names_off, "morison_drag"));
   EXPECT_FALSE(has(names_off, "hydro_inertia"));

@@ -25,7 +25,7 @@ namespace {
 constexpr double kDuration = 3.0;  // [s]
 // rk4 reference step [s]: error ~ (h ω_max)^4 ~ 1e-12 relative, far below the implicit runs'.
 constexpr double kRefH = 1e-4;
-constexpr double kH = 0.01;        // [s] coarse step; then kH / 2, / 4, / 8 (order from the last two)
+constexpr double kH = 0.01;  // [s] coarse step; then kH / 2, / 4, / 8 (order from the last two)
 // Bending stiffness [N m²]: soft enough that every mode is resolved at kH (ω_max ~ 15 rad/s, h ω ≤ 0.15),
 // so that no unresolved stiff mode (the steel pipe's bending, 140 rad/s) hides the order.
 constexpr double kEI = 1e5;
@@ -61,22 +61,27 @@ std::vector<TermCase> termCases() {
       {"springs + gravity (dry)", ""},
       {"buoyancy", "environment:\n" + water},
       {"drag 1.2 + current 0.5 m/s",
-       "environment:\n" + water + "  current: {velocity: [0.5, 0]}\n"
-       "hydrodynamics: {drag_normal: 1.2, drag_tangential: 0.1, inertia_coefficient: 1}\n"},
+       "environment:\n" + water +
+           "  current: {velocity: [0.5, 0]}\n"
+           "hydrodynamics: {drag_normal: 1.2, drag_tangential: 0.1, inertia_coefficient: 1}\n"},
       {"added mass C_M 2", "environment:\n" + water + "hydrodynamics: {drag_normal: 0, inertia_coefficient: 2}\n"},
-      {"waves H 3 m, T 6 s",
-       "environment:\n" + water + "  waves: {height: 3, period: 6, depth: 100}\n"
-       "hydrodynamics: {drag_normal: 0.7, inertia_coefficient: 2}\n"},
+      {"waves H 3 m, T 6 s", "environment:\n" + water +
+                                 "  waves: {height: 3, period: 6, depth: 100}\n"
+                                 "hydrodynamics: {drag_normal: 0.7, inertia_coefficient: 2}\n"},
       {"internal flow 10 m/s (paper)", "internal_fluid: {density: 840, velocity: 10}\n"},
       {"pipe flow 10 m/s", "internal_fluid: {density: 840, velocity: 10, model: pipe_flow}\n"},
-      {"all but the seabed",
-       "environment:\n" + water + "  current: {velocity: [0.5, 0]}\n  waves: {height: 3, period: 6, depth: 100}\n"
-       "hydrodynamics: {drag_normal: 1.2, drag_tangential: 0.1, inertia_coefficient: 2}\n"
-       "internal_fluid: {density: 840, velocity: 10}\n"},
+      {"all but the seabed", "environment:\n" + water +
+                                 "  current: {velocity: [0.5, 0]}\n  waves: {height: 3, period: 6, depth: 100}\n"
+                                 "hydrodynamics: {drag_normal: 1.2, drag_tangential: 0.1, inertia_coefficient: 2}\n"
+                                 "internal_fluid: {density: 840, velocity: 10}\n"},
       {"seabed", seabed, false},
-      {"all together", "environment:\n" + water + "  current: {velocity: [0.5, 0]}\n"
-       "hydrodynamics: {drag_normal: 1.2, drag_tangential: 0.1, inertia_coefficient: 2}\n"
-       "internal_fluid: {density: 840, velocity: 10}\n" + seabed, false},
+      {"all together",
+       "environment:\n" + water +
+           "  current: {velocity: [0.5, 0]}\n"
+           "hydrodynamics: {drag_normal: 1.2, drag_tangential: 0.1, inertia_coefficient: 2}\n"
+           "internal_fluid: {density: 840, velocity: 10}\n" +
+           seabed,
+       false},
   };
 }
 

@@ -48,13 +48,9 @@ long countAllocations(const std::string& scene_file, const std::vector<std::stri
   return allocations;
 }
 
-TEST(LineRunNoAlloc, PlanarStepAndOutputs) {
-  EXPECT_EQ(countAllocations("hanging_chain.yaml", {}), 0);
-}
+TEST(LineRunNoAlloc, PlanarStepAndOutputs) { EXPECT_EQ(countAllocations("hanging_chain.yaml", {}), 0); }
 
-TEST(LineRunNoAlloc, SpatialStepAndOutputs) {
-  EXPECT_EQ(countAllocations("spatial_swing.yaml", {}), 0);
-}
+TEST(LineRunNoAlloc, SpatialStepAndOutputs) { EXPECT_EQ(countAllocations("spatial_swing.yaml", {}), 0); }
 
 TEST(LineRunNoAlloc, LiveTopsAndMaterialFrames) {
   EXPECT_EQ(countAllocations("hanging_chain.yaml", {}, true), 0);

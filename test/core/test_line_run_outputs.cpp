@@ -149,8 +149,8 @@ solver: {dt: 0.001}
   const double axes = spatial::bendingAxesEnergy(model, kin, theta, sim.lastEvaluation().twist.frames);
   std::printf("bending energy %.6e J (isotropic %.6e J, axes %.6e J); 1/2 sum kappa.M %.6e J\n", isotropic + axes,
               isotropic, axes, from_moments);
-  ASSERT_GT(isotropic, 1e-3);                    // bent: a real comparison [J]
-  EXPECT_GT(std::abs(axes), 0.01 * isotropic);   // the axes matter here
+  ASSERT_GT(isotropic, 1e-3);                   // bent: a real comparison [J]
+  EXPECT_GT(std::abs(axes), 0.01 * isotropic);  // the axes matter here
   EXPECT_NEAR(from_moments, isotropic + axes, 1e-10 * (isotropic + std::abs(axes)));
 }
 
@@ -181,8 +181,8 @@ TEST(LineFrames, AlongTheLineNeverSingularAndContinuous) {
   const double step = 0.02;
   for (int k = 0; k <= 630; ++k) {
     const double a = k * step;
-    const Vec3 e0 = k <= 315 ? Vec3(std::sin(a), 0, -std::cos(a))
-                             : Vec3(std::sin(a), std::sin(a) * 0.3, -std::cos(a)).normalized();
+    const Vec3 e0 =
+        k <= 315 ? Vec3(std::sin(a), 0, -std::cos(a)) : Vec3(std::sin(a), std::sin(a) * 0.3, -std::cos(a)).normalized();
     check({Vec3::Zero(), e0, e0 + Vec3(0, 0, -1), e0 + Vec3(0.2, 0.3, -2)}, f, q);
     if (!prev.empty())
       for (size_t i = 0; i < q.size(); ++i) EXPECT_LT(q[i].angularDistance(prev[i]), 3.0 * step) << k << " " << i;

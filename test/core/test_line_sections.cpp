@@ -68,7 +68,7 @@ Vec2 shootEnd(const std::vector<LineSection>& secs, const Vec2& F) {
     for (int p = 0; p < m; ++p)
       for (int q = 0; q < 5; ++q) {
         const double s = (p + 0.5) * h + 0.5 * h * xg[q];  // from the section's top
-        const Vec2 Tt(-F.x(), W0 + w * s - F.y());       // T τ
+        const Vec2 Tt(-F.x(), W0 + w * s - F.y());         // T τ
         const double T = Tt.norm();
         r += 0.5 * h * wg[q] * (Tt / T) * (1.0 + T / sec.props.EA);
       }
@@ -200,7 +200,8 @@ TEST(LineSections, EqualSectionsAreTheUniformLine) {
   ASSERT_FALSE(checkScene(sec));
   const auto mu = buildModel(uni), ms = buildModel(sec);
   const StaticsResult ru = solveStatics(*mu, staticsProblem(uni)), rs = solveStatics(*ms, staticsProblem(sec));
-  ASSERT_TRUE(ru.converged && rs.converged) << ru.message << " | " << rs.message << " " << ru.converged << rs.converged << " " << ru.residual << " " << rs.residual;
+  ASSERT_TRUE(ru.converged && rs.converged) << ru.message << " | " << rs.message << " " << ru.converged << rs.converged
+                                            << " " << ru.residual << " " << rs.residual;
   const double W = mu->totalMass() * kG;
   EXPECT_LT((ru.end_force - rs.end_force).norm() / W, 1e-12);
   double dp = 0.0;
@@ -274,7 +275,8 @@ TEST(LineSections, TermsPowerIdentityWithUnequalSections) {
       VecX Q = VecX::Zero(nq);
       term->addForces(*model, nullptr, kin, t, Q);
       const double qv = Q.dot(y.tail(nq));
-      const double dv = (term->potentialEnergyAt(*model, nullptr, kp, t) - term->potentialEnergyAt(*model, nullptr, km, t)) / (2 * h);
+      const double dv =
+          (term->potentialEnergyAt(*model, nullptr, kp, t) - term->potentialEnergyAt(*model, nullptr, km, t)) / (2 * h);
       const double p = term->power(*model, nullptr, kin, t);
       // Central differences: truncation h² V''' and round-off 1e-16 |V| / h, below 1e-6 of the scale (as
       // test_term_power).
@@ -316,14 +318,19 @@ TEST(LineSections, BadInputIsRefusedNamingTheKey) {
   const Scene s = loadSceneText(scene(ok), "test", {});
   EXPECT_EQ(s.elements, 9);
   EXPECT_DOUBLE_EQ(s.length, 80.0);
-  EXPECT_EQ(loaderKey(scene("sections: [{length: 50, elements: 5}, {length: 0, elements: 3}]")), "line.sections[1].length");
-  EXPECT_EQ(loaderKey(scene("sections: [{length: 50, elements: 5}, {length: 5, elements: 1}, {length: 5, elements: 1, EA: -1}]")),
+  EXPECT_EQ(loaderKey(scene("sections: [{length: 50, elements: 5}, {length: 0, elements: 3}]")),
+            "line.sections[1].length");
+  EXPECT_EQ(loaderKey(scene(
+                "sections: [{length: 50, elements: 5}, {length: 5, elements: 1}, {length: 5, elements: 1, EA: -1}]")),
             "line.sections[2].EA");
-  EXPECT_EQ(loaderKey(scene("length: 90\n  sections: [{length: 50, elements: 5}, {length: 30, elements: 3}]")), "line.length");
-  EXPECT_EQ(loaderKey(scene("elements: 7\n  sections: [{length: 50, elements: 5}, {length: 30, elements: 3}]")), "line.elements");
+  EXPECT_EQ(loaderKey(scene("length: 90\n  sections: [{length: 50, elements: 5}, {length: 30, elements: 3}]")),
+            "line.length");
+  EXPECT_EQ(loaderKey(scene("elements: 7\n  sections: [{length: 50, elements: 5}, {length: 30, elements: 3}]")),
+            "line.elements");
   EXPECT_EQ(loaderKey(scene("sections: [{length: 50, elements: 5, EI: [1, 2]}]")), "line.sections[0].EI");
   EXPECT_EQ(loaderKey(scene("sections: [{length: 50, elements: 5, colour: red}]")), "line.sections[0].colour");
-  EXPECT_EQ(loaderKey(scene("sections: [{length: 50, elements: 5, inner_diameter: 0.3}]")), "line.sections[0].inner_diameter");
+  EXPECT_EQ(loaderKey(scene("sections: [{length: 50, elements: 5, inner_diameter: 0.3}]")),
+            "line.sections[0].inner_diameter");
   EXPECT_EQ(loaderKey(scene("sections: [{length: 50, elements: 5, buoyancy_modules: {outer_diameter: 1.0, length: 2.0, "
                             "pitch: 1.5, mass: 100, volume: 0.5, drag_normal: 1.0}}]")),
             "line.sections[0].buoyancy_modules.pitch");
@@ -333,12 +340,15 @@ TEST(LineSections, BadInputIsRefusedNamingTheKey) {
   EXPECT_EQ(loaderKey(scene("sections: [{length: 5, elements: 1}, {length: 50, elements: 5}]\n  bend_stiffener: "
                             "{length: 6, root_diameter: 0.5, tip_diameter: 0.3, youngs_modulus: 1.0e8}")),
             "line.bend_stiffener.length");
-  EXPECT_EQ(loaderKey(scene("length: 50\n  elements: 5\n  bend_stiffener: {length: 3, root_diameter: 0.5, tip_diameter: 0.1, "
-                            "youngs_modulus: 1.0e8}")),
-            "line.bend_stiffener.tip_diameter");
-  EXPECT_EQ(loaderKey(scene("length: 50\n  elements: 5\n  bend_stiffener: {end: bottom, length: 3, table: [[0, 1e5], [2, 1e4]]}")),
+  EXPECT_EQ(
+      loaderKey(scene("length: 50\n  elements: 5\n  bend_stiffener: {length: 3, root_diameter: 0.5, tip_diameter: 0.1, "
+                      "youngs_modulus: 1.0e8}")),
+      "line.bend_stiffener.tip_diameter");
+  EXPECT_EQ(loaderKey(scene(
+                "length: 50\n  elements: 5\n  bend_stiffener: {end: bottom, length: 3, table: [[0, 1e5], [2, 1e4]]}")),
             "line.bend_stiffener.table[1][0]");
-  EXPECT_EQ(loaderKey(scene("length: 50\n  elements: 5\n  bend_stiffener: {length: 3, table: [[0, 1e5], [3, 1e4]]}")), "");
+  EXPECT_EQ(loaderKey(scene("length: 50\n  elements: 5\n  bend_stiffener: {length: 3, table: [[0, 1e5], [3, 1e4]]}")),
+            "");
 }
 
 }  // namespace

@@ -160,7 +160,7 @@ TEST(Modal, AxialModeWithEndMassConvergesAtOrderTwo) {
     st.err.push_back({axial->omega / axialReference(s) - 1.0});
   }
   printStudy("axial end mass", st);
-  expectOrders(st, 1.9, 2.1);  // measured 1.95-1.99
+  expectOrders(st, 1.9, 2.1);                   // measured 1.95-1.99
   EXPECT_LT(std::abs(st.err.back()[0]), 1e-5);  // measured 4.2e-6
 }
 

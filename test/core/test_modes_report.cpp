@@ -51,8 +51,8 @@ TEST(ModesReport, PlanarIsTheModalAnalysisInThreeDimensions) {
     EXPECT_EQ(r.modes[k].axial_share, ref.modes[k].axial_fraction);
     EXPECT_EQ(r.modes[k].status, ModeStatus::kOscillating);
     for (size_t p = 0; p < ref.points.size(); ++p) {
-      EXPECT_EQ(r.modes[k].displacement[p], Eigen::Vector3d(ref.modes[k].displacement[p].x(), 0.0,
-                                                           ref.modes[k].displacement[p].y()));
+      EXPECT_EQ(r.modes[k].displacement[p],
+                Eigen::Vector3d(ref.modes[k].displacement[p].x(), 0.0, ref.modes[k].displacement[p].y()));
     }
   }
   for (size_t p = 0; p < ref.points.size(); ++p)

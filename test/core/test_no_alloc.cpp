@@ -15,9 +15,9 @@
 namespace riser_sim {
 namespace {
 
-constexpr int kWarmupSteps = 3;    // first Jacobian / FSAL / initial-step estimate happen here
-constexpr int kCountedSteps = 40;  // spans several Jacobian refreshes (interval below)
-constexpr double kDt = 1e-3;       // [s] stable for rk4 at n = 10 (limit ~1.9e-3 s)
+constexpr int kWarmupSteps = 3;             // first Jacobian / FSAL / initial-step estimate happen here
+constexpr int kCountedSteps = 40;           // spans several Jacobian refreshes (interval below)
+constexpr double kDt = 1e-3;                // [s] stable for rk4 at n = 10 (limit ~1.9e-3 s)
 constexpr double kJacobianInterval = 0.01;  // [s] refresh 4 times inside the counted steps
 
 struct Case {
@@ -118,13 +118,13 @@ TEST(NoAllocSea, StepWithEverySeaTermDoesNotAllocate) {
     for (const char* integ : {"rk4", "rosenbrock2"}) {
       SCOPED_TRACE(std::string(flow) + " / " + integ);
       const bool implicit = std::string(integ) == "rosenbrock2";
-      Scene s = loadSceneFile(std::string(RISER_SIM_SOURCE_DIR) + "/config/scenes/paper_jlay_170m.yaml",
-                              {"internal_fluid.velocity=5", std::string("internal_fluid.model=") + flow,
-                               "initial.end_force=hold", "environment.current.velocity=[0.5, 0]",
-                               "environment.waves={height: 2, period: 8, depth: 80}",
-                               std::string("solver.integrator=") + integ,
-                               std::string("solver.formulation=") + (implicit ? "recursive" : "absolute"),
-                               "solver.jacobian_interval=0.002"});
+      Scene s = loadSceneFile(
+          std::string(RISER_SIM_SOURCE_DIR) + "/config/scenes/paper_jlay_170m.yaml",
+          {"internal_fluid.velocity=5", std::string("internal_fluid.model=") + flow, "initial.end_force=hold",
+           "environment.current.velocity=[0.5, 0]", "environment.waves={height: 2, period: 8, depth: 80}",
+           std::string("solver.integrator=") + integ,
+           std::string("solver.formulation=") + (implicit ? "recursive" : "absolute"),
+           "solver.jacobian_interval=0.002"});
       auto sim = buildSimulator(s);
       std::vector<std::string> names;
       for (const auto& t : sim->model().terms()) names.push_back(t->name());

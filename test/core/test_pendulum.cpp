@@ -9,9 +9,9 @@
 namespace riser_sim {
 namespace {
 
-constexpr double kLength = 10.0;     // [m] (short: T ≈ 6.5-7.5 s keeps the run cheap)
-constexpr double kEndMass = 100.0;   // [kg]
-constexpr double kLineMass = 1e-4;   // [kg/m]
+constexpr double kLength = 10.0;    // [m] (short: T ≈ 6.5-7.5 s keeps the run cheap)
+constexpr double kEndMass = 100.0;  // [kg]
+constexpr double kLineMass = 1e-4;  // [kg/m]
 // Line-mass fraction ε = μ L / m_s = 1e-5.
 constexpr double kMassFraction = kLineMass * kLength / kEndMass;
 // Reference: the rigid compound pendulum (point mass at L plus a uniform rod, which is exactly the
@@ -26,7 +26,7 @@ constexpr double kPeriodRelTol = kMassFraction;
 // link whipping, the worst case; measured drift 1e-6, constraint error 1.1e-6 m at h = 1e-4 s.
 constexpr double kEnergyDriftTol = 1e-5;
 constexpr double kConstraintTol = 1e-5;  // [m] = 1e-6 L
-constexpr double kDt = 1e-4;  // [s]; h = 5e-4 diverges at 90° (stiff light links when the tension rises)
+constexpr double kDt = 1e-4;             // [s]; h = 5e-4 diverges at 90° (stiff light links when the tension rises)
 
 struct Swing {
   double period = 0.0, reference = 0.0, drift = 0.0, cerr = 0.0;

@@ -22,7 +22,6 @@ namespace {
 
 const std::string kScene = std::string(RISER_SIM_SOURCE_DIR) + "/config/scenes/hanging_chain.yaml";
 
-
 struct Setting {
   IntegratorKind integrator;
   FormulationKind formulation;
@@ -32,8 +31,8 @@ struct Setting {
 
 std::string label(const Setting& s) {
   char buf[120];
-  std::snprintf(buf, sizeof(buf), "%s / %s / %s / dt %g", name(s.integrator), name(s.formulation),
-                name(s.jacobian), s.dt);
+  std::snprintf(buf, sizeof(buf), "%s / %s / %s / dt %g", name(s.integrator), name(s.formulation), name(s.jacobian),
+                s.dt);
   return buf;
 }
 
@@ -42,8 +41,8 @@ std::string label(const Setting& s) {
 // the stiffest axial mode, 1215 rad/s): the jump of the top's acceleration at t = 0 rings that mode, and
 // undamped it held midpoint's error at ~2e-5 m whatever h (order 1.1-1.6 between h = 2.5e-4 and 2e-3 s).
 Scene pinnedScene(const Setting& s, bool moving) {
-  Scene sc = loadSceneFile(kScene, {"bottom.type=pinned", "bottom.position=[6, -6]", "initial.type=between_points",
-                                    "line.end_mass=0"});
+  Scene sc = loadSceneFile(
+      kScene, {"bottom.type=pinned", "bottom.position=[6, -6]", "initial.type=between_points", "line.end_mass=0"});
   sc.solver.integrator = s.integrator;
   sc.solver.formulation = s.formulation;
   sc.solver.jacobian = s.jacobian;
@@ -62,7 +61,9 @@ Scene pinnedScene(const Setting& s, bool moving) {
 }
 
 // absolute has no structured solve: refused at setup, naming the keys.
-bool refused(const Setting& s) { return s.formulation == FormulationKind::kAbsolute && s.jacobian == JacobianKind::kStructured; }
+bool refused(const Setting& s) {
+  return s.formulation == FormulationKind::kAbsolute && s.jacobian == JacobianKind::kStructured;
+}
 
 void expectRefused(const Setting& s, bool moving) {
   try {
@@ -83,9 +84,9 @@ double pointsDiff(const AlignedVector<Vec2>& a, const AlignedVector<Vec2>& b) {
 }
 
 double dtFor(IntegratorKind integrator, bool large) {
-  if (integrator == IntegratorKind::kRk4) return 1e-3;  // 0.57x its stability limit (1.75e-3 s, n = 8)
+  if (integrator == IntegratorKind::kRk4) return 1e-3;     // 0.57x its stability limit (1.75e-3 s, n = 8)
   if (integrator == IntegratorKind::kDopri5) return 1e-2;  // output step only
-  return large ? 2e-2 : 1e-3;  // implicit: the reproducer's step and 11x rk4's limit
+  return large ? 2e-2 : 1e-3;                              // implicit: the reproducer's step and 11x rk4's limit
 }
 
 std::vector<Setting> settings(bool both_steps) {
@@ -153,7 +154,7 @@ struct Bound {
 Bound boundFor(const Setting& s) {
   if (s.integrator == IntegratorKind::kRk4) return {1e-7, 1e-8};
   if (s.integrator == IntegratorKind::kDopri5) return {1e-9, 1e-10};
-  const double k = s.integrator == IntegratorKind::kMidpoint          ? kMidpointK
+  const double k = s.integrator == IntegratorKind::kMidpoint           ? kMidpointK
                    : s.integrator == IntegratorKind::kGeneralizedAlpha ? kAlphaK
                                                                        : kRosenbrockK;
   return {k * s.dt * s.dt, 0.1 * k * s.dt * s.dt};
@@ -193,7 +194,8 @@ Result runMoving(Setting s, const Trajectory& ref) {
 }
 
 TEST(PinnedImplicit, MovingTopAgreesWithReference) {
-  Scene ref_scene = pinnedScene({IntegratorKind::kDopri5, FormulationKind::kRecursive, JacobianKind::kAuto, 0.01}, true);
+  Scene ref_scene =
+      pinnedScene({IntegratorKind::kDopri5, FormulationKind::kRecursive, JacobianKind::kAuto, 0.01}, true);
   ref_scene.solver.tolerance = 1e-13;
   auto ref = buildSimulator(ref_scene);
   Trajectory ref_points;
@@ -227,9 +229,9 @@ TEST(PinnedImplicit, MovingTopAgreesWithReference) {
 // initial.type=between_points --set line.end_mass=0 --set solver.formulation=recursive --set
 // solver.integrator=midpoint --set solver.dt=1e-3 --duration 5) stopped on the joint gap at t = 0.42 s.
 TEST(PinnedImplicit, ReproducerRunsFiveSeconds) {
-  const Scene sc = loadSceneFile(kScene, {"bottom.type=pinned", "bottom.position=[6,-6]", "initial.type=between_points",
-                                          "line.end_mass=0", "solver.formulation=recursive",
-                                          "solver.integrator=midpoint", "solver.dt=1e-3"});
+  const Scene sc = loadSceneFile(
+      kScene, {"bottom.type=pinned", "bottom.position=[6,-6]", "initial.type=between_points", "line.end_mass=0",
+               "solver.formulation=recursive", "solver.integrator=midpoint", "solver.dt=1e-3"});
   auto sim = buildSimulator(sc);
   const AlignedVector<Vec2> start = sim->outputs().points;
   EXPECT_TRUE(sim->advanceTo(5.0)) << sim->divergenceReason();

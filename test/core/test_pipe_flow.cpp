@@ -11,11 +11,13 @@ using namespace riser_sim;
 
 namespace {
 Scene pipeScene(const std::string& model) {
-  return parseScene(YAML::Load(
-      "line: {length: 40, elements: 8, outer_diameter: 0.3, inner_diameter: 0.26, youngs_modulus: 2.07e11,"
-      " density: 7850}\n"
-      "internal_fluid: {density: 840, velocity: 10, model: " + model + "}\n"
-      "initial: {type: displaced, end_dx: -20}\nsolver: {dt: 2.0e-4}\n"));
+  return parseScene(
+      YAML::Load("line: {length: 40, elements: 8, outer_diameter: 0.3, inner_diameter: 0.26, youngs_modulus: 2.07e11,"
+                 " density: 7850}\n"
+                 "internal_fluid: {density: 840, velocity: 10, model: " +
+                 model +
+                 "}\n"
+                 "initial: {type: displaced, end_dx: -20}\nsolver: {dt: 2.0e-4}\n"));
 }
 const double kRound = 1e-9;  // relative round-off bound on sums of O(10) forces
 }  // namespace

@@ -55,33 +55,48 @@ struct Variant {
 TEST(SceneCheck, TheLoaderAndCheckSceneAgreeOnVariants) {
   const std::vector<Variant> variants = {
       // 3D: what the planar limits would refuse, the 3D engine runs.
-      {"spatial_swing.yaml", {"solver.jacobian=structured"},
-       [](Scene& s) { s.solver.jacobian = JacobianKind::kStructured; }, ""},
-      {"spatial_swing.yaml", {"line.elements=600", "solver.integrator=midpoint"},
-       [](Scene& s) { s.elements = 600, s.solver.integrator = IntegratorKind::kMidpoint; }, ""},
+      {"spatial_swing.yaml",
+       {"solver.jacobian=structured"},
+       [](Scene& s) { s.solver.jacobian = JacobianKind::kStructured; },
+       ""},
+      {"spatial_swing.yaml",
+       {"line.elements=600", "solver.integrator=midpoint"},
+       [](Scene& s) { s.elements = 600, s.solver.integrator = IntegratorKind::kMidpoint; },
+       ""},
       // 3D: what the 3D engine refuses.
-      {"spatial_swing.yaml", {"solver.formulation=recursive"},
-       [](Scene& s) { s.solver.formulation = FormulationKind::kRecursive; }, "solver.formulation"},
-      {"spatial_swing.yaml", {"line.elements=600", "solver.integrator=midpoint", "solver.jacobian=dense"},
+      {"spatial_swing.yaml",
+       {"solver.formulation=recursive"},
+       [](Scene& s) { s.solver.formulation = FormulationKind::kRecursive; },
+       "solver.formulation"},
+      {"spatial_swing.yaml",
+       {"line.elements=600", "solver.integrator=midpoint", "solver.jacobian=dense"},
        [](Scene& s) {
          s.elements = 600, s.solver.integrator = IntegratorKind::kMidpoint, s.solver.jacobian = JacobianKind::kDense;
        },
        "line.elements"},
-      {"spatial_sea_riser.yaml", {"seabed.stiffness_tangential=1000"},
-       [](Scene& s) { s.seabed.stiffness_tangential = 1000.0; }, "seabed.stiffness_tangential"},
+      {"spatial_sea_riser.yaml",
+       {"seabed.stiffness_tangential=1000"},
+       [](Scene& s) { s.seabed.stiffness_tangential = 1000.0; },
+       "seabed.stiffness_tangential"},
       // Planar: what the planar engine refuses.
-      {"demo_riser.yaml", {"solver.jacobian=structured"},
-       [](Scene& s) { s.solver.jacobian = JacobianKind::kStructured; }, "solver.jacobian"},
-      {"demo_riser.yaml", {"line.elements=600", "solver.integrator=midpoint"},
-       [](Scene& s) { s.elements = 600, s.solver.integrator = IntegratorKind::kMidpoint; }, "line.elements"},
+      {"demo_riser.yaml",
+       {"solver.jacobian=structured"},
+       [](Scene& s) { s.solver.jacobian = JacobianKind::kStructured; },
+       "solver.jacobian"},
+      {"demo_riser.yaml",
+       {"line.elements=600", "solver.integrator=midpoint"},
+       [](Scene& s) { s.elements = 600, s.solver.integrator = IntegratorKind::kMidpoint; },
+       "line.elements"},
       // Planar: a chain formulation has the structured solves.
-      {"demo_riser.yaml", {"line.elements=600", "solver.integrator=midpoint", "solver.formulation=recursive"},
+      {"demo_riser.yaml",
+       {"line.elements=600", "solver.integrator=midpoint", "solver.formulation=recursive"},
        [](Scene& s) {
          s.elements = 600, s.solver.integrator = IntegratorKind::kMidpoint;
          s.solver.formulation = FormulationKind::kRecursive;
        },
        ""},
-      {"paper_table1.yaml", {"solver.jacobian=structured", "solver.formulation=independent"},
+      {"paper_table1.yaml",
+       {"solver.jacobian=structured", "solver.formulation=independent"},
        [](Scene& s) {
          s.solver.jacobian = JacobianKind::kStructured, s.solver.formulation = FormulationKind::kIndependent;
        },
@@ -89,10 +104,14 @@ TEST(SceneCheck, TheLoaderAndCheckSceneAgreeOnVariants) {
       // The solver values, whatever the engine.
       {"demo_riser.yaml", {"solver.rho_inf=2"}, [](Scene& s) { s.solver.rho_inf = 2.0; }, "solver.rho_inf"},
       {"spatial_swing.yaml", {"solver.rho_inf=2"}, [](Scene& s) { s.solver.rho_inf = 2.0; }, "solver.rho_inf"},
-      {"demo_riser.yaml", {"solver.newton_tolerance=0.1"}, [](Scene& s) { s.solver.newton_tolerance = 0.1; },
+      {"demo_riser.yaml",
+       {"solver.newton_tolerance=0.1"},
+       [](Scene& s) { s.solver.newton_tolerance = 0.1; },
        "solver.newton_tolerance"},
-      {"spatial_flat_umbilical.yaml", {"solver.newton_tolerance=0.1"},
-       [](Scene& s) { s.solver.newton_tolerance = 0.1; }, "solver.newton_tolerance"},
+      {"spatial_flat_umbilical.yaml",
+       {"solver.newton_tolerance=0.1"},
+       [](Scene& s) { s.solver.newton_tolerance = 0.1; },
+       "solver.newton_tolerance"},
   };
   for (const Variant& v : variants) {
     std::string what = v.scene;

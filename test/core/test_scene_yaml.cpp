@@ -40,21 +40,23 @@ struct BadScene {
 const BadScene kBadScenes[] = {
     // unknown keys, anywhere, with the full path
     {"{line: {lenght: 100, elements: 10, EA: 1e6, EI: 0, mass_per_length: 1}}", "line.lenght", "did you mean 'length'"},
-    {"{line: {length: 1, elements: 1, EA: 1, EI: 0, mass_per_length: 1}, solver: {dtt: 1}}", "solver.dtt", "unknown key"},
+    {"{line: {length: 1, elements: 1, EA: 1, EI: 0, mass_per_length: 1}, solver: {dtt: 1}}", "solver.dtt",
+     "unknown key"},
     {"{line: {length: 1, elements: 1, EA: 1, EI: 0, mass_per_length: 1}, top: {motion: {kind: fixed}}}",
      "top.motion.kind", "unknown key (accepted: type, amplitude, period, phase, knots, attitude, attitude_phase)"},
     {"{line: {length: 1, elements: 1, EA: 1, EI: 0, mass_per_length: 1}, wind: {speed: 3}}", "wind", "unknown key"},
     // wrong types
     {"{line: {length: 100, elements: ten, EA: 1e6, EI: 0, mass_per_length: 1}}", "line.elements",
      "expected an integer, got 'ten'"},
-    {"{line: {length: 100, elements: 2.5, EA: 1e6, EI: 0, mass_per_length: 1}}", "line.elements", "expected an integer"},
+    {"{line: {length: 100, elements: 2.5, EA: 1e6, EI: 0, mass_per_length: 1}}", "line.elements",
+     "expected an integer"},
     {"{line: {length: abc, elements: 10, EA: 1e6, EI: 0, mass_per_length: 1}}", "line.length",
      "expected a number, got 'abc'"},
     {"{line: {length: [1, 2], elements: 10, EA: 1e6, EI: 0, mass_per_length: 1}}", "line.length", "got a list"},
     {"{line: {length: 1, elements: 1, EA: 1, EI: 0, mass_per_length: 1, bending: maybe}}", "line.bending",
      "expected true or false"},
-    {"{line: {length: 1, elements: 1, EA: 1, EI: 0, mass_per_length: 1}, top: {position: [1, 2, 3, 4]}}", "top.position",
-     "expected [x, z] (planar: x horizontal, z up) or [x, y, z] (z up), got a list of 4 items"},
+    {"{line: {length: 1, elements: 1, EA: 1, EI: 0, mass_per_length: 1}, top: {position: [1, 2, 3, 4]}}",
+     "top.position", "expected [x, z] (planar: x horizontal, z up) or [x, y, z] (z up), got a list of 4 items"},
     {"{line: {length: 1, elements: 1, EA: 1, EI: 0, mass_per_length: 1}, top: {position: [1, 2, 3]}}",
      "top.position[1]", "y = 2 points out of the vertical x-z plane of a planar scene"},
     {"{line: {length: 1, elements: 1, EA: 1, EI: 0, mass_per_length: 1}, top: {position: [1, x]}}", "top.position[1]",
@@ -76,7 +78,8 @@ const BadScene kBadScenes[] = {
     {"{line: {length: 1, elements: 1, EA: -1, EI: 0, mass_per_length: 1}}", "line.EA", "must be > 0"},
     {"{line: {length: 1, elements: 1, EA: 1, EI: -1, mass_per_length: 1}}", "line.EI", "must be >= 0"},
     {"{line: {length: 1, elements: 1, EA: 1, EI: 0, mass_per_length: -2}}", "line.mass_per_length", "must be > 0"},
-    {"{line: {length: 1, elements: 1, EA: 1, EI: 0, mass_per_length: 1, end_mass: -1}}", "line.end_mass", "must be >= 0"},
+    {"{line: {length: 1, elements: 1, EA: 1, EI: 0, mass_per_length: 1, end_mass: -1}}", "line.end_mass",
+     "must be >= 0"},
     {"{line: {length: 1, elements: 1, EA: 1, EI: 0, mass_per_length: 1, axial_damping: -1}}", "line.axial_damping",
      "must be >= 0"},
     {"{line: {length: 1, elements: 1, EA: 1, EI: 0, mass_per_length: 1}, solver: {dt: 0}}", "solver.dt", "must be > 0"},
@@ -88,10 +91,11 @@ const BadScene kBadScenes[] = {
      "must be > 0"},
     {"{line: {length: 1, elements: 1, EA: 1, EI: 0, mass_per_length: 1}, environment: {gravity: -9.81}}",
      "environment.gravity", "must be >= 0"},
-    {"{line: {length: 1, elements: 1, EA: 1, EI: 0, mass_per_length: 1}, initial: {tolerance: 0}}",
-     "initial.tolerance", "must be > 0"},
+    {"{line: {length: 1, elements: 1, EA: 1, EI: 0, mass_per_length: 1}, initial: {tolerance: 0}}", "initial.tolerance",
+     "must be > 0"},
     // NaN / Inf
-    {"{line: {length: .nan, elements: 10, EA: 1e6, EI: 0, mass_per_length: 1}}", "line.length", "must be a finite number"},
+    {"{line: {length: .nan, elements: 10, EA: 1e6, EI: 0, mass_per_length: 1}}", "line.length",
+     "must be a finite number"},
     {"{line: {length: 10, elements: 10, EA: .inf, EI: 0, mass_per_length: 1}}", "line.EA", "must be a finite number"},
     {"{line: {length: 1, elements: 1, EA: 1, EI: 0, mass_per_length: 1}, solver: {dt: -.inf}}", "solver.dt",
      "must be a finite number"},
@@ -128,8 +132,8 @@ const BadScene kBadScenes[] = {
      "solver.integrator", "unknown value 'euler' (accepted: rk4, dopri5, rosenbrock2, midpoint, generalized_alpha)"},
     {"{line: {length: 1, elements: 1, EA: 1, EI: 0, mass_per_length: 1}, solver: {formulation: relative}}",
      "solver.formulation", "(accepted: absolute, independent, recursive)"},
-    {"{line: {length: 1, elements: 1, EA: 1, EI: 0, mass_per_length: 1}, solver: {tolerance: 0}}",
-     "solver.tolerance", "must be > 0"},
+    {"{line: {length: 1, elements: 1, EA: 1, EI: 0, mass_per_length: 1}, solver: {tolerance: 0}}", "solver.tolerance",
+     "must be > 0"},
     {"{line: {length: 1, elements: 1, EA: 1, EI: 0, mass_per_length: 1}, solver: {jacobian_interval: -1}}",
      "solver.jacobian_interval", "must be >= 0"},
     {"{line: {length: 1, elements: 1, EA: 1, EI: 0, mass_per_length: 1}, solver: {rho_inf: 1.5}}", "solver.rho_inf",
@@ -184,7 +188,8 @@ const BadScene kBadScenes[] = {
     {"{line: {length: 1, elements: 1, outer_diameter: 1e-200, youngs_modulus: 1e11, density: 1}}",
      "line.outer_diameter", "leaves a wall area of 0"},
     {"{line: {length: 1, elements: 1, outer_diameter: 1e-155, inner_diameter: 9.999999999999999e-156, "
-     "youngs_modulus: 1e11, density: 1}}", "line.inner_diameter", "leaves a wall area of 0"},  // same square
+     "youngs_modulus: 1e11, density: 1}}",
+     "line.inner_diameter", "leaves a wall area of 0"},  // same square
     {"{line: {length: 1, elements: 1, outer_diameter: 1e-100, youngs_modulus: 1e11, density: 1e-300}}", "line.density",
      "mass per length rounds to 0"},
     {"{line: {length: 1, elements: 1, outer_diameter: 1e-100, youngs_modulus: 1e-300, density: 1}}",
@@ -240,8 +245,9 @@ TEST(SceneYaml, BadScenesNameTheKey) {
 // The largest seed, and waves just below breaking (H/L0 = 0.14 < 1/7), load.
 TEST(SceneYaml, EdgeOfTheSeaLoads) {
   const std::string line = "line: {length: 1, elements: 1, EA: 1, EI: 0, mass_per_length: 1, outer_diameter: 0.1}\n";
-  const Scene a = parse(line + "environment: {water: {density: 1025}, waves: {type: jonswap, significant_height: 2, "
-                               "peak_period: 9, seed: 4294967295}}\n");
+  const Scene a = parse(line +
+                        "environment: {water: {density: 1025}, waves: {type: jonswap, significant_height: 2, "
+                        "peak_period: 9, seed: 4294967295}}\n");
   EXPECT_EQ(a.water.waves.seed, 4294967295u);
   const double L0 = 9.81 * 100.0 / (2.0 * M_PI);  // T = 10 s
   const Scene b = parse(line + "environment: {water: {density: 1025}, waves: {height: " + std::to_string(0.14 * L0) +
@@ -302,7 +308,8 @@ TEST(SceneYaml, GeometryGivesPipeProperties) {
 }
 
 TEST(SceneYaml, DirectPropertiesKeepTheDiameterForHydrodynamics) {
-  const Scene s = parse("{line: {length: 10, elements: 4, EA: 5e8, EI: 2e4, mass_per_length: 30, outer_diameter: 0.2}}");
+  const Scene s =
+      parse("{line: {length: 10, elements: 4, EA: 5e8, EI: 2e4, mass_per_length: 30, outer_diameter: 0.2}}");
   EXPECT_EQ(s.line.EA, 5e8);
   EXPECT_EQ(s.line.EI, 2e4);
   EXPECT_EQ(s.line.mass_per_length, 30.0);
@@ -312,7 +319,8 @@ TEST(SceneYaml, DirectPropertiesKeepTheDiameterForHydrodynamics) {
 
 TEST(SceneYaml, DirectPropertiesNeedOnlyWhatTheModelUses) {
   // Inextensible chain without bending springs: EA and EI are not needed.
-  const Scene s = parse("{line: {length: 10, elements: 4, mass_per_length: 3, bending: false, axial_flexibility: false}}");
+  const Scene s =
+      parse("{line: {length: 10, elements: 4, mass_per_length: 3, bending: false, axial_flexibility: false}}");
   EXPECT_FALSE(s.options.bending);
   EXPECT_FALSE(s.options.axial_flexibility);
   EXPECT_EQ(s.line.EA, 0.0);
@@ -322,8 +330,9 @@ TEST(SceneYaml, DirectPropertiesNeedOnlyWhatTheModelUses) {
 TEST(SceneYaml, MotionsBoundariesAndInitialStates) {
   const std::string line = "line: {length: 10, elements: 4, EA: 1e6, EI: 0, mass_per_length: 1}\n";
   {
-    const Scene s = parse(line + "top: {position: [1, 2], motion: {type: sinusoid, amplitude: [10, 0], period: 27,"
-                                 " phase: 0.5}}");
+    const Scene s = parse(line +
+                          "top: {position: [1, 2], motion: {type: sinusoid, amplitude: [10, 0], period: 27,"
+                          " phase: 0.5}}");
     EXPECT_STREQ(name(s.top.type), "sinusoid");
     EXPECT_EQ(s.top.position, Vec2(1, 2));
     EXPECT_EQ(s.top.amplitude, Vec2(10, 0));
@@ -331,8 +340,9 @@ TEST(SceneYaml, MotionsBoundariesAndInitialStates) {
     EXPECT_EQ(s.top.phase, 0.5);
   }
   {
-    const Scene s = parse(line + "top: {motion: {type: velocity_profile, knots: [[0, [0, 0]], [20, [1.5, 0]], "
-                                 "[40, [0, -0.5]]]}}");
+    const Scene s = parse(line +
+                          "top: {motion: {type: velocity_profile, knots: [[0, [0, 0]], [20, [1.5, 0]], "
+                          "[40, [0, -0.5]]]}}");
     ASSERT_EQ(s.top.knots.size(), 3u);
     EXPECT_EQ(s.top.knots[1].t, 20.0);
     EXPECT_EQ(s.top.knots[1].v, Vec2(1.5, 0));
@@ -368,7 +378,7 @@ TEST(SceneYaml, MotionsBoundariesAndInitialStates) {
 TEST(SceneYaml, OverridesSetAndCreateKeys) {
   YAML::Node root = YAML::Load(kMinimal);
   applyOverride(root, "line.elements=40");
-  applyOverride(root, "top.position=[1,2]");          // creates the "top" section
+  applyOverride(root, "top.position=[1,2]");           // creates the "top" section
   applyOverride(root, " environment.gravity = 3.7 ");  // spaces around are fine
   applyOverride(root, "solver={dt: 2e-4, integrator: rk4}");
   applyOverride(root, "name=my run");
@@ -475,8 +485,9 @@ TEST(SceneYaml, LoadFileSizeLimit) {
       loadSceneFile(path);
       FAIL() << "no SceneError";
     } catch (const SceneError& e) {
-      EXPECT_EQ(std::string(e.what()), "scene file '" + path + "' is larger than 1 MiB (1048576 bytes), the limit "
-                                       "for a scene file");
+      EXPECT_EQ(std::string(e.what()), "scene file '" + path +
+                                           "' is larger than 1 MiB (1048576 bytes), the limit "
+                                           "for a scene file");
     }
   }
   std::filesystem::remove(path);

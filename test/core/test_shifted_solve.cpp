@@ -118,8 +118,10 @@ double compare(const char* name, Scene scene, const std::string& formulation, St
   auto sim = buildSimulator(scene, &st);
   const Model& model = sim->model();
   std::unique_ptr<Formulation> f;
-  if (formulation == "recursive") f = std::make_unique<RecursiveFormulation>(model, scene.solver.stabilization);
-  else f = std::make_unique<IndependentFormulation>(model, scene.solver.stabilization);
+  if (formulation == "recursive")
+    f = std::make_unique<RecursiveFormulation>(model, scene.solver.stabilization);
+  else
+    f = std::make_unique<IndependentFormulation>(model, scene.solver.stabilization);
   EXPECT_TRUE(f->hasShiftedSolve());
   const std::unique_ptr<FormulationData> fd = f->makeData();
   const int p = f->positionSize(), m = 2 * p, n = static_cast<int>(sim->state().size());

@@ -102,8 +102,10 @@ TEST(SpatialAddedMass, BlockAndVelocityTermAgainstTheirDefinition) {
   EXPECT_GT(dry, 0);
   EXPECT_LT(worst_M, 1e-12);
   EXPECT_LT(worst_h, 1e-9);
-  std::printf("[ measured ] added-mass block vs Σ J_cᵀ T J_c: %.1e, velocity term vs differences: %.1e (%d wet, %d dry "
-              "parts)\n", worst_M, worst_h, wet, dry);
+  std::printf(
+      "[ measured ] added-mass block vs Σ J_cᵀ T J_c: %.1e, velocity term vs differences: %.1e (%d wet, %d dry "
+      "parts)\n",
+      worst_M, worst_h, wet, dry);
 }
 
 // The closed-form per-rfe inverse (the mass split along and across e) against the dense 7x7 Cholesky, with the
@@ -138,7 +140,8 @@ TEST(SpatialAddedMass, IndependentFormulationAgrees) {
   for (int i = 0; i < m->bodies(); ++i) dirs.push_back(Vec3(0.4 + 0.05 * i, 0.3 - 0.08 * i, -1.0).normalized());
   const Kinematics3 kin0 = rigidChain(m->line(), Vec3::Zero(), dirs, Vec3::Zero(), Vec3::Zero());
   auto top = [] {
-    return std::make_unique<spatial_test::OscillatingTop>(Vec3(0.5, 0.4, 0.2), Vec3(2 * M_PI / 2.0, 2 * M_PI / 1.3, M_PI));
+    return std::make_unique<spatial_test::OscillatingTop>(Vec3(0.5, 0.4, 0.2),
+                                                          Vec3(2 * M_PI / 2.0, 2 * M_PI / 1.3, M_PI));
   };
   SpatialSimulator nat(m, top(), IntegratorKind::kRk4);
   IndependentSimulator3 ind(m, top(), IntegratorKind::kRk4);
@@ -157,12 +160,14 @@ TEST(SpatialAddedMass, IndependentFormulationAgrees) {
     energy = std::max(energy, std::abs(nat.energy() - ind.energy()));
   }
   // The check sees the added mass: the same run dry ends metres away.
-  auto dry = spatial_test::spatialModel([] {
-    spatial_test::LineSpec s = spatial_test::flexibleLine();
-    s.segments = 8;
-    s.props.outer_diameter = 0.3;
-    return s;
-  }(), Vec3(0.0, 0.0, -9.81));
+  auto dry = spatial_test::spatialModel(
+      [] {
+        spatial_test::LineSpec s = spatial_test::flexibleLine();
+        s.segments = 8;
+        s.props.outer_diameter = 0.3;
+        return s;
+      }(),
+      Vec3(0.0, 0.0, -9.81));
   SpatialSimulator drysim(dry, top(), IntegratorKind::kRk4);
   drysim.reset(kin0, 0.0);
   for (int k = 0; k < 20000; ++k) ASSERT_TRUE(drysim.step(h));
@@ -171,8 +176,10 @@ TEST(SpatialAddedMass, IndependentFormulationAgrees) {
   dry_gap = (pd.back() - pn.back()).norm();
   EXPECT_LT(worst, 1e-9);
   EXPECT_GT(dry_gap, 0.05);
-  std::printf("[ measured ] added mass + Froude-Krylov, independent vs natural: %.2e m, energy %.2e J; the dry run "
-              "ends %.3g m away\n", worst, energy, dry_gap);
+  std::printf(
+      "[ measured ] added mass + Froude-Krylov, independent vs natural: %.2e m, energy %.2e J; the dry run "
+      "ends %.3g m away\n",
+      worst, energy, dry_gap);
 }
 
 // Small oscillations of a line hanging fully under still water (added mass only, no end mass), against the dry
@@ -181,8 +188,8 @@ TEST(SpatialAddedMass, IndependentFormulationAgrees) {
 //   proportional to the part's length, and the stiffness is the dry one (the added mass has no force): ω scales
 //   by sqrt(μ/(μ + C_a,t ρ A)) exactly (bound 1e-9, the eigen-solve's round-off);
 // - transverse modes: degenerate pairs at the planar modes with C_M, the axial ones at the planar ones with C_a,t
-//   (bound 1e-9 as the dry pairs, test_spatial_modal), and near the continuum's sqrt(μ/(μ + C_a,n ρ A)) (bound 1 %: the lumped added mass has
-//   no rotary inertia, the structure's parts do).
+//   (bound 1e-9 as the dry pairs, test_spatial_modal), and near the continuum's sqrt(μ/(μ + C_a,n ρ A)) (bound 1 %: the
+//   lumped added mass has no rotary inertia, the structure's parts do).
 TEST(SpatialAddedMass, ModesUnderWater) {
   spatial_test::LineSpec s = spatial_test::flexibleLine();
   s.segments = 10;
@@ -195,7 +202,8 @@ TEST(SpatialAddedMass, ModesUnderWater) {
   auto wet = spatial_test::spatialModel(s, Vec3(0.0, 0.0, -s.g));
   wet->addTerm(std::make_unique<AddedMassTerm>(Water3(still, wet->gravity()), kCaNormal, kCaAxial));
   const std::vector<Vec3> down(dry->bodies(), Vec3(0.0, 0.0, -1.0));
-  const Kinematics3 eq = spatialEquilibrium(*dry, rigidChain(dry->line(), Vec3::Zero(), down, Vec3::Zero(), Vec3::Zero()));
+  const Kinematics3 eq =
+      spatialEquilibrium(*dry, rigidChain(dry->line(), Vec3::Zero(), down, Vec3::Zero(), Vec3::Zero()));
   const SpatialModalResult rd = computeSpatialModes(*dry, eq), rw = computeSpatialModes(*wet, eq);
   const double mu = s.props.mass_per_length, rhoA = still.density * M_PI * 0.25 * 0.3 * 0.3;
   std::vector<double> ad, aw, tw, td;
@@ -216,8 +224,10 @@ TEST(SpatialAddedMass, ModesUnderWater) {
   o.modes = 2 * m2->bodies();
   std::vector<double> t2, a2;
   for (const auto& m : computeModes(*m2, kin2, Vec2::Zero(), o).modes) {
-    if (m.character == "axial") a2.push_back(m.omega);
-    else t2.push_back(m.omega), t2.push_back(m.omega);
+    if (m.character == "axial")
+      a2.push_back(m.omega);
+    else
+      t2.push_back(m.omega), t2.push_back(m.omega);
   }
   std::sort(t2.begin(), t2.end());
   ASSERT_EQ(t2.size(), tw.size());
@@ -228,9 +238,10 @@ TEST(SpatialAddedMass, ModesUnderWater) {
   EXPECT_LT(pairs, 1e-9);
   const double lowest = tw[0] / td[0] / std::sqrt(mu / (mu + kCaNormal * rhoA)) - 1.0;
   EXPECT_LT(std::abs(lowest), 0.01);
-  std::printf("[ measured ] modes under water: axial ω ratio vs sqrt(μ/(μ + C_a,t ρA)) %.1e; transverse (pairs) "
-              "and axial vs planar %.1e; lowest transverse ratio vs the continuum's %.2e (ω %.4f wet, %.4f dry rad/s)\n", axial,
-              pairs, lowest, tw[0], td[0]);
+  std::printf(
+      "[ measured ] modes under water: axial ω ratio vs sqrt(μ/(μ + C_a,t ρA)) %.1e; transverse (pairs) "
+      "and axial vs planar %.1e; lowest transverse ratio vs the continuum's %.2e (ω %.4f wet, %.4f dry rad/s)\n",
+      axial, pairs, lowest, tw[0], td[0]);
 }
 
 // The 60 m sea line (spatial_sea_scenes.h) with the hydrodynamic inertia across (C_M = 2) and along it
@@ -257,8 +268,8 @@ TEST(SpatialAddedMass, YawedPlanarSeaMatchesThePlanarCore) {
     Kinematics kin2(planar.model->bodies());
     planar.sim->kinematics(kin2);
     if (r == 1) {  // the same planar run without the hydrodynamic inertia ends visibly elsewhere
-      riser_sim::Run bare = buildRun(inertiaScene(sea2, {"solver.dt=0.001", "hydrodynamics.inertia_coefficient=1",
-                                                           "hydrodynamics.axial_added_mass=0"}));
+      riser_sim::Run bare = buildRun(inertiaScene(
+          sea2, {"solver.dt=0.001", "hydrodynamics.inertia_coefficient=1", "hydrodynamics.axial_added_mass=0"}));
       for (long k = 0; k < steps; ++k) ASSERT_TRUE(bare.sim->step());
       Kinematics kb(bare.model->bodies());
       bare.sim->kinematics(kb);
@@ -268,12 +279,14 @@ TEST(SpatialAddedMass, YawedPlanarSeaMatchesThePlanarCore) {
   EXPECT_LE(worst[1], 1e-9);
   EXPECT_GT(worst[0] / worst[1], 8.0);
   EXPECT_GT(dry_gap, 1e-3);
-  std::printf("[ measured ] planar sea with added mass yawed %g deg through 3D vs the planar core, 4 s: %.2e m (h = 2e-3 "
-              "s), %.2e m (1e-3 s); C_M = 1, C_a,t = 0 moves the end by %.3g m\n", psi, worst[0], worst[1], dry_gap);
+  std::printf(
+      "[ measured ] planar sea with added mass yawed %g deg through 3D vs the planar core, 4 s: %.2e m (h = 2e-3 "
+      "s), %.2e m (1e-3 s); C_M = 1, C_a,t = 0 moves the end by %.3g m\n",
+      psi, worst[0], worst[1], dry_gap);
 }
 
-// Fully submerged (the top 5 m down), waves towards 60 deg across the current's plane and the top circling: E - E0 - W with the
-// added mass's kinetic energy in E and its power (T turning with e) and the Froude-Krylov power in W stays at
+// Fully submerged (the top 5 m down), waves towards 60 deg across the current's plane and the top circling: E - E0 - W
+// with the added mass's kinetic energy in E and its power (T turning with e) and the Froude-Krylov power in W stays at
 // rk4's truncation level (16x per halving; bound 1e-6 of m g L as the dry sea's).
 TEST(SpatialAddedMass, EnergyBalanceOutOfPlane) {
   const std::string sea = R"(space: spatial

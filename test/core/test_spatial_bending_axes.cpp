@@ -91,7 +91,8 @@ TEST(SpatialBendingAxes, ForcesAreTheGradientOfTheEnergy) {
       q[i] -= eps;
       worst = std::max(worst, std::abs(-(V(t.kin, p) - V(t.kin, q)) / (2 * eps) - moment[i]));
       const Vec3 e = t.kin[i].e, n = e.normalized();
-      const Vec3 expect = Q.segment<3>(kDofPerBody3 * i + kE) + moment[i] * spinConnection(t.data.frames.centre[i], n) / e.norm();
+      const Vec3 expect =
+          Q.segment<3>(kDofPerBody3 * i + kE) + moment[i] * spinConnection(t.data.frames.centre[i], n) / e.norm();
       for (int k = 0; k < 3; ++k) {  // every direction: the part along e must vanish (V is degree 0 in |e|)
         Kinematics3 kp = t.kin, kq = t.kin;
         kp[i].e[k] += eps;
@@ -123,10 +124,11 @@ TEST(SpatialBendingAxes, PrincipalBendsCostTheirAxisStiffness) {
     return 0.5 * m->bendingStiffness(1) * theta * theta + bendingAxesEnergy(*m, kin, th, data.frames);
   };
   const double v1 = 0.5 * kEI1 / d * theta * theta, v2 = 0.5 * kEI2 / d * theta * theta, vm = 0.5 * (v1 + v2);
-  std::printf("[bending axes] bend 0.3 rad about axis 1: %.12g J (EI_1: %.12g), axis 2: %.12g (EI_2: %.12g), "
-              "between: %.12g, axes crossed by a 90 deg twist: %.12g (mean %.12g)\n",
-              energy(Vec3::UnitX(), 0.0), v1, energy(Vec3::UnitY(), 0.0), v2, energy(Vec3(1, 1, 0), 0.0),
-              energy(Vec3::UnitX(), 0.5 * M_PI), vm);
+  std::printf(
+      "[bending axes] bend 0.3 rad about axis 1: %.12g J (EI_1: %.12g), axis 2: %.12g (EI_2: %.12g), "
+      "between: %.12g, axes crossed by a 90 deg twist: %.12g (mean %.12g)\n",
+      energy(Vec3::UnitX(), 0.0), v1, energy(Vec3::UnitY(), 0.0), v2, energy(Vec3(1, 1, 0), 0.0),
+      energy(Vec3::UnitX(), 0.5 * M_PI), vm);
   EXPECT_NEAR(energy(Vec3::UnitX(), 0.0), v1, 1e-12 * v1);
   EXPECT_NEAR(energy(Vec3::UnitY(), 0.0), v2, 1e-12 * v1);
   EXPECT_NEAR(energy(Vec3(1, 1, 0), 0.0), vm, 1e-12 * v1);
@@ -155,15 +157,16 @@ TEST(SpatialBendingAxes, FrameInvariant) {
   std::vector<double> mo(nb, 0.0), mor(nb, 0.0);
   addBendingAxesForces(m, t.kin, t.theta.data(), d0.frames, d0.m1, Q, mo.data());
   addBendingAxesForces(*mr, kr, t.theta.data(), dr.frames, dr.m1, Qr, mor.data());
-  const double v = bendingAxesEnergy(m, t.kin, t.theta.data(), d0.frames), vr = bendingAxesEnergy(*mr, kr, t.theta.data(), dr.frames);
+  const double v = bendingAxesEnergy(m, t.kin, t.theta.data(), d0.frames),
+               vr = bendingAxesEnergy(*mr, kr, t.theta.data(), dr.frames);
   double df = 0.0, scale = 0.0;
   for (int i = 0; i < nb; ++i) {
     df = std::max({df, (R * Q.segment<3>(kDofPerBody3 * i + kE) - Qr.segment<3>(kDofPerBody3 * i + kE)).norm(),
                    std::abs(mo[i] - mor[i])});
     scale = std::max(scale, std::abs(mo[i]));
   }
-  std::printf("[bending axes] rotated state: energy %.3e J off of %.4g J, forces %.2e of %.3g N m\n", std::abs(v - vr), v,
-              df / scale, scale);
+  std::printf("[bending axes] rotated state: energy %.3e J off of %.4g J, forces %.2e of %.3g N m\n", std::abs(v - vr),
+              v, df / scale, scale);
   EXPECT_GT(std::abs(v), 1.0);
   EXPECT_NEAR(v, vr, 1e-12 * std::abs(v));
   EXPECT_LT(df / scale, 1e-12);
@@ -198,10 +201,11 @@ TEST(SpatialBendingAxes, CantileverBendsAboutEachAxisWithItsStiffness) {
   const Vec3 ix = cantileverTip(0.0, kEI1, kEI1, true), iy = cantileverTip(0.5 * M_PI, kEI2, kEI2, true);
   // Euler-Bernoulli: q L⁴ / (8 EI), q = 10 kg/m x 1e-3 m/s²; the lumped rfes converge at O(1/n²).
   const double q = 10.0 * 1e-3, L = 10.0, eb1 = q * L * L * L * L / (8.0 * kEI1), eb2 = eb1 * kEI1 / kEI2;
-  std::printf("[bending axes] cantilever tip, load along x (about axis 1): %.9e m (isotropic EI_1 %.9e, EB %.6e); "
-              "along y: %.9e m (isotropic EI_2 %.9e, EB %.6e); ratio %.9f (EI_1/EI_2 %.3f); out of the load's "
-              "plane %.1e, %.1e m\n",
-              ax.x(), ix.x(), eb1, ay.y(), iy.y(), eb2, ay.y() / ax.x(), kEI1 / kEI2, std::abs(ax.y()), std::abs(ay.x()));
+  std::printf(
+      "[bending axes] cantilever tip, load along x (about axis 1): %.9e m (isotropic EI_1 %.9e, EB %.6e); "
+      "along y: %.9e m (isotropic EI_2 %.9e, EB %.6e); ratio %.9f (EI_1/EI_2 %.3f); out of the load's "
+      "plane %.1e, %.1e m\n",
+      ax.x(), ix.x(), eb1, ay.y(), iy.y(), eb2, ay.y() / ax.x(), kEI1 / kEI2, std::abs(ax.y()), std::abs(ay.x()));
   EXPECT_NEAR(ax.x(), ix.x(), 1e-10);  // [m] Newton to 1e-12 of the weight
   EXPECT_NEAR(ay.y(), iy.y(), 1e-10);
   EXPECT_LT(std::abs(ax.y()) + std::abs(ay.x()), 1e-12);
@@ -219,9 +223,10 @@ TEST(SpatialBendingAxes, CantileverLoadedBetweenTheAxesBendsTowardsTheSoftOne) {
   const Vec3 ax = cantileverTip(0.0, kEI1, kEI2, false), ay = cantileverTip(0.5 * M_PI, kEI1, kEI2, false);
   const Vec2 expect(std::cos(beta) * ax.x(), std::sin(beta) * ay.y());
   const double angle = std::atan2(tip.y(), tip.x()), expect_angle = std::atan2(expect.y(), expect.x());
-  std::printf("[bending axes] load at %.0f deg: tip (%.6e, %.6e) m at %.4f deg; principal superposition (%.6e, "
-              "%.6e) at %.4f deg\n",
-              beta * 180 / M_PI, tip.x(), tip.y(), angle * 180 / M_PI, expect.x(), expect.y(), expect_angle * 180 / M_PI);
+  std::printf(
+      "[bending axes] load at %.0f deg: tip (%.6e, %.6e) m at %.4f deg; principal superposition (%.6e, "
+      "%.6e) at %.4f deg\n",
+      beta * 180 / M_PI, tip.x(), tip.y(), angle * 180 / M_PI, expect.x(), expect.y(), expect_angle * 180 / M_PI);
   EXPECT_GT(angle - beta, 0.5);  // [rad] 30° load, ~66° deflection: clearly towards the soft axis
   EXPECT_NEAR(angle, expect_angle, 1e-4);
   EXPECT_NEAR(tip.head<2>().norm() / expect.norm(), 1.0, 1e-4);
@@ -273,9 +278,10 @@ TEST(SpatialBendingAxes, SwingingLineBalancesEnergyInBothFormulations) {
     const TwistData& tw = nat.evaluate().twist;
     for (double b : tw.bend) bend = std::max(bend, std::abs(b));
   }
-  std::printf("[bending axes] swinging, twisted line, 1 s: natural vs independent |dx| %.2e m; E - E0 - W %.2e of "
-              "m g L; largest axes' twisting moment %.3g N m\n",
-              dx, balance, bend);
+  std::printf(
+      "[bending axes] swinging, twisted line, 1 s: natural vs independent |dx| %.2e m; E - E0 - W %.2e of "
+      "m g L; largest axes' twisting moment %.3g N m\n",
+      dx, balance, bend);
   EXPECT_GT(bend, 1.0);  // [N m] the axes' part acts
   EXPECT_LT(dx, 1e-9);
   EXPECT_LT(balance, 1e-9);

@@ -22,8 +22,8 @@ using namespace spatial;
 // axis "": the isotropic line of EI = ei.
 std::string axesScene(const std::string& axis, const std::string& ei = "[9.0e4, 1.0e4]") {
   return "space: spatial\n"
-         "line: {length: 30, elements: 15, EA: 1.0e8, EI: " + ei + ", mass_per_length: 20, " +
-         (axis.empty() ? "" : "bending_axis: " + axis + ", ") +
+         "line: {length: 30, elements: 15, EA: 1.0e8, EI: " +
+         ei + ", mass_per_length: 20, " + (axis.empty() ? "" : "bending_axis: " + axis + ", ") +
          "torsion: {stiffness: 5.0e3, polar_inertia: 0.02, damping: 50}}\n"
          "bottom: {type: pinned, position: [20.0, 0.0, -18.0]}\n"
          "initial: {type: between_points}\n"
@@ -72,7 +72,8 @@ TEST(SpatialBendingAxesScene, StartsAtRestWithTheAxesAnyWay) {
   const AtRest inplane = restRun(axesScene("[1.0, 0.0, 0.0]"));
   const AtRest stiff = restRun(axesScene("", "9.0e4"));
   double d_soft = 0.0;
-  for (size_t i = 0; i < inplane.kin.size(); ++i) d_soft = std::max(d_soft, (inplane.kin[i].end() - stiff.kin[i].end()).norm());
+  for (size_t i = 0; i < inplane.kin.size(); ++i)
+    d_soft = std::max(d_soft, (inplane.kin[i].end() - stiff.kin[i].end()).norm());
   // Between the axes (yaw 30° off the plane's normal, tilted): twisted by the 3D Newton with the spins.
   const AtRest oblique = restRun(axesScene("[0.5, 0.866, 0.3]"));
   // A free end held displaced by a horizontal force (kept on: hold), axes between: the 3D Newton holds its end.
@@ -84,17 +85,20 @@ TEST(SpatialBendingAxesScene, StartsAtRestWithTheAxesAnyWay) {
   const Vec3 end = displaced.kin.back().end();
   double off_plane = 0.0;
   for (const auto& b : oblique.kin) off_plane = std::max(off_plane, std::abs(b.end().y()));
-  std::printf("[bending axes] catenary, axis 1 in the plane: %.3g m from the isotropic EI_1 line (EI_2), moved %.1e m "
-              "in 0.5 s; between: out of the plane %.3g m, spins up to %.3g rad, moved %.1e m (%s)\n",
-              d_soft, inplane.moved, off_plane, oblique.spin, oblique.moved, oblique.about.c_str());
+  std::printf(
+      "[bending axes] catenary, axis 1 in the plane: %.3g m from the isotropic EI_1 line (EI_2), moved %.1e m "
+      "in 0.5 s; between: out of the plane %.3g m, spins up to %.3g rad, moved %.1e m (%s)\n",
+      d_soft, inplane.moved, off_plane, oblique.spin, oblique.moved, oblique.about.c_str());
   EXPECT_GT(d_soft, 1e-3);
   EXPECT_FALSE(inplane.twisted);
   EXPECT_TRUE(oblique.twisted);
   EXPECT_GT(off_plane, 1e-4);
   EXPECT_GT(oblique.spin, 1e-4);
   // At rest: a start 1e-9 off equilibrium (initial.tolerance) moves by ~1e-9 m; an untwisted oblique start by mm.
-  std::printf("[bending axes] displaced end held at (12, 0): end at (%.12f, %.2e), spins up to %.3g rad, moved %.1e m "
-              "in 0.5 s\n", end.x(), end.y(), displaced.spin, displaced.moved);
+  std::printf(
+      "[bending axes] displaced end held at (12, 0): end at (%.12f, %.2e), spins up to %.3g rad, moved %.1e m "
+      "in 0.5 s\n",
+      end.x(), end.y(), displaced.spin, displaced.moved);
   EXPECT_TRUE(displaced.twisted);
   EXPECT_NEAR(end.x(), 12.0, 1e-9);
   EXPECT_NEAR(end.y(), 0.0, 1e-9);
@@ -111,17 +115,20 @@ TEST(SpatialBendingAxesScene, FarStartsRelaxFirst) {
   const AtRest s = restRun(swivel), soft = restRun(axesScene("", "1.0e4"));
   double off = 0.0, d_soft = 0.0;
   for (size_t i = 0; i < s.kin.size(); ++i)
-    off = std::max(off, std::abs(s.kin[i].end().y())), d_soft = std::max(d_soft, (s.kin[i].end() - soft.kin[i].end()).norm());
+    off = std::max(off, std::abs(s.kin[i].end().y())),
+    d_soft = std::max(d_soft, (s.kin[i].end() - soft.kin[i].end()).norm());
   std::string current = axesScene("[0.0, 1.0, 0.0]");
   current.replace(current.find("mass_per_length: 20"), 19, "mass_per_length: 20, outer_diameter: 0.1");
-  current.replace(current.find("bottom:"), 0, "environment: {water: {density: 1025.0, surface: 5.0}, current: "
-                                              "{velocity: [0.0, 0.8, 0.0]}}\nhydrodynamics: {drag_normal: 1.2}\n");
+  current.replace(current.find("bottom:"), 0,
+                  "environment: {water: {density: 1025.0, surface: 5.0}, current: "
+                  "{velocity: [0.0, 0.8, 0.0]}}\nhydrodynamics: {drag_normal: 1.2}\n");
   const AtRest c = restRun(current);
   double c_off = 0.0;
   for (const auto& b : c.kin) c_off = std::max(c_off, std::abs(b.end().y()));
-  std::printf("[bending axes] swivel top: %.1e m out of the plane, %.1e m from the isotropic EI_2 line, spins up to "
-              "%.3g rad, moved %.1e m; current across: out of the plane %.3g m, spins up to %.3g rad, moved %.1e m\n",
-              off, d_soft, s.spin, s.moved, c_off, c.spin, c.moved);
+  std::printf(
+      "[bending axes] swivel top: %.1e m out of the plane, %.1e m from the isotropic EI_2 line, spins up to "
+      "%.3g rad, moved %.1e m; current across: out of the plane %.3g m, spins up to %.3g rad, moved %.1e m\n",
+      off, d_soft, s.spin, s.moved, c_off, c.spin, c.moved);
   EXPECT_LT(off, 1e-9);
   EXPECT_LT(d_soft, 1e-8);  // [m] Newton's 1e-12 of the weight
   EXPECT_GT(s.spin, 0.5);
@@ -144,12 +151,13 @@ TEST(SpatialBendingAxesScene, KeysAreChecked) {
   const std::string ok = axesScene("[1.0, 0.0, 0.0]");  // bent about its soft axis: stable
   EXPECT_EQ(key(ok), "accepted");
   std::string no_torsion = ok;
-  no_torsion.replace(no_torsion.find(", torsion:"), no_torsion.find("}", no_torsion.find(", torsion:")) + 1 - no_torsion.find(", torsion:"), "");
+  no_torsion.replace(no_torsion.find(", torsion:"),
+                     no_torsion.find("}", no_torsion.find(", torsion:")) + 1 - no_torsion.find(", torsion:"), "");
   EXPECT_EQ(key(no_torsion), "line.EI");
   EXPECT_EQ(key(axesScene("")), "line.bending_axis");                              // the pair, no axis
   EXPECT_EQ(key(axesScene("[0.0, 1.0, 0.0]", "[9.0e4, 1.0e4, 1.0]")), "line.EI");  // three
   EXPECT_EQ(key(axesScene("[0.0, 1.0, 0.0]", "[9.0e4, -1.0]")), "line.EI[1]");
-  EXPECT_EQ(key(axesScene("[0.0, 1.0, 0.0]", "1.0e4")), "line.bending_axis");      // an axis, no pair
+  EXPECT_EQ(key(axesScene("[0.0, 1.0, 0.0]", "1.0e4")), "line.bending_axis");  // an axis, no pair
   EXPECT_EQ(key(axesScene("[0.0, 0.0, 0.0]")), "line.bending_axis");
   EXPECT_EQ(key(axesScene("[0.0, 1.0]")), "line.bending_axis");  // [x, y, z] only, as flex_joint.axis
   // Along the top rfe of a straight line hanging down: no direction across it.
@@ -198,9 +206,10 @@ TEST(SpatialBendingAxesScene, ClampedModesSplitIntoEachAxisStiffness) {
   double worst = 0.0;
   const size_t compared = 6;
   for (size_t k = 0; k < compared; ++k) worst = std::max(worst, std::abs(a[k] / expect[k] - 1.0));
-  std::printf("[bending axes] clamped line's lowest modes: %.6f %.6f %.6f %.6f rad/s; isotropic EI_2 %.6f %.6f, EI_1 "
-              "%.6f %.6f; worst of %zu %.2e\n",
-              a[0], a[1], a[2], a[3], soft[0], soft[2], stiff[0], stiff[2], compared, worst);
+  std::printf(
+      "[bending axes] clamped line's lowest modes: %.6f %.6f %.6f %.6f rad/s; isotropic EI_2 %.6f %.6f, EI_1 "
+      "%.6f %.6f; worst of %zu %.2e\n",
+      a[0], a[1], a[2], a[3], soft[0], soft[2], stiff[0], stiff[2], compared, worst);
   EXPECT_NEAR(soft[0], soft[1], 1e-9 * soft[0]);  // the isotropic pair
   EXPECT_GT(a[1] / a[0], 1.1);                    // split (gravity stiffens both alike: less than sqrt(4))
   EXPECT_LT(worst, 1e-9);  // the FD stiffness' round-off (the isotropic pair is degenerate to the same)

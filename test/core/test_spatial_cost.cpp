@@ -26,7 +26,8 @@ void measure(int n) {
   spatial_test::LineSpec s = spatial_test::flexibleLine();
   s.segments = n;
   auto m2 = spatial_test::planarModel(s);
-  const Kinematics kin0 = spatial_test::planarChain(*m2, Vec2::Zero(), std::vector<double>(m2->bodies(), -M_PI / 2 + 0.35));
+  const Kinematics kin0 =
+      spatial_test::planarChain(*m2, Vec2::Zero(), std::vector<double>(m2->bodies(), -M_PI / 2 + 0.35));
   auto top = [] { return spatial_test::topSway(Vec2(0.5, 0.0), 2.0); };
   spatial_test::PlanarOde ode2(m2, top());
   Rk4 rk2;
@@ -47,8 +48,8 @@ void measure(int n) {
     t3[k] = std::chrono::duration<double, std::micro>(c - b).count();
   }
   const double c2 = median(t2), c3 = median(t3);
-  std::printf("[spatial cost] n = %d, rk4: planar absolute %.2f us/step, spatial natural %.2f us/step, ratio %.2f\n", n, c2,
-              c3, c3 / c2);
+  std::printf("[spatial cost] n = %d, rk4: planar absolute %.2f us/step, spatial natural %.2f us/step, ratio %.2f\n", n,
+              c2, c3, c3 / c2);
   EXPECT_TRUE(y2.allFinite() && sim.state().allFinite());
 }
 

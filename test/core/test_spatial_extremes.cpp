@@ -65,10 +65,11 @@ const std::string kSteelPipe =
 // One segment (two half-length rfes), released 4 m to the side: a 3D swing. rk4 at 2 ms resolves it: the
 // balance closes to rounding (~1e-12 measured), 1e-6 leaves rk4's h^4 error room.
 TEST(SpatialExtremes, OneSegmentSwings) {
-  const Scene s = scene("  length: 20.0\n  elements: 1\n" + kSteelPipe + "  end_mass: 50.0\n  axial_flexibility: false\n",
-                        "top:\n  position: [0, 0, 0]\n  motion:\n    type: sinusoid\n    amplitude: [1.0, 0.5, 0]\n"
-                        "    period: 4.0\ninitial:\n  type: displaced\n  end_offset: [0.0, 4.0]\n"
-                        "solver:\n  dt: 0.002\n  integrator: rk4\n");
+  const Scene s =
+      scene("  length: 20.0\n  elements: 1\n" + kSteelPipe + "  end_mass: 50.0\n  axial_flexibility: false\n",
+            "top:\n  position: [0, 0, 0]\n  motion:\n    type: sinusoid\n    amplitude: [1.0, 0.5, 0]\n"
+            "    period: 4.0\ninitial:\n  type: displaced\n  end_offset: [0.0, 4.0]\n"
+            "solver:\n  dt: 0.002\n  integrator: rk4\n");
   const Sound r = runSound(s, 2.0, 1e-6);
   std::printf("[extremes3] n = 1: energy balance %.2e of m g L\n", r.drift);
 }
@@ -88,10 +89,11 @@ TEST(SpatialExtremes, ThousandSegmentsStructuredMidpoint) {
 // A soft cord (EA 1e3 N, 1 kg/m, 1 kg end) released horizontally along a 30° heading: it falls and
 // stretches by tens of per cent. rk4 at 1e-4 s (its axial limit ~2.8/sqrt(2 EA/(d m_rfe)) = 6e-3 s).
 TEST(SpatialExtremes, SoftCordStretchesAndSwings) {
-  const Scene s = scene("  length: 10.0\n  elements: 10\n  EA: 1.0e3\n  EI: 1.0\n  mass_per_length: 1.0\n"
-                        "  end_mass: 1.0\n",
-                        "initial:\n  type: straight\n  angle: 0\n  heading: 30\n"
-                        "solver:\n  dt: 1.0e-4\n  integrator: rk4\n");
+  const Scene s = scene(
+      "  length: 10.0\n  elements: 10\n  EA: 1.0e3\n  EI: 1.0\n  mass_per_length: 1.0\n"
+      "  end_mass: 1.0\n",
+      "initial:\n  type: straight\n  angle: 0\n  heading: 30\n"
+      "solver:\n  dt: 1.0e-4\n  integrator: rk4\n");
   const Sound r = runSound(s, 2.0, 1e-6);
   const double weight = (10.0 + 1.0) * 9.81;
   std::printf("[extremes3] soft cord: energy balance %.2e, peak tension %.1f N (weight %.1f N)\n", r.drift,
@@ -104,9 +106,10 @@ TEST(SpatialExtremes, SoftCordStretchesAndSwings) {
 // with finite outputs before; the structured midpoint at the same step runs sound.
 TEST(SpatialExtremes, SteelShortElementsBeyondTheExplicitLimit) {
   const std::string line = "  length: 10.0\n  elements: 100\n" + kSteelPipe + "  end_mass: 10.0\n";
-  const std::string rest = "top:\n  position: [0, 0, 0]\n  motion:\n    type: sinusoid\n    amplitude: [0.5, 0.5, 0]\n"
-                           "    period: 2.0\n    phase: [3.141592653589793, 3.141592653589793, 0]\n"
-                           "solver:\n  dt: 0.001\n  integrator: ";
+  const std::string rest =
+      "top:\n  position: [0, 0, 0]\n  motion:\n    type: sinusoid\n    amplitude: [0.5, 0.5, 0]\n"
+      "    period: 2.0\n    phase: [3.141592653589793, 3.141592653589793, 0]\n"
+      "solver:\n  dt: 0.001\n  integrator: ";
   {
     SpatialRun run(scene(line, rest + "rk4\n"));
     bool ok = true;
@@ -115,7 +118,8 @@ TEST(SpatialExtremes, SteelShortElementsBeyondTheExplicitLimit) {
       ok = run.step();
       if (ok) EXPECT_TRUE(finite(run.outputs())) << "non-finite outputs in a step reported sound, t = " << run.time();
     }
-    std::printf("[extremes3] steel n = 100 rk4 1 ms: %s after %d steps\n", ok ? "ran" : run.divergenceReason().c_str(), k);
+    std::printf("[extremes3] steel n = 100 rk4 1 ms: %s after %d steps\n", ok ? "ran" : run.divergenceReason().c_str(),
+                k);
     ASSERT_FALSE(ok) << "rk4 at 40x its stability limit ran 200 steps";
     EXPECT_LE(k, 50) << "caught late";
     EXPECT_NE(run.divergenceReason().find("solver.dt"), std::string::npos) << run.divergenceReason();
@@ -135,10 +139,11 @@ TEST(SpatialExtremes, SnapLoadOnReTension) {
     // the implicit schemes at 1 ms do not (midpoint 0.05, generalized_alpha 0.4 lost) and are flagged by
     // the run's energy-balance warning (1e-3): they may lose energy, never create it.
     const std::string dt = integ == "rk4" ? "5.0e-5" : "1.0e-3";
-    const Scene s = scene("  length: 10.0\n  elements: 20\n  EA: 1.0e7\n  mass_per_length: 10.0\n  end_mass: 50.0\n"
-                          "  bending: false\n",
-                          "initial:\n  type: straight\n  angle: 87\n  heading: 30\nsolver:\n  dt: " + dt +
-                              "\n  integrator: " + integ + "\n");
+    const Scene s = scene(
+        "  length: 10.0\n  elements: 20\n  EA: 1.0e7\n  mass_per_length: 10.0\n  end_mass: 50.0\n"
+        "  bending: false\n",
+        "initial:\n  type: straight\n  angle: 87\n  heading: 30\nsolver:\n  dt: " + dt + "\n  integrator: " + integ +
+            "\n");
     SpatialRun run(s);
     const double g = 9.81, m_line = 100.0, m_end = 50.0, L = 10.0;
     const double e0 = run.outputs().kinetic_energy + run.outputs().potential_energy;
@@ -179,9 +184,10 @@ TEST(SpatialExtremes, WhirlNearResonanceKeepsEnergyBalance) {
                 "top:\n  position: [0, 0, 0]\n  motion:\n    type: sinusoid\n    amplitude: [0.05, 0.05, 0]\n"
                 "    period: %.17g\n    phase: [0, -1.5707963267948966, 0]\n",
                 period);
-  const Scene s = scene("  length: 10.0\n  elements: 20\n  EA: 1.0e6\n  EI: 10.0\n  mass_per_length: 1.0\n"
-                        "  end_mass: 50.0\n",
-                        std::string(top) + "solver:\n  dt: 2.0e-4\n  integrator: rk4\n");
+  const Scene s = scene(
+      "  length: 10.0\n  elements: 20\n  EA: 1.0e6\n  EI: 10.0\n  mass_per_length: 1.0\n"
+      "  end_mass: 50.0\n",
+      std::string(top) + "solver:\n  dt: 2.0e-4\n  integrator: rk4\n");
   SpatialRun run(s);
   double drift1 = 0.0, r_max = 0.0;
   const long steps = std::lround(30.0 / run.dt());

@@ -43,7 +43,8 @@ TEST(SpatialFlexJointHolder, AgainstItsEnergyWhileTheHolderTurns) {
   for (const FlexJoint* j : {&top, &bottom, &top_spring}) {
     spatial_test::checkPower(*j, *m, 0.8);
     // The axis at t0 is the one given, turned by R(t) R(t0)ᵀ later.
-    EXPECT_LT((j->axis(0.0).d - (j == &bottom ? Vec3(-0.1, 0.5, 1.0) : Vec3(0.3, 0.2, -1.0)).normalized()).norm(), 1e-15);
+    EXPECT_LT((j->axis(0.0).d - (j == &bottom ? Vec3(-0.1, 0.5, 1.0) : Vec3(0.3, 0.2, -1.0)).normalized()).norm(),
+              1e-15);
     const PointMotion3 h0 = holder->at(0.0), h1 = holder->at(0.8);
     EXPECT_LT((j->axis(0.8).d - h1.R * h0.R.transpose() * j->axis(0.0).d).norm(), 1e-15);
   }
@@ -62,8 +63,9 @@ TEST(SpatialFlexJointHolder, LineSettlesAboutTheTurnedAxis) {
   m->addTerm(std::make_unique<FlexJoint>(FlexJoint::End::kTop, Vec3(0, 0, -1), k, 2e4, holder, 0.0));
   const auto* joint = static_cast<const FlexJoint*>(m->terms().back().get());
   SpatialSimulator sim(m, holder, IntegratorKind::kRk4);
-  sim.reset(rigidChain(m->line(), Vec3::Zero(), std::vector<Vec3>(m->bodies(), Vec3(0, 0, -1)), Vec3::Zero(),
-                       Vec3::Zero()), 0.0);
+  sim.reset(
+      rigidChain(m->line(), Vec3::Zero(), std::vector<Vec3>(m->bodies(), Vec3(0, 0, -1)), Vec3::Zero(), Vec3::Zero()),
+      0.0);
   const double h = 5e-4;  // rk4 well inside its limit at n = 4
   for (int i = 0; i < int(50.0 / h); ++i) ASSERT_TRUE(sim.step(h));
   Kinematics3 kin(m->bodies());
@@ -97,8 +99,9 @@ TEST(SpatialFlexJointHolder, EnergyBalanceWhileTheHolderTurns) {
   auto holder = std::make_shared<TurningHolder>(wobble(0.0, 0.0, 0.4, 1.5), wobble(0.0, 0.8, 0.0, 0.0));
   m->addTerm(std::make_unique<FlexJoint>(FlexJoint::End::kTop, Vec3(0.2, 0, -1), 3e3, 0.0, holder, 0.0));
   SpatialSimulator sim(m, holder, IntegratorKind::kRk4);
-  sim.reset(rigidChain(m->line(), Vec3::Zero(), std::vector<Vec3>(m->bodies(), Vec3(0, 0, -1)), Vec3::Zero(),
-                       Vec3::Zero()), 0.0);
+  sim.reset(
+      rigidChain(m->line(), Vec3::Zero(), std::vector<Vec3>(m->bodies(), Vec3(0, 0, -1)), Vec3::Zero(), Vec3::Zero()),
+      0.0);
   const double e0 = sim.energy(), scale = (10.0 * 10.0 + 50.0) * 9.81 * 10.0;
   double worst = 0.0, swing = 0.0;
   for (int i = 0; i < 10000; ++i) {  // 5 s at 0.5 ms
@@ -128,7 +131,7 @@ TEST(SpatialFlexJointHolder, PrescribedAttitudeTurnsTheJoints) {
   EXPECT_FALSE(SinusoidMotion3(Vec3::Zero(), Vec3(1, 0, 0), 5.0, Vec3::Zero()).rotates());
 
   Scene scene = loadSceneFile(std::string(RISER_SIM_SOURCE_DIR) + "/config/scenes/spatial_tether.yaml");
-  scene.top.attitude3 = Vec3(5.0, 3.0, 20.0) * M_PI / 180.0;  // the vessel rolls, pitches and yaws
+  scene.top.attitude3 = Vec3(5.0, 3.0, 20.0) * M_PI / 180.0;            // the vessel rolls, pitches and yaws
   scene.bottom_motion.attitude3 = Vec3(0.0, 0.0, 30.0) * M_PI / 180.0;  // the ROV yaws
   SpatialRun run(scene);
   ASSERT_TRUE(run.topFlexJoint() && run.bottomFlexJoint());
@@ -149,15 +152,15 @@ TEST(SpatialFlexJointHolder, PrescribedAttitudeTurnsTheJoints) {
 
   const auto refused = [](const std::string& yaml, const std::string& key) {
     try {
-      parseScene(YAML::Load("{line: {length: 10, elements: 5, mass_per_length: 10, EA: 1e6, bending: false}, " + yaml + "}"));
+      parseScene(
+          YAML::Load("{line: {length: 10, elements: 5, mass_per_length: 10, EA: 1e6, bending: false}, " + yaml + "}"));
       ADD_FAILURE() << "no SceneError for " << key;
     } catch (const SceneError& e) {
       EXPECT_EQ(e.key(), key) << e.what();
     }
   };
   refused("space: spatial, top: {motion: {type: fixed, attitude: [1, 2, 3]}}", "top.motion.attitude");
-  refused("top: {motion: {type: sinusoid, amplitude: [1, 0], period: 5, attitude: [1, 2, 3]}}",
-          "top.motion.attitude");
+  refused("top: {motion: {type: sinusoid, amplitude: [1, 0], period: 5, attitude: [1, 2, 3]}}", "top.motion.attitude");
   refused("space: spatial, top: {motion: {type: sinusoid, amplitude: [1, 0, 0], period: 5, attitude: [1, 2]}}",
           "top.motion.attitude");
   refused("space: spatial, top: {motion: {type: sinusoid, amplitude: [1, 0, 0], period: 5, attitude: [1, 95, 3]}}",

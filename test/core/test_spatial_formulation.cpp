@@ -74,17 +74,20 @@ void check(const Case& c) {
       worst = std::max(worst, (c2 + 2 * kOmega * c1 + kOmega * kOmega * c0).norm() / scale);
     };
     law(top.p - kin[0].A, top.v - kin[0].A_dot, top.a - acc(0, kA));
-    for (int k = 1; k < nb; ++k) law(kin[k - 1].end() - kin[k].A, kin[k - 1].endVelocity() - kin[k].A_dot, endAcc(k - 1) - acc(k, kA));
+    for (int k = 1; k < nb; ++k)
+      law(kin[k - 1].end() - kin[k].A, kin[k - 1].endVelocity() - kin[k].A_dot, endAcc(k - 1) - acc(k, kA));
     if (c.pinned) law(kin[nb - 1].end() - m->bottomPoint(), kin[nb - 1].endVelocity(), endAcc(nb - 1));
     for (int i = 0; i < nb; ++i) {
       const Vec3& e = kin[i].e;
       const Vec3& ed = kin[i].e_dot;
-      law(Vec3(0.5 * (e.squaredNorm() - 1), 0, 0), Vec3(e.dot(ed), 0, 0), Vec3(e.dot(acc(i, kE)) + ed.squaredNorm(), 0, 0));
+      law(Vec3(0.5 * (e.squaredNorm() - 1), 0, 0), Vec3(e.dot(ed), 0, 0),
+          Vec3(e.dot(acc(i, kE)) + ed.squaredNorm(), 0, 0));
     }
     EXPECT_LT(worst, kRelTol);
     if (trial == 0)
-      std::printf("[spatial solve axial=%d pinned=%d] |closed - dense| %.1e, Baumgarte law residual %.1e (of max |u''| %.1e)\n",
-                  c.axial, c.pinned, diff, worst, scale);
+      std::printf(
+          "[spatial solve axial=%d pinned=%d] |closed - dense| %.1e, Baumgarte law residual %.1e (of max |u''| %.1e)\n",
+          c.axial, c.pinned, diff, worst, scale);
   }
 }
 

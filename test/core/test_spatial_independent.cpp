@@ -38,7 +38,8 @@ std::vector<Vec3> zigzagDirections(int nb) {
 }
 
 std::unique_ptr<TopMotion3> top3() {
-  return std::make_unique<spatial_test::OscillatingTop>(Vec3(0.5, 0.4, 0.2), Vec3(2.0 * M_PI / 2.0, 2.0 * M_PI / 1.3, M_PI));
+  return std::make_unique<spatial_test::OscillatingTop>(Vec3(0.5, 0.4, 0.2),
+                                                        Vec3(2.0 * M_PI / 2.0, 2.0 * M_PI / 1.3, M_PI));
 }
 
 struct Agreement {
@@ -46,7 +47,7 @@ struct Agreement {
   double max_force = 0.0;   // top reaction difference / weight
   double max_energy = 0.0;  // |E_ind - E_nat| and |W_ind - W_nat| / (m g L)
   long switches = 0;
-  double max_gap = 0.0;     // pinned end gap of the independent run [m]
+  double max_gap = 0.0;  // pinned end gap of the independent run [m]
 };
 
 Agreement compareNatural(double h, double duration, bool pinned = false, bool axial = true) {
@@ -79,8 +80,8 @@ Agreement compareNatural(double h, double duration, bool pinned = false, bool ax
     const Reactions3 rn = nat.evaluate().reactions, ri = ind.evaluate().reactions;
     a.max_force = std::max({a.max_force, (rn.top - ri.top).norm() / weight, (rn.bottom - ri.bottom).norm() / weight});
     a.max_gap = std::max(a.max_gap, ind.constraintError());
-    a.max_energy = std::max({a.max_energy, std::abs(nat.energy() - ind.energy()) / scale,
-                             std::abs(nat.work() - ind.work()) / scale});
+    a.max_energy = std::max(
+        {a.max_energy, std::abs(nat.energy() - ind.energy()) / scale, std::abs(nat.work() - ind.work()) / scale});
   }
   a.switches = ind.chartSwitches();
   return a;
@@ -94,8 +95,10 @@ Agreement compareNatural(double h, double duration, bool pinned = false, bool ax
 constexpr double kStep = 1e-4;  // [s] rk4; ωh ≤ 0.1 for the axial modes
 TEST(SpatialIndependent, AgreesWithNaturalFormulation) {
   const Agreement a = compareNatural(kStep, 3.0);
-  std::printf("[spatial independent vs natural] h = %.0e s: max |dx| = %.3e m, top reaction %.2e of the weight, "
-              "energy/work %.2e of m g L, chart switches %ld\n", kStep, a.max_diff, a.max_force, a.max_energy, a.switches);
+  std::printf(
+      "[spatial independent vs natural] h = %.0e s: max |dx| = %.3e m, top reaction %.2e of the weight, "
+      "energy/work %.2e of m g L, chart switches %ld\n",
+      kStep, a.max_diff, a.max_force, a.max_energy, a.switches);
   EXPECT_LT(a.max_diff, 1e-9);
   EXPECT_LT(a.max_force, 1e-6);
   EXPECT_LT(a.max_energy, 1e-9);
@@ -109,9 +112,10 @@ TEST(SpatialIndependent, AgreesWithNaturalFormulation) {
 TEST(SpatialIndependent, PinnedAgreesWithNaturalFormulation) {
   for (bool axial : {true, false}) {
     const Agreement a = compareNatural(kStep / 2, 3.0, true, axial);
-    std::printf("[spatial independent vs natural, pinned%s] max |dx| = %.3e m, reactions %.2e of the weight, "
-                "energy/work %.2e of m g L, end gap %.1e m, chart switches %ld\n", axial ? "" : " inextensible",
-                a.max_diff, a.max_force, a.max_energy, a.max_gap, a.switches);
+    std::printf(
+        "[spatial independent vs natural, pinned%s] max |dx| = %.3e m, reactions %.2e of the weight, "
+        "energy/work %.2e of m g L, end gap %.1e m, chart switches %ld\n",
+        axial ? "" : " inextensible", a.max_diff, a.max_force, a.max_energy, a.max_gap, a.switches);
     EXPECT_LT(a.max_diff, 1e-9);
     EXPECT_LT(a.max_force, 1e-6);
     EXPECT_LT(a.max_energy, 1e-9);
@@ -136,7 +140,8 @@ TEST(SpatialIndependent, ConservesAngularMomentumAboutVertical) {
   s.props.bending_damping = 0.0;
   auto m = spatial_test::spatialModel(s, Vec3(0, 0, -s.g));
   IndependentSimulator3 sim(m, std::make_unique<FixedMotion3>(Vec3::Zero()), IntegratorKind::kRk4);
-  sim.reset(rigidChain(m->line(), Vec3::Zero(), obliqueDirections(m->bodies()), Vec3::Zero(), Vec3(0.3, -0.2, 1.5)), 0.0);
+  sim.reset(rigidChain(m->line(), Vec3::Zero(), obliqueDirections(m->bodies()), Vec3::Zero(), Vec3(0.3, -0.2, 1.5)),
+            0.0);
   Kinematics3 kin(m->bodies());
   sim.kinematics(kin);
   const double lz0 = spatial_test::angularMomentumZ(*m, kin), e0 = sim.energy();
@@ -148,10 +153,12 @@ TEST(SpatialIndependent, ConservesAngularMomentumAboutVertical) {
     dl = std::max(dl, std::abs(spatial_test::angularMomentumZ(*m, kin) / lz0 - 1.0));
     de = std::max(de, std::abs(sim.energy() - e0) / scale);
   }
-  std::printf("[spatial independent L_z] L_z0 = %.3f kg m^2/s, max relative change %.2e, energy drift %.2e of m g L, "
-              "chart switches %ld\n", lz0, dl, de, sim.chartSwitches());
-  EXPECT_LT(dl, 1e-9);  // the brief's bound; measured 8e-14 (rk4 truncation at h = 1e-4 s)
-  EXPECT_LT(de, 1e-9);  // of m g L, same scene; measured 3.3e-13
+  std::printf(
+      "[spatial independent L_z] L_z0 = %.3f kg m^2/s, max relative change %.2e, energy drift %.2e of m g L, "
+      "chart switches %ld\n",
+      lz0, dl, de, sim.chartSwitches());
+  EXPECT_LT(dl, 1e-9);                // the brief's bound; measured 8e-14 (rk4 truncation at h = 1e-4 s)
+  EXPECT_LT(de, 1e-9);                // of m g L, same scene; measured 3.3e-13
   EXPECT_GT(sim.chartSwitches(), 0);  // the spin carries the directors beyond |u| = 0.5 (measured 46)
 }
 

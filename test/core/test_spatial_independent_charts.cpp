@@ -15,9 +15,9 @@ using namespace spatial;
 constexpr double kDuration = 3.0;  // [s]
 
 struct Swing {
-  double balance = 0.0;  // max |E - E0 - W| / (m g L)
-  double work = 0.0;     // max |W| / (m g L)
-  double diff = 0.0;     // max |x_ind - x_nat| [m]
+  double balance = 0.0;         // max |E - E0 - W| / (m g L)
+  double work = 0.0;            // max |W| / (m g L)
+  double diff = 0.0;            // max |x_ind - x_nat| [m]
   double down = 0.0, up = 0.0;  // max over rfes of (min over time of 1 + e_z, 1 - e_z)
   long switches = 0;
 };
@@ -73,9 +73,10 @@ Swing run(double h) {
   }
   r.switches = ind.chartSwitches();
   for (int i = 0; i < m->bodies(); ++i) r.down = std::max(r.down, down[i]), r.up = std::max(r.up, up[i]);
-  std::printf("[spatial independent charts] h = %.1e s: balance %.2e of m g L (|W| up to %.2e), vs natural %.2e m, "
-              "chart switches %ld, every rfe within %.1e of down, %.1e of up (1 - cos)\n", h, r.balance, r.work, r.diff,
-              r.switches, r.down, r.up);
+  std::printf(
+      "[spatial independent charts] h = %.1e s: balance %.2e of m g L (|W| up to %.2e), vs natural %.2e m, "
+      "chart switches %ld, every rfe within %.1e of down, %.1e of up (1 - cos)\n",
+      h, r.balance, r.work, r.diff, r.switches, r.down, r.up);
   return r;
 }
 
@@ -121,8 +122,10 @@ TEST(SpatialIndependentCharts, Dopri5RestartsAtChartSwitches) {
     balance = std::max(balance, std::abs(ind.energy() - e0 - ind.work()) / scale);
   }
   const Integrator::Stats st = ind.integrator().stats();
-  std::printf("[spatial independent charts dopri5] tol 1e-10: vs natural rk4 %.2e m, balance %.2e of m g L, chart "
-              "switches %ld, substeps %ld, rejected %ld\n", diff, balance, ind.chartSwitches(), st.substeps, st.rejected);
+  std::printf(
+      "[spatial independent charts dopri5] tol 1e-10: vs natural rk4 %.2e m, balance %.2e of m g L, chart "
+      "switches %ld, substeps %ld, rejected %ld\n",
+      diff, balance, ind.chartSwitches(), st.substeps, st.rejected);
   EXPECT_GT(ind.chartSwitches(), 0);
   // Measured 3.1e-11 m and 1.9e-12 of m g L (223 switches, 5756 substeps): bounds 1e-9 m and 1e-10, room for
   // the 1e-10 tolerance accumulated over the substeps; a derivative reused from the old chart would put
@@ -162,8 +165,10 @@ AlphaRun alphaRun(double h) {
       r.ind = std::max(r.ind, (pi[i] - pr[i]).norm()), r.nat = std::max(r.nat, (pn[i] - pr[i]).norm());
   }
   r.switches = ind.chartSwitches();
-  std::printf("[spatial independent charts generalized_alpha] h = %.0e s: error %.2e m (natural %.2e m), chart "
-              "switches %ld\n", h, r.ind, r.nat, r.switches);
+  std::printf(
+      "[spatial independent charts generalized_alpha] h = %.0e s: error %.2e m (natural %.2e m), chart "
+      "switches %ld\n",
+      h, r.ind, r.nat, r.switches);
   return r;
 }
 

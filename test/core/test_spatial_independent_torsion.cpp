@@ -41,43 +41,44 @@ std::vector<Vec3> bentDirections(int nb) {
 // off their centres (u = 0.3 rad-ish, the twist charts too), random spins; held, free and spring-held top.
 TEST(SpatialIndependentTorsion, ForcesAreTheGradientOfTheTwistEnergy) {
   for (Top kind : {Top::kHeld, Top::kFree, Top::kSpring}) {
-  LineSpec s;
-  s.segments = 6;
-  s.props.mass_per_length = 10.0;
-  s.options.bending = false;
-  s.options.axial_flexibility = false;
-  auto m = spatial_test::spatialModel(s, Vec3::Zero());
-  m->setTorsion(twistProps(0.0, kind));
-  IndependentFormulation3 f(*m);
-  auto d = f.makeData();
-  SphereCharts charts;
-  const int p = f.positionSize();
-  VecX y = VecX::Zero(2 * p), dy = y;
-  f.packState(rigidChain(m->line(), Vec3::Zero(), bentDirections(m->bodies()), Vec3::Zero(), Vec3::Zero()), charts, y);
-  std::mt19937 rng(7);
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  for (int c = 0; c < p; ++c) y[c] = (c < f.spinIndex(f.firstSpin()) ? 0.3 : 0.8) * u(rng);
-  const PointMotion3 top;
-  Kinematics3 kin(m->bodies());
-  auto V = [&](const VecX& yy) {
-    f.kinematics(yy, charts, top, kin);
-    return f.twistEnergy(yy, charts, kin, *d);
-  };
-  f.derivative(0.0, y, charts, top, dy, *d);
-  const VecX Q = d->rhs;
-  double worst = 0.0;
-  constexpr double eps = 1e-6;
-  for (int c = 0; c < p; ++c) {
-    VecX a = y, b = y;
-    a[c] += eps;
-    b[c] -= eps;
-    worst = std::max(worst, std::abs(-(V(a) - V(b)) / (2 * eps) - Q[c]));
-  }
-  const double scale = Q.cwiseAbs().maxCoeff();
-  std::printf("[independent torsion] %s top: Q_θ vs -dV/dθ (u and φ, charts off centre): %.2e of %.3g N m\n",
-              name(kind), worst / scale, scale);
-  EXPECT_GT(scale, 10.0);
-  EXPECT_LT(worst / scale, 1e-7);  // central differences at 1e-6: truncation ~1e-12, round-off ~1e-10 V/eps
+    LineSpec s;
+    s.segments = 6;
+    s.props.mass_per_length = 10.0;
+    s.options.bending = false;
+    s.options.axial_flexibility = false;
+    auto m = spatial_test::spatialModel(s, Vec3::Zero());
+    m->setTorsion(twistProps(0.0, kind));
+    IndependentFormulation3 f(*m);
+    auto d = f.makeData();
+    SphereCharts charts;
+    const int p = f.positionSize();
+    VecX y = VecX::Zero(2 * p), dy = y;
+    f.packState(rigidChain(m->line(), Vec3::Zero(), bentDirections(m->bodies()), Vec3::Zero(), Vec3::Zero()), charts,
+                y);
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    for (int c = 0; c < p; ++c) y[c] = (c < f.spinIndex(f.firstSpin()) ? 0.3 : 0.8) * u(rng);
+    const PointMotion3 top;
+    Kinematics3 kin(m->bodies());
+    auto V = [&](const VecX& yy) {
+      f.kinematics(yy, charts, top, kin);
+      return f.twistEnergy(yy, charts, kin, *d);
+    };
+    f.derivative(0.0, y, charts, top, dy, *d);
+    const VecX Q = d->rhs;
+    double worst = 0.0;
+    constexpr double eps = 1e-6;
+    for (int c = 0; c < p; ++c) {
+      VecX a = y, b = y;
+      a[c] += eps;
+      b[c] -= eps;
+      worst = std::max(worst, std::abs(-(V(a) - V(b)) / (2 * eps) - Q[c]));
+    }
+    const double scale = Q.cwiseAbs().maxCoeff();
+    std::printf("[independent torsion] %s top: Q_θ vs -dV/dθ (u and φ, charts off centre): %.2e of %.3g N m\n",
+                name(kind), worst / scale, scale);
+    EXPECT_GT(scale, 10.0);
+    EXPECT_LT(worst / scale, 1e-7);  // central differences at 1e-6: truncation ~1e-12, round-off ~1e-10 V/eps
   }
 }
 
@@ -172,15 +173,16 @@ Agreement compare(double h, double duration, Top top = Top::kHeld, bool pinned =
 // plus the natural formulation's Baumgarte response (as the torsion-off cross-check, bounds as there).
 TEST(SpatialIndependentTorsion, AgreesWithNaturalFormulation) {
   const Agreement a = compare(1e-4, 2.0);
-  std::printf("[independent vs natural, torsion] h = 1e-4 s, 2 s: |dx| %.2e m, frames %.2e, spin rates %.2e rad/s, "
-              "top force %.2e of the weight, top twist %.2e N m, E/W %.2e of m g L, independent E - E0 - W %.2e, "
-              "chart switches %ld\n",
-              a.dx, a.frame, a.spin, a.force, a.twist, a.energy, a.balance, a.switches);
-  EXPECT_LT(a.dx, 1e-9);      // [m]
-  EXPECT_LT(a.frame, 1e-9);   // unit vectors
-  EXPECT_LT(a.spin, 1e-7);    // [rad/s]: rates are one derivative up from angles, ~ω_max x angles
-  EXPECT_LT(a.force, 1e-6);   // as the torsion-off bound (stiff axial modes amplify by ω²)
-  EXPECT_LT(a.twist, 1e-6);   // [N m], of moments ~1e2
+  std::printf(
+      "[independent vs natural, torsion] h = 1e-4 s, 2 s: |dx| %.2e m, frames %.2e, spin rates %.2e rad/s, "
+      "top force %.2e of the weight, top twist %.2e N m, E/W %.2e of m g L, independent E - E0 - W %.2e, "
+      "chart switches %ld\n",
+      a.dx, a.frame, a.spin, a.force, a.twist, a.energy, a.balance, a.switches);
+  EXPECT_LT(a.dx, 1e-9);     // [m]
+  EXPECT_LT(a.frame, 1e-9);  // unit vectors
+  EXPECT_LT(a.spin, 1e-7);   // [rad/s]: rates are one derivative up from angles, ~ω_max x angles
+  EXPECT_LT(a.force, 1e-6);  // as the torsion-off bound (stiff axial modes amplify by ω²)
+  EXPECT_LT(a.twist, 1e-6);  // [N m], of moments ~1e2
   EXPECT_LT(a.energy, 1e-9);
   EXPECT_LT(a.balance, 1e-9);
   EXPECT_GT(a.switches, 0);
@@ -190,9 +192,10 @@ TEST(SpatialIndependentTorsion, AgreesWithNaturalFormulation) {
 TEST(SpatialIndependentTorsion, FreeAndSpringTopsAgreeWithNaturalFormulation) {
   for (Top top : {Top::kFree, Top::kSpring}) {
     const Agreement a = compare(1e-4, 1.0, top);
-    std::printf("[independent vs natural, torsion, %s top] |dx| %.2e m, frames %.2e, spin rates %.2e rad/s, top force "
-                "%.2e of the weight, top twist %.2e N m, E/W %.2e of m g L, independent E - E0 - W %.2e\n",
-                name(top), a.dx, a.frame, a.spin, a.force, a.twist, a.energy, a.balance);
+    std::printf(
+        "[independent vs natural, torsion, %s top] |dx| %.2e m, frames %.2e, spin rates %.2e rad/s, top force "
+        "%.2e of the weight, top twist %.2e N m, E/W %.2e of m g L, independent E - E0 - W %.2e\n",
+        name(top), a.dx, a.frame, a.spin, a.force, a.twist, a.energy, a.balance);
     EXPECT_LT(a.dx, 1e-9);
     EXPECT_LT(a.frame, 1e-9);
     EXPECT_LT(a.spin, 1e-7);
@@ -206,9 +209,10 @@ TEST(SpatialIndependentTorsion, FreeAndSpringTopsAgreeWithNaturalFormulation) {
 // Pinned bottom (free in twist; the anchor's force a multiplier in both), held top, from rest, 1 s.
 TEST(SpatialIndependentTorsion, PinnedAgreesWithNaturalFormulation) {
   const Agreement a = compare(1e-4, 1.0, Top::kHeld, true);
-  std::printf("[independent vs natural, torsion, pinned] |dx| %.2e m, frames %.2e, spin rates %.2e rad/s, top force "
-              "%.2e of the weight, top twist %.2e N m, E/W %.2e of m g L, independent E - E0 - W %.2e\n",
-              a.dx, a.frame, a.spin, a.force, a.twist, a.energy, a.balance);
+  std::printf(
+      "[independent vs natural, torsion, pinned] |dx| %.2e m, frames %.2e, spin rates %.2e rad/s, top force "
+      "%.2e of the weight, top twist %.2e N m, E/W %.2e of m g L, independent E - E0 - W %.2e\n",
+      a.dx, a.frame, a.spin, a.force, a.twist, a.energy, a.balance);
   EXPECT_LT(a.dx, 1e-9);
   EXPECT_LT(a.frame, 1e-9);
   EXPECT_LT(a.spin, 1e-7);
@@ -221,9 +225,10 @@ TEST(SpatialIndependentTorsion, PinnedAgreesWithNaturalFormulation) {
 // Truncation: halving h shrinks the difference ~16x (rk4); > 8 asserts order > 3.
 TEST(SpatialIndependentTorsion, DifferenceConvergesAtRk4Order) {
   const Agreement c = compare(4e-4, 0.5), f = compare(2e-4, 0.5);
-  std::printf("[independent vs natural, torsion] h = 4e-4: |dx| %.3e m, frames %.3e; h = 2e-4: %.3e m, %.3e; ratios "
-              "%.1f, %.1f\n",
-              c.dx, c.frame, f.dx, f.frame, c.dx / f.dx, c.frame / f.frame);
+  std::printf(
+      "[independent vs natural, torsion] h = 4e-4: |dx| %.3e m, frames %.3e; h = 2e-4: %.3e m, %.3e; ratios "
+      "%.1f, %.1f\n",
+      c.dx, c.frame, f.dx, f.frame, c.dx / f.dx, c.frame / f.frame);
   EXPECT_GT(c.dx / f.dx, 8.0);
   EXPECT_GT(c.frame / f.frame, 8.0);
 }

@@ -19,8 +19,8 @@ Vec3 endAfter(IntegratorKind kind, double h, const IntegratorOptions& options = 
   auto m = spatial_test::spatialModel(s, Vec3(0, 0, -s.g));
   std::vector<Vec3> dirs(m->bodies(), Vec3(0.3, 0.2, -1.0));
   const Mat3 R0 = spatial_test::yawTilt(0.3, 0.5);
-  SpatialSimulator sim(m, std::make_unique<PlanarMotion3>(spatial_test::topSway(Vec2(0.5, 0.3), 1.0), R0),
-                       kind, options);
+  SpatialSimulator sim(m, std::make_unique<PlanarMotion3>(spatial_test::topSway(Vec2(0.5, 0.3), 1.0), R0), kind,
+                       options);
   sim.reset(rigidChain(m->line(), Vec3::Zero(), dirs, Vec3::Zero(), Vec3(0.2, -0.3, 0.5)), 0.0);
   sim.setProjectionTolerance(projection_tol);
   const int steps = int(std::lround(kDuration / h));
@@ -54,8 +54,10 @@ Order errors(IntegratorKind kind, double projection_tol) {
   dense.jacobian = JacobianKind::kDense;
   const Order o{(endAfter(kind, 1e-3, dense, projection_tol) - ref).norm(),
                 (endAfter(kind, 5e-4, dense, projection_tol) - ref).norm()};
-  std::printf("[spatial integrators] %s, projection above %g: end point off by %.2e m (h = 1e-3 s), %.2e m (h = 5e-4 s), "
-              "ratio %.1f\n", riser_sim::name(kind), projection_tol, o.coarse, o.fine, o.coarse / o.fine);
+  std::printf(
+      "[spatial integrators] %s, projection above %g: end point off by %.2e m (h = 1e-3 s), %.2e m (h = 5e-4 s), "
+      "ratio %.1f\n",
+      riser_sim::name(kind), projection_tol, o.coarse, o.fine, o.coarse / o.fine);
   EXPECT_LT(o.coarse, 1e-2);  // [m] of a 10 m line moving by metres: a broken solve is off by metres or fails
   return o;
 }
@@ -67,7 +69,8 @@ TEST(SpatialIntegrators, ImplicitSchemesRunOnTheDenseJacobian) {
 }
 
 TEST(SpatialIntegrators, GeneralizedAlphaKeepsItsOrderUnderThePerStepProjection) {
-  const Order every = errors(IntegratorKind::kGeneralizedAlpha, 0.0), held = errors(IntegratorKind::kGeneralizedAlpha, 1e-4);
+  const Order every = errors(IntegratorKind::kGeneralizedAlpha, 0.0),
+              held = errors(IntegratorKind::kGeneralizedAlpha, 1e-4);
   // Second order (4 per halving) with the projection after every step and with it held back to drifts
   // above 1e-4; 3.5..4.6 allows the O(h³) terms at h = 1e-3 s.
   for (const Order& o : {every, held}) {

@@ -11,9 +11,9 @@ namespace {
 
 using namespace spatial;
 
-constexpr double kStep = 1e-4;      // [s] rk4 (axial modes ≤ 900 rad/s)
-constexpr double kDuration = 2.0;   // [s]
-constexpr int kSampleEvery = 500;   // steps
+constexpr double kStep = 1e-4;     // [s] rk4 (axial modes ≤ 900 rad/s)
+constexpr double kDuration = 2.0;  // [s]
+constexpr int kSampleEvery = 500;  // steps
 // Round-off only: ~1e-16 relative per operation, amplified by the chaotic-ish whipping over 2e4 steps;
 // measured 7.3e-14 m (free), 5.9e-14 m (pinned). Bound: the brief's 1e-9 m.
 constexpr double kInvarianceTol = 1e-9;  // [m]
@@ -58,8 +58,8 @@ double maxRotationError(bool pinned) {
     for (size_t i = 0; i < pa.size(); ++i) err = std::max(err, (R * pa[i] - pb[i]).norm());
     travel = std::max(travel, (pa[pa.size() / 2] - kin0[pa.size() / 2].A).norm());
   }
-  std::printf("[spatial invariance %s] max |R x_a - x_b| = %.3e m (mid point moved up to %.2f m)\n", pinned ? "pinned" : "free",
-              err, travel);
+  std::printf("[spatial invariance %s] max |R x_a - x_b| = %.3e m (mid point moved up to %.2f m)\n",
+              pinned ? "pinned" : "free", err, travel);
   EXPECT_GT(travel, 0.1);  // the scene moves
   return err;
 }

@@ -35,7 +35,8 @@ Scene sectionedScene(SpaceKind space) {
   s.line.axial_damping = 2e4;
   s.line.bending_damping = 3e2;
   LineSection a{40.0, 8, s.line, SectionHydro(), BuoyancyModules()}, b = a, c = a;
-  b.length = 20.0, b.elements = 2, b.props.outer_diameter = 0.8, b.props.mass_per_length = 350.0;  // 515 kg/m of lift: buoyant
+  b.length = 20.0, b.elements = 2, b.props.outer_diameter = 0.8,
+  b.props.mass_per_length = 350.0;  // 515 kg/m of lift: buoyant
   b.hydro.drag_normal = 2.0, b.hydro.drag_diameter = 0.9;
   c.length = 60.0, c.elements = 6, c.props.EA = 3e8, c.props.EI = 2e4, c.hydro.drag_tangential = 0.3;
   s.sections = {a, b, c};
@@ -93,9 +94,9 @@ TEST(SpatialLineSections, EnergyBalanceWithMovingTop) {
   s.bottom = BottomBoundary::kFree;
   const auto m = buildSpatialModel(s);
   std::vector<Vec3> dirs(m->bodies(), Vec3(0.3, 0.2, -1.0));
-  SpatialSimulator sim(m, std::make_unique<PlanarMotion3>(spatial_test::topSway(Vec2(0.5, 0.3), 1.0),
-                                                          spatial_test::yawTilt(0.3, 0.5)),
-                       IntegratorKind::kRk4);
+  SpatialSimulator sim(
+      m, std::make_unique<PlanarMotion3>(spatial_test::topSway(Vec2(0.5, 0.3), 1.0), spatial_test::yawTilt(0.3, 0.5)),
+      IntegratorKind::kRk4);
   sim.reset(rigidChain(m->line(), Vec3::Zero(), dirs, Vec3::Zero(), Vec3(0.2, -0.3, 0.5)), 0.0);
   const double e0 = sim.energy(), scale = m->line().totalMass() * 9.81 * s.length;
   double worst = 0.0, w_abs = 0.0;
@@ -120,8 +121,8 @@ TEST(SpatialLineSections, EnergyBalanceWithMovingTop) {
   const double e20 = sim2->totalEnergy();
   ASSERT_TRUE(sim2->advanceTo(1.0)) << sim2->divergenceReason();
   const double drift = std::abs(sim2->energyDrift());
-  std::printf("[sections planar energy] drift %.2e, E - E0 = %.3e J, W = %.3e J\n", drift,
-              sim2->totalEnergy() - e20, sim2->work());
+  std::printf("[sections planar energy] drift %.2e, E - E0 = %.3e J, W = %.3e J\n", drift, sim2->totalEnergy() - e20,
+              sim2->work());
   EXPECT_GT(std::abs(sim2->work()), 1e-6 * sim2->model().totalMass() * 9.81 * p.length);
   EXPECT_LT(drift, 1e-8);
 }

@@ -27,7 +27,8 @@ Spectra spectra(int n, const Vec3& gravity) {
   auto m3 = spatial_test::spatialModel(s, gravity);
   // Straight along gravity, Δ = 0: Newton finds the stretched equilibrium.
   const std::vector<Vec3> dirs(m3->bodies(), gravity.normalized());
-  const Kinematics3 eq = spatialEquilibrium(*m3, rigidChain(m3->line(), Vec3::Zero(), dirs, Vec3::Zero(), Vec3::Zero()));
+  const Kinematics3 eq =
+      spatialEquilibrium(*m3, rigidChain(m3->line(), Vec3::Zero(), dirs, Vec3::Zero(), Vec3::Zero()));
   const SpatialModalResult r3 = computeSpatialModes(*m3, eq);
 
   // The planar line at the same equilibrium (its plane: the one through gravity and x after the map).
@@ -66,10 +67,11 @@ void check(int n, const Vec3& gravity, const char* label) {
     worst = std::max(worst, e);
     if (k < 8) worst_low = std::max(worst_low, e);
   }
-  std::printf("[spatial modal %s] n = %d: lowest 3D ω %.6f %.6f %.6f %.6f rad/s; pairs within %.1e; vs planar (pairs) worst "
-              "%.2e (lowest 8: %.2e) over %zu modes, axial %d/%d, residual %.1e, asymmetry %.1e\n",
-              label, n, sp.w3[0], sp.w3[1], sp.w3[2], sp.w3[3], sp.pair_spread, worst, worst_low, sp.w3.size(),
-              sp.axial3, sp.axial2, sp.residual, sp.asymmetry);
+  std::printf(
+      "[spatial modal %s] n = %d: lowest 3D ω %.6f %.6f %.6f %.6f rad/s; pairs within %.1e; vs planar (pairs) worst "
+      "%.2e (lowest 8: %.2e) over %zu modes, axial %d/%d, residual %.1e, asymmetry %.1e\n",
+      label, n, sp.w3[0], sp.w3[1], sp.w3[2], sp.w3[3], sp.pair_spread, worst, worst_low, sp.w3.size(), sp.axial3,
+      sp.axial2, sp.residual, sp.asymmetry);
   // The brief's bound, relative. Both sides take K from central differences (step 1e-6): round-off
   // eps |Q| / h ~ 1e-10 of the entries. Measured 4.1e-11 (vertical, n = 12 and 20), 5.3e-11 (tilted).
   EXPECT_LT(worst, 1e-9);

@@ -32,8 +32,7 @@ long countAllocations(IntegratorKind kind, bool pinned, bool moving = false) {
   IntegratorOptions options;
   options.jacobian = JacobianKind::kDense;  // the structured solves: test_spatial_shifted_no_alloc.cpp
   options.tolerance = 1e-8;
-  SpatialSimulator sim(m, std::make_unique<PlanarMotion3>(spatial_test::topSway(Vec2(0.5, 0.3), 2.0)),
-                       kind, options);
+  SpatialSimulator sim(m, std::make_unique<PlanarMotion3>(spatial_test::topSway(Vec2(0.5, 0.3), 2.0)), kind, options);
   sim.reset(kin0, 0.0);
   AlignedVector<Vec3> p(m->bodies() + 1);
   for (int k = 0; k < kWarmup; ++k) EXPECT_TRUE(sim.step(kStep));
@@ -52,7 +51,9 @@ long countAllocations(IntegratorKind kind, bool pinned, bool moving = false) {
 TEST(SpatialNoAlloc, Rk4Free) { EXPECT_EQ(countAllocations(IntegratorKind::kRk4, false), 0); }
 TEST(SpatialNoAlloc, Rk4Pinned) { EXPECT_EQ(countAllocations(IntegratorKind::kRk4, true), 0); }
 TEST(SpatialNoAlloc, Dopri5Pinned) { EXPECT_EQ(countAllocations(IntegratorKind::kDopri5, true), 0); }
-TEST(SpatialNoAlloc, GeneralizedAlphaDense) { EXPECT_EQ(countAllocations(IntegratorKind::kGeneralizedAlpha, false), 0); }
+TEST(SpatialNoAlloc, GeneralizedAlphaDense) {
+  EXPECT_EQ(countAllocations(IntegratorKind::kGeneralizedAlpha, false), 0);
+}
 
 TEST(SpatialNoAlloc, Rk4MovingBottomFlexJoints) { EXPECT_EQ(countAllocations(IntegratorKind::kRk4, true, true), 0); }
 

@@ -14,13 +14,13 @@ namespace {
 
 using namespace spatial;
 
-constexpr double kLength = 2.0;     // [m]
-constexpr double kEndMass = 1.0;    // [kg]
-constexpr double kEps = 1e-6;       // line mass / end mass
-constexpr double kG = 9.81;         // [m/s^2]
+constexpr double kLength = 2.0;   // [m]
+constexpr double kEndMass = 1.0;  // [kg]
+constexpr double kEps = 1e-6;     // line mass / end mass
+constexpr double kG = 9.81;       // [m/s^2]
 // Light links have transverse modes at ω ~ sqrt(T / (ε m_s L)) ~ 1e4 rad/s; rk4 needs ω h < 2.8.
 // h = 5e-5 s: ω h ~ 0.5.
-constexpr double kStep = 5e-5;      // [s]
+constexpr double kStep = 5e-5;  // [s]
 
 std::shared_ptr<SpatialModel> lightLine() {
   spatial_test::LineSpec s;
@@ -41,7 +41,8 @@ double angularMomentumZ(const SpatialModel& m, const Kinematics3& kin) {
     const Rfe& r = m.rfe(i);
     for (int p = 0; p < r.num_parts; ++p) {
       const RigidPart& q = r.part[p];
-      lz += q.mass * kin[i].point(q.s0, q.kappa).cross(kin[i].velocity(q.s0, q.kappa)).z() + q.inertia * kin[i].omega().z();
+      lz += q.mass * kin[i].point(q.s0, q.kappa).cross(kin[i].velocity(q.s0, q.kappa)).z() +
+            q.inertia * kin[i].omega().z();
     }
   }
   return lz;
@@ -68,8 +69,10 @@ TEST(SpatialPendulum, ConicalPendulumHoldsRadiusAndAngularMomentum) {
     dl = std::max(dl, std::abs(angularMomentumZ(*m, kin) / lz0 - 1.0));
     cerr = std::max(cerr, sim.constraintError());
   }
-  std::printf("[spatial conical] 10 revolutions (%.2f s): max |r - r0| = %.2e m (r0 = %.3f m), |Lz/Lz0 - 1| = %.2e, "
-              "joint gap %.1e m\n", duration, dr, r0, dl, cerr);
+  std::printf(
+      "[spatial conical] 10 revolutions (%.2f s): max |r - r0| = %.2e m (r0 = %.3f m), |Lz/Lz0 - 1| = %.2e, "
+      "joint gap %.1e m\n",
+      duration, dr, r0, dl, cerr);
   // The straight start is the steady state of the massless line; the line mass ε shifts the chain's steady
   // state by O(ε L) and the light links oscillate about it with that amplitude. Bound ε L = 2e-6 m
   // (measured 7.8e-8 m; a wrong Ω or inertia term gives a radius error of order r0 itself).
@@ -117,7 +120,8 @@ TEST(SpatialPendulum, PrecessingSphericalPendulumMatchesSphericalCoordinates) {
     ref = rk4Step(ref, kStep);
     if (k % 20) continue;
     sim.kinematics(kin);
-    const Vec3 x_ref = kLength * Vec3(std::sin(ref.th) * std::cos(ref.ps), std::sin(ref.th) * std::sin(ref.ps), -std::cos(ref.th));
+    const Vec3 x_ref =
+        kLength * Vec3(std::sin(ref.th) * std::cos(ref.ps), std::sin(ref.th) * std::sin(ref.ps), -std::cos(ref.th));
     err = std::max(err, (kin.back().end() - x_ref).norm());
     th_min = std::min(th_min, ref.th), th_max = std::max(th_max, ref.th);
   }

@@ -18,8 +18,8 @@ constexpr double kDuration = 2.0;  // [s]
 constexpr double kSample = 0.05;   // [s]
 
 struct Agreement {
-  double max_diff = 0.0;  // [m] over every A_i and the end, every sample
-  double max_force_diff = 0.0;  // top and bottom reactions relative to the line's weight
+  double max_diff = 0.0;          // [m] over every A_i and the end, every sample
+  double max_force_diff = 0.0;    // top and bottom reactions relative to the line's weight
   double max_out_of_plane = 0.0;  // [m] |y| of the spatial run
 };
 
@@ -70,11 +70,11 @@ Agreement compare(bool pinned, double h, bool axial = true) {
   return a;
 }
 
-// Measured (h = 1e-4 s): free 5.2e-13 m, pinned 2.7e-12 m, inextensible pinned 2.3e-12 m; h = 4e-4 -> 2e-4 s: 1.29e-10 -> 8.1e-12 m (16.0x,
-// O(h⁴)). Bound 1e-9 m: > 300x margin, while a modelling error shows far above it (checked: dropping the
-// velocity terms h = 2Δ'[...] gives 9.0e-5 m and a top reaction 2.8e-3 of the weight off).
-constexpr double kStep = 1e-4;       // [s] rk4; axial modes ω ≤ 900 rad/s: ωh ≤ 0.09
-constexpr double kAgreeTol = 1e-9;   // [m]
+// Measured (h = 1e-4 s): free 5.2e-13 m, pinned 2.7e-12 m, inextensible pinned 2.3e-12 m; h = 4e-4 -> 2e-4 s: 1.29e-10
+// -> 8.1e-12 m (16.0x, O(h⁴)). Bound 1e-9 m: > 300x margin, while a modelling error shows far above it (checked:
+// dropping the velocity terms h = 2Δ'[...] gives 9.0e-5 m and a top reaction 2.8e-3 of the weight off).
+constexpr double kStep = 1e-4;      // [s] rk4; axial modes ω ≤ 900 rad/s: ωh ≤ 0.09
+constexpr double kAgreeTol = 1e-9;  // [m]
 // Reactions (top; bottom when pinned) relative to the weight: they follow the accelerations, where the
 // stiff axial modes amplify the position difference by ω² ~ 1e6 s⁻²: measured 1.8e-12 (free),
 // 3.5e-11 (pinned); bound 1e-6.

@@ -15,8 +15,8 @@ namespace {
 spatial::InitialState3 tetherStart(double end_polar_inertia, double GJ = 10.0, bool torsion = true) {
   std::vector<std::string> set = {"environment.current.velocity=[0, 0.3, 0]"};  // across the top-anchor plane
   if (torsion)
-    set.push_back("line.torsion={stiffness: " + std::to_string(GJ) + ", end_polar_inertia: " +
-                  std::to_string(end_polar_inertia) + "}");
+    set.push_back("line.torsion={stiffness: " + std::to_string(GJ) +
+                  ", end_polar_inertia: " + std::to_string(end_polar_inertia) + "}");
   const Scene s = loadSceneFile(std::string(RISER_SIM_SOURCE_DIR) + "/config/scenes/rov_tether.yaml", set);
   return spatial::solveInitialState3(s, s.top.position3);
 }

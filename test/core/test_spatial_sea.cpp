@@ -61,8 +61,9 @@ TEST(SpatialSea, TermsAgainstTheirEnergyAndPower) {
   const MorisonDrag3 drag(water, 0.3, 1.1);
   const FroudeKrylov3 fk(water, 1.8, 1.3);
   spatial_test::checkGradient(lift, *m);
-  for (const SpatialForceTerm* t : {static_cast<const SpatialForceTerm*>(&lift), static_cast<const SpatialForceTerm*>(&drag),
-                                    static_cast<const SpatialForceTerm*>(&fk)})
+  for (const SpatialForceTerm* t :
+       {static_cast<const SpatialForceTerm*>(&lift), static_cast<const SpatialForceTerm*>(&drag),
+        static_cast<const SpatialForceTerm*>(&fk)})
     spatial_test::checkPower(*t, *m);
   // The check has teeth: the lift is not zero on these states.
   std::mt19937 rng(7);
@@ -114,8 +115,10 @@ TEST(SpatialSea, YawedPlanarSeaMatchesThePlanarCore) {
   EXPECT_LE(worst[1], 1e-9);
   EXPECT_GT(worst[0] / worst[1], 8.0);  // the difference is truncation (fourth order), not a modelling one
   EXPECT_GT(lean, 1.0);                 // the current moves the end downstream by metres: the test sees the sea
-  std::printf("[ measured ] planar sea yawed %g deg through 3D vs the planar core, 4 s: %.2e m (h = 2e-3 s), %.2e m "
-              "(1e-3 s); end leans %.3g m downstream at rest\n", psi, worst[0], worst[1], lean);
+  std::printf(
+      "[ measured ] planar sea yawed %g deg through 3D vs the planar core, 4 s: %.2e m (h = 2e-3 s), %.2e m "
+      "(1e-3 s); end leans %.3g m downstream at rest\n",
+      psi, worst[0], worst[1], lean);
 }
 
 // Waves from 60 deg, the current towards -30 deg and the top circling: the line moves out of every plane.
@@ -194,8 +197,10 @@ environment:
       vmax = std::max(vmax, v3.norm());
     }
   EXPECT_LE(err, 1e-12 * vmax);
-  std::printf("[ measured ] JONSWAP towards 120 deg in 3D: energy balance %.2e of m g L over 4 s (rk4 5 ms); "
-              "Water3 vs the planar kinematics along the heading %.2e of |v|\n", worst, err / vmax);
+  std::printf(
+      "[ measured ] JONSWAP towards 120 deg in 3D: energy balance %.2e of m g L over 4 s (rk4 5 ms); "
+      "Water3 vs the planar kinematics along the heading %.2e of |v|\n",
+      worst, err / vmax);
 }
 
 // A line hanging in a current at heading 120 deg leans that way and starts at rest (the planar statics in the
@@ -213,9 +218,10 @@ environment:
   for (int k = 0; k < 100; ++k) ASSERT_TRUE(run.step()) << run.divergenceReason();
   const double moved = (run.outputs().points.back() - end0).norm();
   EXPECT_LE(moved, 1e-6);  // the equilibrium holds in 3D (the builder's check, at rest, and 1 s of motion)
-  std::printf("[ measured ] hanging in a current at 120 deg: end %.4g m downstream, acceleration at rest %.2e m/s^2 "
-              "(bound %.2e), moved %.2e m in 1 s\n", Vec2(end0.x(), end0.y()).norm(), run.initial().max_acceleration,
-              run.initial().acceleration_bound, moved);
+  std::printf(
+      "[ measured ] hanging in a current at 120 deg: end %.4g m downstream, acceleration at rest %.2e m/s^2 "
+      "(bound %.2e), moved %.2e m in 1 s\n",
+      Vec2(end0.x(), end0.y()).norm(), run.initial().max_acceleration, run.initial().acceleration_bound, moved);
 
   // A heading in a planar scene is refused naming it.
   EXPECT_THROW(seaScene("environment: {water: {}, waves: {height: 1.0, period: 5.0, heading: 30.0}}\n"), SceneError);
@@ -226,7 +232,8 @@ environment:
 // shape in the current's plane. The relaxation stops at 1 % of the builder's acceleration bound; the
 // slowest mode's stiffness (ω1² L ~ g) turns that into ~1e-6 m: bound 1e-5 m.
 TEST(SpatialSea, RelaxationReachesThePlanarStatics) {
-  const Scene s = seaScene("space: spatial\nenvironment:\n  water: {}\n  current: {velocity: [-0.5, 0.8660254037844386, 0.0]}\n");
+  const Scene s =
+      seaScene("space: spatial\nenvironment:\n  water: {}\n  current: {velocity: [-0.5, 0.8660254037844386, 0.0]}\n");
   SpatialRun run(s);  // the planar statics in the current's plane
   const Scene still = seaScene("space: spatial\nenvironment: {water: {}}\n");
   SpatialRun hang(still);
@@ -236,16 +243,20 @@ TEST(SpatialSea, RelaxationReachesThePlanarStatics) {
   for (size_t i = 0; i < r.kin.size(); ++i) d = std::max(d, (r.kin[i].end() - run.initial().kin[i].end()).norm());
   EXPECT_LE(d, 1e-5);
   EXPECT_LE(r.acceleration, 0.01 * run.initial().acceleration_bound);
-  std::printf("[ measured ] relaxation from straight down vs the planar statics in a 120 deg current: %.2e m after "
-              "%.3g s (%d steps), acceleration %.2e m/s^2\n", d, r.time, r.steps, r.acceleration);
+  std::printf(
+      "[ measured ] relaxation from straight down vs the planar statics in a 120 deg current: %.2e m after "
+      "%.3g s (%d steps), acceleration %.2e m/s^2\n",
+      d, r.time, r.steps, r.acceleration);
 }
 
 // What the planar statics cannot solve: a profile veering from 0 deg at the surface to 90 deg at 40 m, and a
 // current across a pinned line. Relaxed in 3D, both start at rest (1 s of motion) and bend the right way.
 TEST(SpatialSea, VeeringAndCrossCurrentsRelaxedIn3D) {
-  const Scene veer = seaScene("space: spatial\nenvironment:\n  water: {}\n  current: {profile: [[0.0, 0.8, 0.0], [40.0, 0.0, 0.8]]}\n");
-  const Scene cross = seaScene("space: spatial\nbottom: {type: pinned, position: [30.0, 0.0, -45.0]}\n"
-                               "initial: {type: between_points}\nenvironment:\n  water: {}\n  current: {velocity: [0.0, 0.5, 0.0]}\n");
+  const Scene veer = seaScene(
+      "space: spatial\nenvironment:\n  water: {}\n  current: {profile: [[0.0, 0.8, 0.0], [40.0, 0.0, 0.8]]}\n");
+  const Scene cross = seaScene(
+      "space: spatial\nbottom: {type: pinned, position: [30.0, 0.0, -45.0]}\n"
+      "initial: {type: between_points}\nenvironment:\n  water: {}\n  current: {velocity: [0.0, 0.5, 0.0]}\n");
   for (const Scene* sc : {&veer, &cross}) {
     SpatialRun run(*sc);
     EXPECT_NE(run.initial().about.find("relaxed in 3D"), std::string::npos) << run.initial().about;
@@ -280,8 +291,10 @@ TEST(SpatialSea, DisplacedEndInACrossCurrent) {
   const auto scene = [](double vy) {
     char v[40];
     std::snprintf(v, sizeof(v), "%.17g", vy);
-    return seaScene("space: spatial\ninitial: {type: displaced, end_offset: [20.0, 0.0], end_force: hold}\n"
-                    "environment:\n  water: {}\n  current: {velocity: [0.3, " + std::string(v) + ", 0.0]}\n");
+    return seaScene(
+        "space: spatial\ninitial: {type: displaced, end_offset: [20.0, 0.0], end_force: hold}\n"
+        "environment:\n  water: {}\n  current: {velocity: [0.3, " +
+        std::string(v) + ", 0.0]}\n");
   };
   SpatialRun run(scene(0.5));
   const InitialState3& init = run.initial();
@@ -311,15 +324,17 @@ TEST(SpatialSea, DisplacedEndInACrossCurrent) {
     across = std::max(across, std::abs(b[i].y()));
   }
   // The force's in-plane part (x; z is 0): its y part is first order in the cross current, as the positions'.
-  const double dF = std::abs(planar.initial().end_force.x() - nudged.initial().end_force.x()) /
-                    planar.initial().end_force.norm();
+  const double dF =
+      std::abs(planar.initial().end_force.x() - nudged.initial().end_force.x()) / planar.initial().end_force.norm();
   EXPECT_LE(in_plane, 1e-9);
   EXPECT_LE(dF, 1e-9);
   EXPECT_LE(across, 1e-7 * std::abs(mid.y()) * 10.0);  // linear in the cross current, with room
-  std::printf("[ measured ] displaced end in a current with 0.5 m/s across its plane: %s; acceleration at rest %.2e "
-              "m/s^2 (bound %.2e); mid (%.3g, %.3g, %.3g) m; moved %.2e m in 1 s. Cross part 5e-8 m/s vs the planar "
-              "statics: in-plane %.2e m, end force (x) %.2e relative, across %.2e m\n", init.about.c_str(),
-              init.max_acceleration, init.acceleration_bound, mid.x(), mid.y(), mid.z(), moved, in_plane, dF, across);
+  std::printf(
+      "[ measured ] displaced end in a current with 0.5 m/s across its plane: %s; acceleration at rest %.2e "
+      "m/s^2 (bound %.2e); mid (%.3g, %.3g, %.3g) m; moved %.2e m in 1 s. Cross part 5e-8 m/s vs the planar "
+      "statics: in-plane %.2e m, end force (x) %.2e relative, across %.2e m\n",
+      init.about.c_str(), init.max_acceleration, init.acceleration_bound, mid.x(), mid.y(), mid.z(), moved, in_plane,
+      dF, across);
 }
 
 // No allocation per step with every sea term on (waves, a sheared current, drag, buoyancy, Froude-Krylov, added

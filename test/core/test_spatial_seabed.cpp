@@ -126,14 +126,19 @@ TEST(SpatialSeabed, DraggedAlongAndSideways) {
     const std::string vel = across ? "[0.0, 0.5, 0.0]" : "[0.5, 0.0, 0.0]";
     const std::string knots = "[[0.0, [0.0, 0.0, 0.0]], [1.0, " + vel + "], [100.0, " + vel + "]]";
     const double mu_a = across ? 1.0 : 0.5, mu_l = 1.0;
-    const Scene s = loadSceneText(R"(space: spatial
+    const Scene s = loadSceneText(
+        R"(space: spatial
 line: {length: 20.0, elements: 10, EA: 1.0e7, EI: 1.0e3, mass_per_length: 50.0, axial_damping: 1.0e6, bending_damping: 10.0}
-top: {position: [0.0, 0.0, 0.0], motion: {type: velocity_profile, knots: )" + knots + R"(}}
-bottom: {type: pinned, position: [20.0, 0.0, 0.0], motion: {type: velocity_profile, knots: )" + knots + R"(}}
+top: {position: [0.0, 0.0, 0.0], motion: {type: velocity_profile, knots: )" +
+            knots + R"(}}
+bottom: {type: pinned, position: [20.0, 0.0, 0.0], motion: {type: velocity_profile, knots: )" +
+            knots + R"(}}
 initial: {type: straight, angle: 0.0}
 seabed: {level: 0.0, stiffness_normal: 1.0e6, damping_normal: 2.0e3, friction_velocity: 0.01}
 solver: {integrator: midpoint, dt: 0.002}
-)", "test_spatial_seabed", {"seabed.friction_axial=" + std::to_string(mu_a), "seabed.friction_lateral=" + std::to_string(mu_l)});
+)",
+        "test_spatial_seabed",
+        {"seabed.friction_axial=" + std::to_string(mu_a), "seabed.friction_lateral=" + std::to_string(mu_l)});
     SpatialRun run(s);
     Vec3 sum = Vec3::Zero();
     int samples = 0;
@@ -150,9 +155,10 @@ solver: {integrator: midpoint, dt: 0.002}
     const double back = -(across ? F.y() : F.x());  // the line pulls the holders back
     EXPECT_NEAR(back, expected, 2e-3 * expected);
     EXPECT_GT(N, 0.9 * W);  // the seabed carries the line
-    std::printf("[ measured ] dragged %s at 0.5 m/s: holders' force %.6g N against mu N v/sqrt(v^2+vs^2) = %.6g N "
-                "(%.2e); the seabed carries %.4g of W\n", across ? "sideways" : "along", back, expected,
-                std::abs(back / expected - 1.0), N / W);
+    std::printf(
+        "[ measured ] dragged %s at 0.5 m/s: holders' force %.6g N against mu N v/sqrt(v^2+vs^2) = %.6g N "
+        "(%.2e); the seabed carries %.4g of W\n",
+        across ? "sideways" : "along", back, expected, std::abs(back / expected - 1.0), N / W);
   }
 }
 
@@ -168,7 +174,8 @@ std::string num(double v) {
 // the planar law without anchored springs), the top swaying along x; yawed by 25 deg into 3D. rk4 at 1e-3 and
 // 5e-4 s, 3 s: the difference is the two schemes' truncation (fourth order), below 1e-9 m at 5e-4 s.
 TEST(SpatialSeabed, YawedPlanarTouchdownMatchesThePlanarCore) {
-  const char* line = R"(line: {length: 60.0, elements: 12, EA: 1.0e7, EI: 1.0e4, mass_per_length: 80.0, axial_damping: 1.0e4, bending_damping: 100.0}
+  const char* line =
+      R"(line: {length: 60.0, elements: 12, EA: 1.0e7, EI: 1.0e4, mass_per_length: 80.0, axial_damping: 1.0e4, bending_damping: 100.0}
 seabed: {level: -50.0, stiffness_normal: 2.0e5, damping_normal: 2.0e3, damping_tangential: 500.0}
 initial: {type: displaced, end_dx: 20.0, end_force: hold}
 solver: {integrator: rk4}
@@ -176,9 +183,11 @@ solver: {integrator: rk4}
   const Mat3 R = yaw(25.0);
   const Vec3 amp = R * Vec3(2.0, 0.0, 0.5);
   const double c = std::cos(25.0 * M_PI / 180.0), s = std::sin(25.0 * M_PI / 180.0);
-  const std::string planar = "top: {position: [0.0, 0.0], motion: {type: sinusoid, amplitude: [2.0, 0.5], period: 4.0}}\n";
-  const std::string spatial3 = "space: spatial\ntop: {position: [0.0, 0.0, 0.0], motion: {type: sinusoid, amplitude: [" +
-                               num(amp.x()) + ", " + num(amp.y()) + ", " + num(amp.z()) + "], period: 4.0}}\n";
+  const std::string planar =
+      "top: {position: [0.0, 0.0], motion: {type: sinusoid, amplitude: [2.0, 0.5], period: 4.0}}\n";
+  const std::string spatial3 =
+      "space: spatial\ntop: {position: [0.0, 0.0, 0.0], motion: {type: sinusoid, amplitude: [" + num(amp.x()) + ", " +
+      num(amp.y()) + ", " + num(amp.z()) + "], period: 4.0}}\n";
   double worst[2] = {0.0, 0.0};
   int touching = 0;
   for (int r = 0; r < 2; ++r) {
@@ -207,8 +216,10 @@ solver: {integrator: rk4}
   EXPECT_GE(touching, 2);  // the seabed carries part of the line
   EXPECT_LE(worst[1], 1e-9);
   EXPECT_GT(worst[0] / worst[1], 8.0);
-  std::printf("[ measured ] planar touchdown yawed 25 deg vs the planar core, 3 s: %.2e m (h = 1e-3 s), %.2e m "
-              "(5e-4 s); %d points on the seabed at rest\n", worst[0], worst[1], touching);
+  std::printf(
+      "[ measured ] planar touchdown yawed 25 deg vs the planar core, 3 s: %.2e m (h = 1e-3 s), %.2e m "
+      "(5e-4 s); %d points on the seabed at rest\n",
+      worst[0], worst[1], touching);
 }
 
 TEST(SpatialSeabed, KeysRefusedWhereTheyDoNotApply) {
@@ -220,8 +231,9 @@ TEST(SpatialSeabed, KeysRefusedWhereTheyDoNotApply) {
     EXPECT_NE(std::string(e.what()).find("seabed.friction_axial"), std::string::npos) << e.what();
   }
   try {
-    loadSceneText(base + "space: spatial\nseabed: {level: -50.0, stiffness_normal: 1.0e5, stiffness_tangential: 1.0e5}\n",
-                  "spatial");
+    loadSceneText(
+        base + "space: spatial\nseabed: {level: -50.0, stiffness_normal: 1.0e5, stiffness_tangential: 1.0e5}\n",
+        "spatial");
     ADD_FAILURE() << "anchored springs accepted in a 3D scene";
   } catch (const SceneError& e) {
     EXPECT_NE(std::string(e.what()).find("seabed.stiffness_tangential"), std::string::npos) << e.what();
@@ -237,8 +249,10 @@ TEST(SpatialSeabed, StraightStartInsideTheSeabedRefusedInBothEngines) {
       "initial: {type: straight, angle: -90.0}\n";
   const auto refusal = [](const Scene& scene) -> std::string {
     try {
-      if (scene.space == SpaceKind::kSpatial) solveInitialState3(scene, scene.top.position3);
-      else solveInitialState(scene, *buildModel(scene), scene.top.position);
+      if (scene.space == SpaceKind::kSpatial)
+        solveInitialState3(scene, scene.top.position3);
+      else
+        solveInitialState(scene, *buildModel(scene), scene.top.position);
     } catch (const std::runtime_error& e) {
       return e.what();
     }
@@ -255,8 +269,9 @@ TEST(SpatialSeabed, StraightStartInsideTheSeabedRefusedInBothEngines) {
   }
   // 3D, sloped: the plane rises along +x through level -61 on the origin's vertical; at the line's x = 30 m a 5°
   // slope lifts it to -61 + 30 tan 5° = -58.4 m, above the line's lower end at -60 m.
-  const Scene sloped = loadSceneText(base + "space: spatial\ntop: {position: [30.0, 0.0, 0.0]}\n"
-                                            "seabed: {level: -61.0, stiffness_normal: 1.0e5, slope: 5.0}\n",
+  const Scene sloped = loadSceneText(base +
+                                         "space: spatial\ntop: {position: [30.0, 0.0, 0.0]}\n"
+                                         "seabed: {level: -61.0, stiffness_normal: 1.0e5, slope: 5.0}\n",
                                      "sloped");
   EXPECT_NE(refusal(sloped).find("below the seabed"), std::string::npos) << refusal(sloped);
 }

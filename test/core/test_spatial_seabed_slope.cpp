@@ -78,8 +78,8 @@ TEST(SpatialSeabedSlope, LawOnTheIncline) {
   const double p = 1e-3, v = 0.2, N = spec.stiffness_normal * p * (m->bodies() + 1);
   for (const bool across : {false, true}) {
     const Vec3 vel = v * (across ? l : a);
-    const Kinematics3 kin = rigidChain(m->line(), Vec3(0.0, 0.0, spec.level) - p * n, std::vector<Vec3>(m->bodies(), a),
-                                       vel, Vec3::Zero());
+    const Kinematics3 kin =
+        rigidChain(m->line(), Vec3(0.0, 0.0, spec.level) - p * n, std::vector<Vec3>(m->bodies(), a), vel, Vec3::Zero());
     EXPECT_EQ(bed.contacts(*m, kin), m->bodies() + 1);
     VecX Q = VecX::Zero(m->dofs());
     const double P = bed.addForcesAndPower(*m, kin, 0.0, Q);
@@ -141,15 +141,18 @@ Slide slide(double theta, double psi, double mu, const std::vector<std::pair<dou
   const Vec3 fall = -std::cos(theta) * h - std::sin(theta) * Vec3::UnitZ();
   const Vec3 top = -(m * g * std::cos(theta) / (6.0 * k)) * n;  // the static sink of 6 points, on the origin's normal
   std::string ks = "[";
-  for (size_t i = 0; i < knots.size(); ++i) ks += (i ? ", [" : "[") + num(knots[i].first) + ", " + vec(knots[i].second * fall) + "]";
+  for (size_t i = 0; i < knots.size(); ++i)
+    ks += (i ? ", [" : "[") + num(knots[i].first) + ", " + vec(knots[i].second * fall) + "]";
   ks += "]";
   const Scene s = loadSceneText(
       "space: spatial\nline: {length: 2.0, elements: 4, EA: 1.0e8, EI: 1.0e7, mass_per_length: 50.0, axial_damping: "
-      "7.0e4, bending_damping: 1.0e4}\ntop: {position: " + vec(top) + ", motion: {type: velocity_profile, knots: " + ks +
+      "7.0e4, bending_damping: 1.0e4}\ntop: {position: " +
+          vec(top) + ", motion: {type: velocity_profile, knots: " + ks +
           "}}\ninitial: {type: straight, angle: " + num(-theta / kDeg) + ", heading: " + num(psi / kDeg + 180.0) +
           "}\nseabed: {level: 0.0, stiffness_normal: 1.0e5, damping_normal: 2.6e3, friction_velocity: 0.01, "
-          "friction_axial: " + num(mu) + ", friction_lateral: 0.9, slope: " + num(theta / kDeg) + ", slope_heading: " +
-          num(psi / kDeg) + "}\nsolver: {integrator: midpoint, dt: 0.001}\n",
+          "friction_axial: " +
+          num(mu) + ", friction_lateral: 0.9, slope: " + num(theta / kDeg) + ", slope_heading: " + num(psi / kDeg) +
+          "}\nsolver: {integrator: midpoint, dt: 0.001}\n",
       "slide");
   SpatialRun run(s);
   Slide out;
@@ -186,15 +189,16 @@ TEST(SpatialSeabedSlope, SlidesDownASteepIncline) {
   const double law = mu * std::abs(r.normal) / m + mu * g * std::cos(theta) * vs * vs / (2.0 * v_min * v_min);
   EXPECT_LE(std::abs(a_free - a), law + 1e-4 * a);
   EXPECT_LE(std::abs(r.normal), 1e-3 * m * g);  // the holder hardly carries the line: it slides on the seabed
-  std::printf("[ measured ] theta 30 deg, mu 0.3: free acceleration %.9g vs g (sin - mu cos) = %.9g m/s^2 (%.2e; "
-              "bound %.2e); holder's normal force %.3g N\n", a_free, a, std::abs(a_free / a - 1.0), (law + 1e-4 * a) / a,
-              r.normal);
+  std::printf(
+      "[ measured ] theta 30 deg, mu 0.3: free acceleration %.9g vs g (sin - mu cos) = %.9g m/s^2 (%.2e; "
+      "bound %.2e); holder's normal force %.3g N\n",
+      a_free, a, std::abs(a_free / a - 1.0), (law + 1e-4 * a) / a, r.normal);
 }
 
 TEST(SpatialSeabedSlope, CreepsOnAGentleIncline) {
   const double theta = 10.0 * kDeg, psi = -60.0 * kDeg, mu = 0.5, m = 100.0, g = 9.81, vs = 0.01;
   const double r = std::tan(theta) / mu, vc = vs * r / std::sqrt(1.0 - r * r);  // 3.77e-3 m/s
-  const double W = m * g * std::sin(theta);  // the downhill pull
+  const double W = m * g * std::sin(theta);                                     // the downhill pull
   for (const double factor : {0.0, 1.0, 3.0}) {
     const double v = factor * vc;
     const Slide s = slide(theta, psi, mu, {{0.0, 0.0}, {0.5, v}, {100.0, v}}, 2.0, 3.0);
@@ -204,9 +208,10 @@ TEST(SpatialSeabedSlope, CreepsOnAGentleIncline) {
     if (factor == 1.0) {
       EXPECT_LE(std::abs(s.along), 1e-3 * W);  // free, it creeps at v_c
     }
-    std::printf("[ measured ] theta 10 deg, mu 0.5, holder at %.0f v_c (v_c = %.4g m/s): its force along the fall line "
-                "%.6g N vs the law %.6g N (%.2e of m g sin; m g sin = %.4g N); normal %.3g N\n", factor, vc, s.along,
-                expected, std::abs(s.along - expected) / W, W, s.normal);
+    std::printf(
+        "[ measured ] theta 10 deg, mu 0.5, holder at %.0f v_c (v_c = %.4g m/s): its force along the fall line "
+        "%.6g N vs the law %.6g N (%.2e of m g sin; m g sin = %.4g N); normal %.3g N\n",
+        factor, vc, s.along, expected, std::abs(s.along - expected) / W, W, s.normal);
   }
 }
 
@@ -261,11 +266,13 @@ TEST(SpatialSeabedSlope, HangingOntoTheSlopeStartsAtRest) {
     for (size_t i = 0; i < p.size(); ++i) moved = std::max(moved, (p[i] - p0[i]).norm());
   }
   EXPECT_LE(moved, 1e-6);
-  std::printf("[ measured ] hanging onto an 8 deg slope: %s; acceleration at rest %.2e m/s^2 (bound %.2e); %d points "
-              "on the slope, end %.3g m downhill; moved %.2e m in 1 s\n", init.about.c_str(), init.max_acceleration,
-              init.acceleration_bound, on, reach.dot(downhill), moved);
+  std::printf(
+      "[ measured ] hanging onto an 8 deg slope: %s; acceleration at rest %.2e m/s^2 (bound %.2e); %d points "
+      "on the slope, end %.3g m downhill; moved %.2e m in 1 s\n",
+      init.about.c_str(), init.max_acceleration, init.acceleration_bound, on, reach.dot(downhill), moved);
   // slope 0 (any heading) is the level seabed's run, bit for bit.
-  SpatialRun lvl(loadSceneText(kHanging, "level")), zero(loadSceneText(kHanging, "zero", {"seabed.slope=0", "seabed.slope_heading=40"}));
+  SpatialRun lvl(loadSceneText(kHanging, "level")),
+      zero(loadSceneText(kHanging, "zero", {"seabed.slope=0", "seabed.slope_heading=40"}));
   for (int k = 0; k < 20; ++k) ASSERT_TRUE(lvl.step() && zero.step());
   EXPECT_TRUE(lvl.outputs().points == zero.outputs().points);
 }
@@ -284,14 +291,16 @@ TEST(SpatialSeabedSlope, KeysRefusedWhereTheyDoNotApplyAndADisplacedEnd) {
   refused("space: spatial\nseabed: {level: -50.0, stiffness_normal: 1.0e5, slope: 45.0}\n", "seabed.slope");
   refused("space: spatial\nseabed: {level: -50.0, stiffness_normal: 1.0e5, slope: -1.0}\n", "seabed.slope");
   // A planar scene takes slope 0 (the level seabed), whatever the heading.
-  EXPECT_NO_THROW(loadSceneText(base + "seabed: {level: -50.0, stiffness_normal: 1.0e5, slope: 0.0, slope_heading: 20.0}\n", "ok"));
+  EXPECT_NO_THROW(
+      loadSceneText(base + "seabed: {level: -50.0, stiffness_normal: 1.0e5, slope: 0.0, slope_heading: 20.0}\n", "ok"));
   // A displaced end on the slope: Newton in 3D with the end held horizontally (a contact's kink is stepped over
   // by backtracking); the builder's rest check with the end force as a dead load, the end where asked, on the
   // slope; at rest the forces on the line less the seabed's (along n) balance in the plane to M a_max.
   const Scene displaced = loadSceneText(base + R"(space: spatial
 initial: {type: displaced, end_offset: [20.0, 0.0], end_force: hold}
 seabed: {level: -50.0, stiffness_normal: 1.0e5, slope: 5.0}
-)", "displaced");
+)",
+                                        "displaced");
   SpatialRun run(displaced);
   const InitialState3& init = run.initial();
   EXPECT_NE(init.about.find("Newton in 3D"), std::string::npos) << init.about;
@@ -310,9 +319,10 @@ seabed: {level: -50.0, stiffness_normal: 1.0e5, slope: 5.0}
     for (size_t i = 0; i < p0.size(); ++i) moved = std::max(moved, (run.outputs().points[i] - p0[i]).norm());
   }
   EXPECT_LE(moved, 1e-6);
-  std::printf("[ measured ] displaced end on a 5 deg slope: %s; acceleration at rest %.2e m/s^2 (bound %.2e); "
-              "forces in the plane %.2e N; moved %.2e m in 0.2 s\n", init.about.c_str(), init.max_acceleration,
-              init.acceleration_bound, (sum - sum.dot(n) * n).norm(), moved);
+  std::printf(
+      "[ measured ] displaced end on a 5 deg slope: %s; acceleration at rest %.2e m/s^2 (bound %.2e); "
+      "forces in the plane %.2e N; moved %.2e m in 0.2 s\n",
+      init.about.c_str(), init.max_acceleration, init.acceleration_bound, (sum - sum.dot(n) * n).norm(), moved);
 }
 
 // 85 m between the top at z = 0 and an anchor on a seabed 40 m down at the top's vertical, rising 8 deg towards
@@ -334,11 +344,13 @@ TEST(SpatialSeabedSlope, PinnedOnTheSlopeStartsAtRest) {
     const Scene s = loadSceneText(R"(space: spatial
 line: {length: 85.0, elements: 17, EA: 1.0e7, EI: 1.0e4, mass_per_length: 80.0, axial_damping: 1.0e4, bending_damping: 100.0}
 top: {position: [0.0, 0.0, 0.0]}
-bottom: {type: pinned, position: )" + vec(anchor) + R"(}
+bottom: {type: pinned, position: )" + vec(anchor) +
+                                      R"(}
 initial: {type: between_points}
 seabed: {level: -40.0, stiffness_normal: 2.0e5, damping_normal: 2.0e3, friction_axial: 0.5, friction_lateral: 0.8, slope: 8.0, slope_heading: 30.0}
 solver: {integrator: midpoint, dt: 0.01}
-)", where);
+)",
+                                  where);
     SpatialRun run(s);
     const InitialState3& init = run.initial();
     EXPECT_TRUE(init.equilibrium) << where;
@@ -375,11 +387,12 @@ solver: {integrator: midpoint, dt: 0.01}
       for (size_t i = 0; i < p0.size(); ++i) moved = std::max(moved, (run.outputs().points[i] - p0[i]).norm());
     }
     EXPECT_LE(moved, 1e-5) << where;
-    std::printf("[ measured ] pinned %s on an 8 deg slope: %s; acceleration at rest %.2e m/s^2 (bound %.2e); %d "
-                "points on it, deepest %.3g m, bow %.3g m; forces in the plane %.2e N (bound %.2e), on the slope %.4g "
-                "N of %.4g; moved %.2e m in 1 s\n", where, init.about.c_str(), init.max_acceleration,
-                init.acceleration_bound, on, deepest, bow, in_plane.norm(), M * init.max_acceleration + 1e-9 * M * g,
-                -sum.dot(n), M * g, moved);
+    std::printf(
+        "[ measured ] pinned %s on an 8 deg slope: %s; acceleration at rest %.2e m/s^2 (bound %.2e); %d "
+        "points on it, deepest %.3g m, bow %.3g m; forces in the plane %.2e N (bound %.2e), on the slope %.4g "
+        "N of %.4g; moved %.2e m in 1 s\n",
+        where, init.about.c_str(), init.max_acceleration, init.acceleration_bound, on, deepest, bow, in_plane.norm(),
+        M * init.max_acceleration + 1e-9 * M * g, -sum.dot(n), M * g, moved);
   }
 }
 

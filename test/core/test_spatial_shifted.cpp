@@ -97,7 +97,8 @@ std::vector<SolveGap> solveGaps(const LineCase& lc, unsigned seed, bool at_rest)
   auto m = swingModel(lc, kin0);
   std::vector<Vec3> dirs(m->bodies());
   for (Vec3& d : dirs) d = Vec3(0.3 * N(rng), 0.3 * N(rng), -1.0);
-  Kinematics3 kin = rigidChain(m->line(), Vec3::Zero(), dirs, Vec3::Zero(), at_rest ? Vec3::Zero() : Vec3(N(rng), N(rng), N(rng)));
+  Kinematics3 kin =
+      rigidChain(m->line(), Vec3::Zero(), dirs, Vec3::Zero(), at_rest ? Vec3::Zero() : Vec3(N(rng), N(rng), N(rng)));
   if (lc.pinned) m->setBottom(BottomBoundary::kPinned, kin.back().end() + Vec3(0.01, -0.02, 0.01));  // off by a gap
   if (lc.ends) {  // axes off the line's: both joints loaded
     m->addTerm(std::make_unique<FlexJoint>(FlexJoint::End::kTop, Vec3(0.3, -0.2, -1.0), 3e3, 50.0));
@@ -134,9 +135,11 @@ std::vector<SolveGap> solveGaps(const LineCase& lc, unsigned seed, bool at_rest)
 }
 
 TEST(SpatialShifted, SolveAgainstDenseFiniteDifferenceJacobian) {
-  const LineCase cases[] = {{"free flexible", false, true}, {"pinned flexible", true, true},
+  const LineCase cases[] = {{"free flexible", false, true},
+                            {"pinned flexible", true, true},
                             {"pinned flexible, no bending damping", true, true, false},
-                            {"free inextensible", false, false}, {"pinned inextensible", true, false},
+                            {"free inextensible", false, false},
+                            {"pinned inextensible", true, false},
                             {"free flexible, top flex joint", false, true, true, true},
                             {"pinned flexible, flex joints, moving bottom", true, true, true, true}};
   for (const LineCase& lc : cases)
@@ -144,7 +147,8 @@ TEST(SpatialShifted, SolveAgainstDenseFiniteDifferenceJacobian) {
       for (unsigned seed : {1u, 2u}) {
         const std::vector<SolveGap> g = solveGaps(lc, seed, at_rest);
         std::printf("[spatial shifted] %s, %s, seed %u:", lc.name, at_rest ? "at rest" : "moving", seed);
-        for (const SolveGap& s : g) std::printf("  c = %.0e: %.1e (of the correction %.1e)", s.c, s.rel, s.rel_correction);
+        for (const SolveGap& s : g)
+          std::printf("  c = %.0e: %.1e (of the correction %.1e)", s.c, s.rel, s.rel_correction);
         std::printf("\n");
         for (const SolveGap& s : g) EXPECT_LT(s.rel, kSolveAgree) << lc.name << " c = " << s.c;
       }
@@ -194,8 +198,10 @@ TEST(SpatialShifted, StructuredAndDenseNewtonGiveTheSameSteps) {
     for (IntegratorKind kind : {IntegratorKind::kMidpoint, IntegratorKind::kGeneralizedAlpha}) {
       const LineRun s = run(lc, kind, JacobianKind::kStructured, 1e-3), d = run(lc, kind, JacobianKind::kDense, 1e-3);
       const double gap = maxGap(s, d);
-      std::printf("[spatial shifted] %s, %s, h = 1e-3 s: structured vs dense %.2e m; Newton iterations per step "
-                  "%.2f structured, %.2f dense\n", lc.name, name(kind), gap, s.newton_per_step, d.newton_per_step);
+      std::printf(
+          "[spatial shifted] %s, %s, h = 1e-3 s: structured vs dense %.2e m; Newton iterations per step "
+          "%.2f structured, %.2f dense\n",
+          lc.name, name(kind), gap, s.newton_per_step, d.newton_per_step);
       EXPECT_LT(gap, kSameStage);
     }
 }
@@ -209,8 +215,10 @@ TEST(SpatialShifted, Rosenbrock2StructuredAndDenseWithinTheirErrors) {
     const LineRun s = run(lc, IntegratorKind::kRosenbrock2, JacobianKind::kStructured, 1e-3);
     const LineRun d = run(lc, IntegratorKind::kRosenbrock2, JacobianKind::kDense, 1e-3);
     const double gap = maxGap(s, d), es = maxGap(s, ref), ed = maxGap(d, ref);
-    std::printf("[spatial shifted] %s, rosenbrock2, h = 1e-3 s: structured vs dense %.2e m; errors %.2e m "
-                "structured, %.2e m dense\n", lc.name, gap, es, ed);
+    std::printf(
+        "[spatial shifted] %s, rosenbrock2, h = 1e-3 s: structured vs dense %.2e m; errors %.2e m "
+        "structured, %.2e m dense\n",
+        lc.name, gap, es, ed);
     EXPECT_LT(gap, 1.1 * (es + ed));
   }
 }
@@ -221,12 +229,13 @@ TEST(SpatialShifted, Rosenbrock2StructuredAndDenseWithinTheirErrors) {
 TEST(SpatialShifted, StructuredSchemesAreSecondOrder) {
   for (const LineCase& lc : kSwings) {
     const LineRun ref = run(lc, IntegratorKind::kRk4, JacobianKind::kStructured, 5e-5);
-    for (IntegratorKind kind : {IntegratorKind::kMidpoint, IntegratorKind::kGeneralizedAlpha, IntegratorKind::kRosenbrock2}) {
+    for (IntegratorKind kind :
+         {IntegratorKind::kMidpoint, IntegratorKind::kGeneralizedAlpha, IntegratorKind::kRosenbrock2}) {
       const double h = kind == IntegratorKind::kRosenbrock2 ? 5e-4 : 1e-3;
       const double e1 = maxGap(run(lc, kind, JacobianKind::kStructured, h), ref);
       const double e2 = maxGap(run(lc, kind, JacobianKind::kStructured, h / 2), ref);
-      std::printf("[spatial shifted] %s, %s structured: error %.2e m (h = %.0e s), %.2e m (h/2), ratio %.2f\n",
-                  lc.name, name(kind), e1, h, e2, e1 / e2);
+      std::printf("[spatial shifted] %s, %s structured: error %.2e m (h = %.0e s), %.2e m (h/2), ratio %.2f\n", lc.name,
+                  name(kind), e1, h, e2, e1 / e2);
       // Second order: 4 per halving; 3.5..4.6 allows the O(h³) terms.
       EXPECT_GT(e1 / e2, 3.5);
       EXPECT_LT(e1 / e2, 4.6);
@@ -242,7 +251,8 @@ TEST(SpatialShifted, StructuredSchemesAreSecondOrder) {
 TEST(SpatialShifted, PlanarSceneAgreesWithTheRecursiveMidpoint) {
   const spatial_test::LineSpec s = spec(true);
   auto m2 = spatial_test::planarModel(s);
-  const Kinematics kin0 = spatial_test::planarChain(*m2, Vec2::Zero(), std::vector<double>(m2->bodies(), -M_PI / 2 + 0.35));
+  const Kinematics kin0 =
+      spatial_test::planarChain(*m2, Vec2::Zero(), std::vector<double>(m2->bodies(), -M_PI / 2 + 0.35));
   const double T = 1.0;  // [s]
   auto end3 = [&](IntegratorKind kind, double h) {
     auto m3 = spatial_test::spatialModel(s, Vec3(0, 0, -s.g));
@@ -270,11 +280,12 @@ TEST(SpatialShifted, PlanarSceneAgreesWithTheRecursiveMidpoint) {
   for (double h : {1e-3, 5e-4}) {
     const Vec3 p3 = end3(IntegratorKind::kMidpoint, h), p2 = end2(h);
     const double e3 = (p3 - ref).norm(), e2 = (p2 - ref).norm(), gap = (p3 - p2).norm();
-    std::printf("[spatial shifted] planar scene, midpoint structured, h = %.0e s: 3D natural vs 2D recursive %.2e m; "
-                "errors against rk4 %.2e m (3D), %.2e m (2D); K = error / h² %.0f, %.0f m/s²\n", h, gap, e3, e2,
-                e3 / (h * h), e2 / (h * h));
+    std::printf(
+        "[spatial shifted] planar scene, midpoint structured, h = %.0e s: 3D natural vs 2D recursive %.2e m; "
+        "errors against rk4 %.2e m (3D), %.2e m (2D); K = error / h² %.0f, %.0f m/s²\n",
+        h, gap, e3, e2, e3 / (h * h), e2 / (h * h));
     EXPECT_LT(gap, 1.1 * (e3 + e2));  // 10 % for the reference's own error and round-off
-    EXPECT_LT(e3, 30.0 * h * h);  // K = 3 m/s² measured for both; 10x margin, a first-order run is far off
+    EXPECT_LT(e3, 30.0 * h * h);      // K = 3 m/s² measured for both; 10x margin, a first-order run is far off
     EXPECT_LT(e2, 30.0 * h * h);
   }
 }

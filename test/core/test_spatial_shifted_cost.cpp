@@ -42,7 +42,8 @@ void measure(int n, bool with_dense) {
   spatial_test::LineSpec s = spatial_test::flexibleLine();
   s.segments = n;
   auto m2 = spatial_test::planarModel(s);
-  const Kinematics kin0 = spatial_test::planarChain(*m2, Vec2::Zero(), std::vector<double>(m2->bodies(), -M_PI / 2 + 0.35));
+  const Kinematics kin0 =
+      spatial_test::planarChain(*m2, Vec2::Zero(), std::vector<double>(m2->bodies(), -M_PI / 2 + 0.35));
   auto top = [] { return spatial_test::topSway(Vec2(0.5, 0.0), 2.0); };
   const int steps = n >= 300 ? 30 : 60;
 
@@ -67,9 +68,10 @@ void measure(int n, bool with_dense) {
   };
   const Cost cs = spatialCost(JacobianKind::kStructured);
   const Cost cd = with_dense ? spatialCost(JacobianKind::kDense) : Cost{};
-  std::printf("[spatial shifted cost] n = %d, midpoint h = 1e-3 s: 3D structured %.0f us/step (%.2f Newton/step), "
-              "3D dense %.0f us/step (%.2f Newton/step, median: between refreshes), 2D recursive structured %.0f us/step\n",
-              n, cs.us, cs.newton, cd.us, cd.newton, c2.us);
+  std::printf(
+      "[spatial shifted cost] n = %d, midpoint h = 1e-3 s: 3D structured %.0f us/step (%.2f Newton/step), "
+      "3D dense %.0f us/step (%.2f Newton/step, median: between refreshes), 2D recursive structured %.0f us/step\n",
+      n, cs.us, cs.newton, cd.us, cd.newton, c2.us);
 }
 
 TEST(SpatialShiftedCost, DISABLED_MidpointStepCost) {

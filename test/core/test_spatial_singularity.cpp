@@ -14,9 +14,9 @@ using namespace spatial;
 constexpr double kDuration = 3.0;  // [s]
 
 struct Swing {
-  double drift = 0.0;        // max |E - E0| / (m g L)
-  double cerr = 0.0;         // max joint gap [m]
-  double derr = 0.0;         // max | |e| - 1 | after the projection
+  double drift = 0.0;           // max |E - E0| / (m g L)
+  double cerr = 0.0;            // max joint gap [m]
+  double derr = 0.0;            // max | |e| - 1 | after the projection
   double down = 2.0, up = 2.0;  // min over rfes and time of 1 + e_z, 1 - e_z
   bool finite = true;
 };
@@ -45,8 +45,10 @@ Swing run(double h) {
     r.cerr = std::max(r.cerr, sim.constraintError());
     r.derr = std::max(r.derr, sim.directorError());
   }
-  std::printf("[spatial no singularity] h = %.1e s: drift %.2e, joint gap %.1e m, | |e|-1 | %.1e, closest to down "
-              "%.1e, to up %.1e (1 - cos)\n", h, r.drift, r.cerr, r.derr, r.down, r.up);
+  std::printf(
+      "[spatial no singularity] h = %.1e s: drift %.2e, joint gap %.1e m, | |e|-1 | %.1e, closest to down "
+      "%.1e, to up %.1e (1 - cos)\n",
+      h, r.drift, r.cerr, r.derr, r.down, r.up);
   return r;
 }
 
@@ -62,8 +64,8 @@ TEST(SpatialSingularity, ChainSwingsThroughVerticalKeepingEnergy) {
   // velocity term or inertia breaks conservation at 1e-4..1.
   EXPECT_GT(coarse.drift / fine.drift, 8.0);
   EXPECT_LT(fine.drift, 1e-10);
-  EXPECT_LT(fine.cerr, 1e-10);    // [m] Baumgarte-held joints, measured 4.1e-13 m
-  EXPECT_LT(fine.derr, 1e-14);    // projected each step
+  EXPECT_LT(fine.cerr, 1e-10);  // [m] Baumgarte-held joints, measured 4.1e-13 m
+  EXPECT_LT(fine.derr, 1e-14);  // projected each step
 }
 
 }  // namespace

@@ -106,9 +106,8 @@ TEST(SpatialStability, TorsionFlexJointsPinnedAgainstTheDenseSpectrum) {
   }
   {  // between two points, flex joints at both ends, extensible: the axial modes set it
     const std::string text =
-        "line:\n  length: 30.0\n  elements: 15\n" + kSteelPipe + torsion +
-        "top:\n  position: [0, 0, 0]\n" + flex + "bottom:\n  type: pinned\n  position: [12.0, 3.0, -25.0]\n" + flex +
-        "initial:\n  type: between_points\n";
+        "line:\n  length: 30.0\n  elements: 15\n" + kSteelPipe + torsion + "top:\n  position: [0, 0, 0]\n" + flex +
+        "bottom:\n  type: pinned\n  position: [12.0, 3.0, -25.0]\n" + flex + "initial:\n  type: between_points\n";
     SpatialRun run(scene(text));
     const double dense = denseOmegaMax(run);
     std::printf("[stability3] pinned, flex joints, torsion, n = 15: estimate %.6g, dense %.6g rad/s\n",
@@ -153,8 +152,9 @@ TEST(SpatialStability, Rk4RunsBelowTheEstimateAndStopsAbove) {
       {"torsion + flex joint", hangingPipe(20, false, torsion, flex + kRelease)},
       {"pinned", "line:\n  length: 30.0\n  elements: 15\n" + kSteelPipe + "  axial_flexibility: false\n" +
                      "top:\n  position: [0, 0, 0]\n  motion:\n    type: sinusoid\n    amplitude: [0, 0, 0.5]\n"
-                     "    period: 6.0\n" + flex + "bottom:\n  type: pinned\n  position: [12.0, 0.0, -25.0]\n" +
-                     flex + "initial:\n  type: between_points\n"}};
+                     "    period: 6.0\n" +
+                     flex + "bottom:\n  type: pinned\n  position: [12.0, 0.0, -25.0]\n" + flex +
+                     "initial:\n  type: between_points\n"}};
   for (const auto& [label, text] : cases) {
     const double limit = SpatialRun(scene(text + "solver:\n  dt: 1.0e-4\n")).stableStepEstimate();
     const auto at = [&](double factor) {
@@ -172,8 +172,7 @@ TEST(SpatialStability, Rk4RunsBelowTheEstimateAndStopsAbove) {
     const std::string& why = above.divergenceReason();
     EXPECT_NE(why.find("reduce solver.dt"), std::string::npos) << why;
     EXPECT_NE(why.find("stability limit h ~"), std::string::npos) << why;
-    std::printf("[stability3] %s: limit %.4g s; 0.8x ran 3 s; 1.5x stopped at step %ld\n", label, limit,
-                above.steps());
+    std::printf("[stability3] %s: limit %.4g s; 0.8x ran 3 s; 1.5x stopped at step %ld\n", label, limit, above.steps());
   }
 }
 
@@ -194,8 +193,9 @@ TEST(SpatialStability, ForceNoiseWarnsWhenTheAxialModesRing) {
   };
   const ForceNoise noisy = run10s("  integrator: midpoint\n");
   const ForceNoise clean = run10s("  integrator: generalized_alpha\n  rho_inf: 0.0\n");
-  std::printf("[stability3] force noise, midpoint 20 ms: top %.3g, axial %.3g; generalized_alpha rho_inf 0: %.3g, %.3g\n",
-              noisy.top, noisy.max_axial, clean.top, clean.max_axial);
+  std::printf(
+      "[stability3] force noise, midpoint 20 ms: top %.3g, axial %.3g; generalized_alpha rho_inf 0: %.3g, %.3g\n",
+      noisy.top, noisy.max_axial, clean.top, clean.max_axial);
   EXPECT_GT(noisy.top, 0.3);
   EXPECT_GT(noisy.max_axial, 0.3);
   EXPECT_LT(clean.worst(), 0.03);

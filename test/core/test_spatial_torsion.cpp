@@ -47,7 +47,8 @@ double pendulumPeriod(int n, double rho_ip, double h, int periods) {
   auto m = pendulumModel(n, rho_ip);
   const int nb = m->bodies();
   SpatialSimulator sim(m, std::make_unique<FixedMotion3>(Vec3::Zero()), IntegratorKind::kRk4);
-  sim.reset(rigidChain(m->line(), Vec3::Zero(), std::vector<Vec3>(nb, -Vec3::UnitZ()), Vec3::Zero(), Vec3::Zero()), 0.0);
+  sim.reset(rigidChain(m->line(), Vec3::Zero(), std::vector<Vec3>(nb, -Vec3::UnitZ()), Vec3::Zero(), Vec3::Zero()),
+            0.0);
   const double x = firstRoot(rho_ip * kL / kJend), d = kL / n;
   VecX theta(nb), omega = VecX::Zero(nb);
   for (int i = 0; i < nb; ++i) theta[i] = -0.1 * std::sin(x * std::min(i * d, kL) / kL);
@@ -96,9 +97,10 @@ TEST(SpatialTorsion, LightLinePendulumPeriod) {
   const double rho_ip = 1e-3;  // J_line / J_end = 1e-3
   const double Tn = pendulumPeriod(8, rho_ip, 2e-4, 10), T = exactPeriod(rho_ip);
   const double T0 = 2.0 * M_PI * std::sqrt(kJend * kL / kGJ);
-  std::printf("[torsion pendulum] light line, n = 8: %.9f s; exact %.9f s (error %.2e); 2π sqrt(J L / GJ) = %.9f s "
-              "(%.2e)\n",
-              Tn, T, Tn / T - 1.0, T0, Tn / T0 - 1.0);
+  std::printf(
+      "[torsion pendulum] light line, n = 8: %.9f s; exact %.9f s (error %.2e); 2π sqrt(J L / GJ) = %.9f s "
+      "(%.2e)\n",
+      Tn, T, Tn / T - 1.0, T0, Tn / T0 - 1.0);
   EXPECT_LT(std::abs(Tn / T - 1.0), 1e-5);
   // The massless-line formula is off by the line's inertia, ~ J_line / (6 J_end) = 1.7e-4.
   EXPECT_LT(std::abs(Tn / T0 - 1.0), 2.5e-4);
@@ -322,17 +324,19 @@ TEST(SpatialTorsion, StructuredAndDenseJacobiansAgree) {
     Swing a = swing(kind, 2.0), b = swing(kind, 2.0);
     IntegratorOptions io;
     io.jacobian = JacobianKind::kDense;
-    b.sim = std::make_unique<SpatialSimulator>(b.model, std::make_unique<PlanarMotion3>(
-                                                            spatial_test::topSway(Vec2(0.5, 0.3), 1.0),
-                                                            spatial_test::yawTilt(0.3, 0.5)),
-                                               kind, io);
-    b.sim->reset(rigidChain(b.model->line(), Vec3::Zero(),
-                            [&] {
-                              std::vector<Vec3> d;
-                              for (int i = 0; i < b.model->bodies(); ++i) d.push_back(Vec3(0.3 + 0.1 * i, 0.2 - 0.05 * i, -1.0));
-                              return d;
-                            }(),
-                            Vec3::Zero(), Vec3(0.2, -0.3, 0.5)),
+    b.sim = std::make_unique<SpatialSimulator>(
+        b.model,
+        std::make_unique<PlanarMotion3>(spatial_test::topSway(Vec2(0.5, 0.3), 1.0), spatial_test::yawTilt(0.3, 0.5)),
+        kind, io);
+    b.sim->reset(rigidChain(
+                     b.model->line(), Vec3::Zero(),
+                     [&] {
+                       std::vector<Vec3> d;
+                       for (int i = 0; i < b.model->bodies(); ++i)
+                         d.push_back(Vec3(0.3 + 0.1 * i, 0.2 - 0.05 * i, -1.0));
+                       return d;
+                     }(),
+                     Vec3::Zero(), Vec3(0.2, -0.3, 0.5)),
                  0.0);
     const int nb = b.model->bodies();
     VecX theta(nb), omega(nb);
@@ -417,9 +421,9 @@ TEST(SpatialTorsion, ChartsThroughVerticalAndHorizontal) {
   const int nb = m->bodies();
   SpatialSimulator sim(m, std::make_unique<FixedMotion3>(Vec3::Zero()), IntegratorKind::kRk4);
   // Hanging straight down, swung about an oblique horizontal axis: up to ~130° from down.
-  sim.reset(rigidChain(m->line(), Vec3::Zero(), std::vector<Vec3>(nb, -Vec3::UnitZ()), Vec3::Zero(),
-                       Vec3(0.7, 1.77, 0.0)),
-            0.0);
+  sim.reset(
+      rigidChain(m->line(), Vec3::Zero(), std::vector<Vec3>(nb, -Vec3::UnitZ()), Vec3::Zero(), Vec3(0.7, 1.77, 0.0)),
+      0.0);
   VecX theta = VecX::Zero(nb), omega(nb);
   for (int i = 0; i < nb; ++i) omega[i] = 5.0 * std::cos(0.7 * i);
   sim.setTwist(theta, omega);
@@ -435,9 +439,10 @@ TEST(SpatialTorsion, ChartsThroughVerticalAndHorizontal) {
     twist = std::max(twist, std::abs(sim.evaluate().reactions.top_twist));
     worst = std::max(worst, std::abs(sim.energy() - e0 - sim.work()) / scale);
   }
-  std::printf("[torsion] whirl, rk4 h = 1e-4 s, 4 s: |E - E0 - W| = %.2e of m g L; min |e_z| %.1e, max -e_z %.6f, top rfe "
-              "up to %.0f deg from down, top twisting moment up to %.3g N m\n",
-              worst, zmin, zmax, top_angle * 180 / M_PI, twist);
+  std::printf(
+      "[torsion] whirl, rk4 h = 1e-4 s, 4 s: |E - E0 - W| = %.2e of m g L; min |e_z| %.1e, max -e_z %.6f, top rfe "
+      "up to %.0f deg from down, top twisting moment up to %.3g N m\n",
+      worst, zmin, zmax, top_angle * 180 / M_PI, twist);
   EXPECT_LT(zmin, 0.02);      // through horizontal
   EXPECT_GT(zmax, 0.9999);    // through straight down
   EXPECT_GT(top_angle, 1.6);  // past horizontal at the top
@@ -488,8 +493,9 @@ TEST(SpatialTorsion, SceneKey) {
   } catch (const SceneError& e) {
     EXPECT_EQ(e.key(), "line.torsion") << e.what();
   }
-  const std::string no_d = "space: spatial\nline: {length: 5, elements: 2, EA: 1e6, EI: 1e3, mass_per_length: 1, "
-                           "torsion: {stiffness: 1}}\n";
+  const std::string no_d =
+      "space: spatial\nline: {length: 5, elements: 2, EA: 1e6, EI: 1e3, mass_per_length: 1, "
+      "torsion: {stiffness: 1}}\n";
   try {
     parseScene(YAML::Load(no_d));
     ADD_FAILURE() << "no polar inertia and no diameter";

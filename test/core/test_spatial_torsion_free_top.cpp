@@ -46,8 +46,8 @@ std::pair<Spins, Spins> run(const std::shared_ptr<SpatialModel>& m, const VecX& 
   for (int k = 0; k < steps; ++k) {
     EXPECT_TRUE(nat.step(h));
     EXPECT_TRUE(ind.step(h));
-    *top_twist = std::max({*top_twist, std::abs(nat.evaluate().reactions.top_twist),
-                           std::abs(ind.evaluate().reactions.top_twist)});
+    *top_twist = std::max(
+        {*top_twist, std::abs(nat.evaluate().reactions.top_twist), std::abs(ind.evaluate().reactions.top_twist)});
   }
   std::pair<Spins, Spins> r;
   const int vo = nat.formulation().positionSize(), p = ind.formulation().positionSize();
@@ -70,8 +70,10 @@ TEST(SpatialTorsionFreeTop, UniformSpinTurnsRigidly) {
   for (const Spins* s : {&r.first, &r.second})
     for (int i = 0; i < nb; ++i)
       worst = std::max({worst, std::abs(s->theta[i] - Omega * h * steps), std::abs(s->omega[i] - Omega)});
-  std::printf("[free top] uniform spin 2 rad/s, 2 s: max |θ_i - Ω t|, |ω_i - Ω| %.2e (natural and independent), hang-off "
-              "twisting moment %.1e N m\n", worst, twist);
+  std::printf(
+      "[free top] uniform spin 2 rad/s, 2 s: max |θ_i - Ω t|, |ω_i - Ω| %.2e (natural and independent), hang-off "
+      "twisting moment %.1e N m\n",
+      worst, twist);
   EXPECT_LT(worst, 1e-11);  // no twist, no force: round-off of 2000 steps on angles ~4 rad
   EXPECT_EQ(twist, 0.0);    // a free top holds none
 }
@@ -98,8 +100,10 @@ TEST(SpatialTorsionFreeTop, TwistedLineUntwistsToTheMeanAngle) {
     for (int i = 0; i < nb; ++i) worst = std::max(worst, std::abs(s->theta[i] - mean));
     momentum = std::max(momentum, std::abs(J.dot(s->omega)));
   }
-  std::printf("[free top] twisted line released (θ̄ = %.6f rad): after 5 s max |θ_i - θ̄| %.2e rad, |Σ J ω| %.2e N m s "
-              "(natural and independent)\n", mean, worst, momentum);
+  std::printf(
+      "[free top] twisted line released (θ̄ = %.6f rad): after 5 s max |θ_i - θ̄| %.2e rad, |Σ J ω| %.2e N m s "
+      "(natural and independent)\n",
+      mean, worst, momentum);
   EXPECT_GT(J[0], 0.0);        // rfe 0 spins: its own polar inertia
   EXPECT_LT(worst, 1e-9);      // [rad] decay e^-35 of ~1 rad + round-off
   EXPECT_LT(momentum, 1e-10);  // [N m s] round-off of moments ~1e3 N m over 5000 steps x 1e-3 s
@@ -162,8 +166,9 @@ TEST(SpatialTorsionFreeTop, ForcesAreTheGradientOfTheTwistEnergy) {
 }
 
 // Implicit schemes with a spinning top rfe (the spring-held one with its damper): the structured solve's spin
-// rows leave out their coupling to e, an approximate Jacobian. Newton still converges to the step (its tolerance), so the balance E - E0 - W stays
-// second order: the bent, twisted, spinning flexible line under a swaying top, free and spring-held, 1 s.
+// rows leave out their coupling to e, an approximate Jacobian. Newton still converges to the step (its tolerance), so
+// the balance E - E0 - W stays second order: the bent, twisted, spinning flexible line under a swaying top, free and
+// spring-held, 1 s.
 std::unique_ptr<SpatialSimulator> spinningTop(bool spring, IntegratorKind kind, double* scale) {
   spatial_test::LineSpec s = spatial_test::flexibleLine();
   auto m = spatial_test::spatialModel(s, Vec3(0, 0, -s.g));
@@ -262,15 +267,17 @@ TEST(SpatialTorsionFreeTop, DampedTopSpringIsTheRigidShaftOscillator) {
       gap = std::max(gap, std::abs(sim.state()[m->dofs() + nb - 1] - exact));
     }
     const double balance = std::abs(sim.energy() - e0 - sim.work()) / (0.5 * kt * theta0 * theta0);
-    std::printf("[damped top spring] GJ %.0e: max |θ_end - oscillator| %.2e rad of %.2f (½ k_t L/GJ %.1e); "
-                "E - E0 - W %.1e of the initial spring energy\n", GJ, gap, theta0, 0.5 * kt * kL / GJ, balance);
+    std::printf(
+        "[damped top spring] GJ %.0e: max |θ_end - oscillator| %.2e rad of %.2f (½ k_t L/GJ %.1e); "
+        "E - E0 - W %.1e of the initial spring energy\n",
+        GJ, gap, theta0, 0.5 * kt * kL / GJ, balance);
     // rk4's truncation on the shaft's fastest twist modes (ω h ~ 0.1 / 0.3): measured 4.2e-9 / 3.8e-7, x90 for
     // ω x3.2, the (ω h)^4 of a fourth-order scheme. W holds the damper's work, ~60 % of the initial energy.
     EXPECT_LT(balance, 1e-6);
     gaps[j++] = gap;
   }
-  EXPECT_LT(gaps[1], 2e-3 * theta0);     // ½ k_t L/GJ = 5e-5 in ω over ~7 rad of phase: ~4e-4 θ0
-  EXPECT_GT(gaps[0] / gaps[1], 5.0);     // the rigid limit: ~10x per decade of GJ
+  EXPECT_LT(gaps[1], 2e-3 * theta0);  // ½ k_t L/GJ = 5e-5 in ω over ~7 rad of phase: ~4e-4 θ0
+  EXPECT_GT(gaps[0] / gaps[1], 5.0);  // the rigid limit: ~10x per decade of GJ
 }
 
 }  // namespace

@@ -85,9 +85,10 @@ TEST(SpatialTorsionHolder, YawingHolderDrivesTheTopSpringOscillator) {
     }
   }
   const double scale = 0.5 * kt * kPhi0 * kPhi0;
-  std::printf("[yawing holder, top spring] |θ_end - oscillator| natural %.2e, independent %.2e rad of %.3f; "
-              "natural - independent %.2e rad; |E - E0 - W| %.1e J (|W| up to %.2e J)\n",
-              gap_nat, gap_ind, peak, cross, balance, work);
+  std::printf(
+      "[yawing holder, top spring] |θ_end - oscillator| natural %.2e, independent %.2e rad of %.3f; "
+      "natural - independent %.2e rad; |E - E0 - W| %.1e J (|W| up to %.2e J)\n",
+      gap_nat, gap_ind, peak, cross, balance, work);
   // The fixed-holder oscillator test's bound at GJ = 1e6 (the shaft's compliance, ~4e-4 of the amplitude).
   EXPECT_GT(peak, 0.2);
   EXPECT_LT(gap_nat, 2e-3 * peak);
@@ -123,9 +124,10 @@ TEST(SpatialTorsionHolder, HeldTopFollowsAHolderTurningOneAndAHalfTimes) {
   double off = 0.0;
   for (int i = 1; i < nb; ++i) off = std::max(off, std::abs(nat.state()[m->dofs() + i] + 3.0 * M_PI));
   const double held = nat.evaluate().reactions.top_twist;
-  std::printf("[yawing holder, held top] θ_i + 3π <= %.2e rad at 40 s, hang-off twist %.2e N m (peak %.2f); "
-              "natural - independent %.2e rad; |E - E0 - W| %.1e J (|W| up to %.2e J)\n",
-              off, held, twist, cross, balance, work);
+  std::printf(
+      "[yawing holder, held top] θ_i + 3π <= %.2e rad at 40 s, hang-off twist %.2e N m (peak %.2f); "
+      "natural - independent %.2e rad; |E - E0 - W| %.1e J (|W| up to %.2e J)\n",
+      off, held, twist, cross, balance, work);
   // The turn's lag decays with the twist dampers (lowest mode ~8.7 rad/s, ζ ~ 0.04): e^-0.38 t over the 19 s
   // after it, ~1e-3 of its ~1e-3 rad: 1e-4 rad is loose; a frame that did not turn leaves θ = 0 (off by 3π).
   EXPECT_LT(off, 1e-4);

@@ -42,7 +42,9 @@ double freeRoot(double mu, int k) {
 // J_end ω² θ(L) = GJ θ'(L); times x = kL: g(x) = (x²/μ) cos x + (κ/μ + 1) x sin x - κ cos x = 0 (κ -> ∞:
 // x tan x = μ; κ = 0: tan x = -x/μ). The first `count` roots by a scan (step 1e-3) and bisection.
 std::vector<double> springRoots(double mu, double kappa, int count) {
-  auto g = [&](double x) { return x * x / mu * std::cos(x) + (kappa / mu + 1.0) * x * std::sin(x) - kappa * std::cos(x); };
+  auto g = [&](double x) {
+    return x * x / mu * std::cos(x) + (kappa / mu + 1.0) * x * std::sin(x) - kappa * std::cos(x);
+  };
   std::vector<double> r;
   for (double x = 1e-3; int(r.size()) < count; x += 1e-3) {
     if (g(x) * g(x + 1e-3) > 0.0) continue;
@@ -129,9 +131,11 @@ TEST(SpatialTorsionModes, ShaftWithAFreeTop) {
     for (int k = 0; k < 2; ++k) {
       const double exact = freeRoot(mu, k + 1) * c / kL;
       err[k] = std::abs(w[k + 1] / exact - 1.0);
-      std::printf("[torsion modes] free top n = %2d, mode %d: ω = %.9f rad/s vs exact %.9f, error %.3e%s; rigid spin "
-                  "ω² %.1e of the largest\n", n, k + 1, w[k + 1], exact, err[k],
-                  n > 8 ? (" (x" + std::to_string(prev[k] / err[k]) + ")").c_str() : "", rigid);
+      std::printf(
+          "[torsion modes] free top n = %2d, mode %d: ω = %.9f rad/s vs exact %.9f, error %.3e%s; rigid spin "
+          "ω² %.1e of the largest\n",
+          n, k + 1, w[k + 1], exact, err[k], n > 8 ? (" (x" + std::to_string(prev[k] / err[k]) + ")").c_str() : "",
+          rigid);
       if (n > 8) {  // second order in d
         EXPECT_GT(prev[k] / err[k], 3.5);
         EXPECT_LT(prev[k] / err[k], 4.5);
@@ -223,13 +227,16 @@ TEST(SpatialTorsionModes, PinnedBottomIsFreeInTwist) {
     EXPECT_LT(worst, 1e-8);
     // The lowest non-torsional mode: the free end's pendulum, gone with the pin.
     double lowest_free = HUGE_VAL, lowest_pinned = HUGE_VAL;
-    for (const SpatialMode& m : rf.modes) if (!m.torsional) lowest_free = std::min(lowest_free, m.omega2);
-    for (const SpatialMode& m : rp.modes) if (!m.torsional) lowest_pinned = std::min(lowest_pinned, m.omega2);
+    for (const SpatialMode& m : rf.modes)
+      if (!m.torsional) lowest_free = std::min(lowest_free, m.omega2);
+    for (const SpatialMode& m : rp.modes)
+      if (!m.torsional) lowest_pinned = std::min(lowest_pinned, m.omega2);
     EXPECT_GT(lowest_pinned, 4.0 * lowest_free);
     if (torsion)
-      std::printf("[torsion modes] pinned bottom, n = 16: %zu torsional ω vs the free end's: %.2e relative (first "
-                  "%.9f rad/s); lowest other ω² %.4g -> %.4g 1/s²\n", wp.size(), worst, wp[0], lowest_free,
-                  lowest_pinned);
+      std::printf(
+          "[torsion modes] pinned bottom, n = 16: %zu torsional ω vs the free end's: %.2e relative (first "
+          "%.9f rad/s); lowest other ω² %.4g -> %.4g 1/s²\n",
+          wp.size(), worst, wp[0], lowest_free, lowest_pinned);
   }
 }
 

@@ -44,8 +44,8 @@ struct Case {
 };
 
 std::string runStatus(const Case& c, double dt) {
-  Scene s = loadSceneFile(kDemo, {"line.elements=" + std::to_string(c.n),
-                                  "line.bending_damping=" + std::to_string(c.damping)});
+  Scene s = loadSceneFile(
+      kDemo, {"line.elements=" + std::to_string(c.n), "line.bending_damping=" + std::to_string(c.damping)});
   s.solver.dt = dt;
   auto sim = buildSimulator(s);
   // 3000 steps or 1 s, whichever is longer: a too-large step grows by orders of magnitude within it.
@@ -55,19 +55,19 @@ std::string runStatus(const Case& c, double dt) {
 }
 
 double estimate(const Case& c) {
-  Scene s = loadSceneFile(kDemo, {"line.elements=" + std::to_string(c.n),
-                                  "line.bending_damping=" + std::to_string(c.damping)});
+  Scene s = loadSceneFile(
+      kDemo, {"line.elements=" + std::to_string(c.n), "line.bending_damping=" + std::to_string(c.damping)});
   return buildSimulator(s)->stableStepEstimate();
 }
 
 // Before damping counted, n = 70 estimated 3.3 ms and diverged at 2 ms; n = 100 estimated 1.28 ms and
 // diverged at 1 and 0.5 ms.
 TEST(StabilityEstimate, SafeStepIsSafeOverDampingAndN) {
-  for (const Case c : {Case{10, 0.0}, Case{30, 0.0}, Case{10, 2e5}, Case{30, 2e5}, Case{70, 2e5}, Case{100, 2e5},
-                       Case{30, 2e6}}) {
+  for (const Case c :
+       {Case{10, 0.0}, Case{30, 0.0}, Case{10, 2e5}, Case{30, 2e5}, Case{70, 2e5}, Case{100, 2e5}, Case{30, 2e6}}) {
     const double h = estimate(c);
-    SCOPED_TRACE("n = " + std::to_string(c.n) + ", c_EI = " + std::to_string(c.damping) +
-                 ", estimate " + std::to_string(h) + " s");
+    SCOPED_TRACE("n = " + std::to_string(c.n) + ", c_EI = " + std::to_string(c.damping) + ", estimate " +
+                 std::to_string(h) + " s");
     EXPECT_EQ(runStatus(c, 0.9 * h), "ok");
     EXPECT_NE(runStatus(c, 2.0 * h), "ok") << "the estimate is more than 2x below the real limit";
   }

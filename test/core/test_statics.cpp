@@ -17,8 +17,8 @@ using validation::Catenary;
 constexpr double kPaperCatenaryError = 0.01;
 constexpr double kCatenaryErrorAt40 = kPaperCatenaryError / 100.0;
 // Slack lines without an end mass curve much more (in the paper's case the end mass keeps the tension
-// high and the line nearly straight), and the O(d²) constant grows with the curvature: 10x below the paper's 1 % (measured
-// 1.0e-4 L to 1.1e-4 L at n = 40).
+// high and the line nearly straight), and the O(d²) constant grows with the curvature: 10x below the paper's 1 %
+// (measured 1.0e-4 L to 1.1e-4 L at n = 40).
 constexpr double kCurvedCatenaryErrorAt40 = kPaperCatenaryError / 10.0;
 // Uniform mass on rigid pinned rods with the axial spring in the middle of each rfe is a midpoint /
 // trapezoid discretisation of the catenary ODE: second order in d = L/n. Measured orders for n =
@@ -34,8 +34,8 @@ constexpr double kHangingRelTol = 1e-9;
 constexpr double kReactionRelTol = 1e-9;
 
 struct CatenaryCase {
-  double error;  // largest joint distance from the analytic shape [m]
-  double fx_rel; // |Fx / Fx_analytic - 1|
+  double error;   // largest joint distance from the analytic shape [m]
+  double fx_rel;  // |Fx / Fx_analytic - 1|
 };
 
 // Paper's initial state: end displaced by end_dx under a horizontal force, end mass m_s.
@@ -60,8 +60,8 @@ TEST(Statics, DisplacedEndMatchesElasticCatenaryWithSecondOrderConvergence) {
   double prev = 0.0, prev_f = 0.0;
   for (int n : ns) {
     const CatenaryCase c = displacedCase(n, 1000.0, -50.0);
-    std::printf("[table1 statics] n=%3d shape error %.3e m (%.3e L), Fx rel error %.3e\n", n, c.error,
-                c.error / 100.0, c.fx_rel);
+    std::printf("[table1 statics] n=%3d shape error %.3e m (%.3e L), Fx rel error %.3e\n", n, c.error, c.error / 100.0,
+                c.fx_rel);
     if (n == 40) EXPECT_LT(c.error / 100.0, kCatenaryErrorAt40);
     if (prev > 0.0) {
       const double p = validation::order(prev, c.error), pf = validation::order(prev_f, c.fx_rel);
@@ -148,8 +148,8 @@ TEST(Statics, HangingLineTensionAndElongations) {
     EXPECT_NEAR(st.kin[i].phi, -M_PI / 2, 1e-12) << "rfe " << i;
   }
   const double y_end = -(L + (W_end * L + 0.5 * w * L * L) / s.line.EA);
-  std::printf("[hanging] worst elongation rel error %.2e, end y %.9f (analytic %.9f)\n", worst,
-              st.kin.back().end().y(), y_end);
+  std::printf("[hanging] worst elongation rel error %.2e, end y %.9f (analytic %.9f)\n", worst, st.kin.back().end().y(),
+              y_end);
   // stretch known to kHangingRelTol; 1e-12 m for round-off in summing n+1 lengths of ~10 m
   EXPECT_NEAR(st.kin.back().end().y(), y_end, kHangingRelTol * std::abs(y_end + L) + 1e-12);
 }

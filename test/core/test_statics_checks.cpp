@@ -62,22 +62,22 @@ TEST(StaticsChecks, PinnedEndWithHeavyEndMass) {
 TEST(StaticsChecks, AnchorAtOrNearTheHangOff) {
   for (const Vec2& anchor : {Vec2(0.0, 0.0), Vec2(0.03, 0.0), Vec2(0.0, -4.0)})
     for (int n : {8, 12})  // even: a rod at the bottom of the U
-    for (bool axial : {true, false}) {
-      Scene s = pinnedChain(anchor, 2.0, axial);
-      s.elements = n;
-      StaticsResult st;
-      auto sim = buildSimulator(s, &st);
-      ASSERT_TRUE(st.converged) << st.message;
-      const double g = s.gravity, w = 1.5 * g, W = w * s.length + 2.0 * g;
-      const LineOutputs& o = sim->outputs();
-      std::printf("[anchor (%.2f, %.2f) n %d %s] end force (%.4f, %.4f) N, top tension %.4f N, max %.4f N\n", anchor.x(),
-                  anchor.y(), n, axial ? "elastic" : "inext.", st.end_force.x(), st.end_force.y(), o.top_tension,
-                  o.max_tension);
-      EXPECT_LT(o.max_tension, W);
-      EXPECT_LT(std::abs(st.end_force.x()), 0.5 * w * s.length);
-      if (anchor.norm() == 0.0) EXPECT_NEAR(st.end_force.y(), 2.0 * g + 0.5 * w * s.length, 1e-7 * W);
-      EXPECT_NEAR((st.kin.back().end() - anchor).norm(), 0.0, 1e-9);
-    }
+      for (bool axial : {true, false}) {
+        Scene s = pinnedChain(anchor, 2.0, axial);
+        s.elements = n;
+        StaticsResult st;
+        auto sim = buildSimulator(s, &st);
+        ASSERT_TRUE(st.converged) << st.message;
+        const double g = s.gravity, w = 1.5 * g, W = w * s.length + 2.0 * g;
+        const LineOutputs& o = sim->outputs();
+        std::printf("[anchor (%.2f, %.2f) n %d %s] end force (%.4f, %.4f) N, top tension %.4f N, max %.4f N\n",
+                    anchor.x(), anchor.y(), n, axial ? "elastic" : "inext.", st.end_force.x(), st.end_force.y(),
+                    o.top_tension, o.max_tension);
+        EXPECT_LT(o.max_tension, W);
+        EXPECT_LT(std::abs(st.end_force.x()), 0.5 * w * s.length);
+        if (anchor.norm() == 0.0) EXPECT_NEAR(st.end_force.y(), 2.0 * g + 0.5 * w * s.length, 1e-7 * W);
+        EXPECT_NEAR((st.kin.back().end() - anchor).norm(), 0.0, 1e-9);
+      }
 }
 
 // Refused, naming bottom.position: an inextensible line pinned at exactly its length, and one whose
@@ -163,7 +163,7 @@ TEST(StaticsChecks, CheckNamesWhatIsWrong) {
   Kinematics off = st.kin;
   off[2].phi += 1e-3;
   expectCheck(off, "residual");
-  expectCheck(straightLine(*m, p.top, -M_PI / 2), "seabed");   // 5 m into the seabed, held up by it
+  expectCheck(straightLine(*m, p.top, -M_PI / 2), "seabed");    // 5 m into the seabed, held up by it
   expectCheck(straightLine(*m, p.top, M_PI / 2), "stability");  // balanced upside down
 }
 

@@ -77,8 +77,7 @@ RandomScene randomScene(std::mt19937& rng) {
     y << "hydrodynamics: {drag_normal: " << U(0.7, 1.2) << ", inertia_coefficient: " << U(1.0, 2.0) << "}\n";
   }
   if (seabed)
-    y << "seabed: {level: " << level << ", stiffness_normal: " << std::exp(U(std::log(1e3), std::log(1e7)))
-      << "}\n";
+    y << "seabed: {level: " << level << ", stiffness_normal: " << std::exp(U(std::log(1e3), std::log(1e7))) << "}\n";
   r.yaml = y.str();
   return r;
 }

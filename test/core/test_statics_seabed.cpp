@@ -80,10 +80,11 @@ TEST(StaticsSeabed, DisplacedEndLaysTheRestOnTheSeabed) {
         const SeabedResult r = solve(s);
         const double eh = std::abs(r.H / r.ref.H - 1.0), et = std::abs(r.top_tension / r.ref.topTension() - 1.0);
         const double d = s.length / n;
-        std::printf("[seabed, displaced, %s, k %.0e, n %d] H %.3f (ref %.3f, %.2e), top %.3f (ref %.3f, %.2e), "
-                    "touchdown s %.3f (ref %.3f), x %.3f (ref %.3f)\n",
-                    axial ? "elastic" : "inext.", k, n, r.H, r.ref.H, eh, r.top_tension, r.ref.topTension(), et,
-                    r.touchdown_s, r.ref.s, r.touchdown_x, r.ref.touchdownX());
+        std::printf(
+            "[seabed, displaced, %s, k %.0e, n %d] H %.3f (ref %.3f, %.2e), top %.3f (ref %.3f, %.2e), "
+            "touchdown s %.3f (ref %.3f), x %.3f (ref %.3f)\n",
+            axial ? "elastic" : "inext.", k, n, r.H, r.ref.H, eh, r.top_tension, r.ref.topTension(), et, r.touchdown_s,
+            r.ref.s, r.touchdown_x, r.ref.touchdownX());
         EXPECT_NEAR(r.touchdown_s, r.ref.s, d);
         EXPECT_NEAR(r.touchdown_x, r.ref.touchdownX(), d);
         EXPECT_LT(eh, n == 90 ? kForceRelTol90 : kForceRelTol180);
@@ -101,9 +102,9 @@ TEST(StaticsSeabed, AnchorOnTheSeabed) {
     s.bottom_point = Vec2(75.0, s.seabed.level);
     const SeabedResult r = solve(s);
     const double eh = std::abs(r.H / r.ref.H - 1.0), et = std::abs(r.top_tension / r.ref.topTension() - 1.0);
-    std::printf("[seabed, anchor, %s] H %.3f (ref %.3f, %.2e), top %.3f (ref %.3f, %.2e), touchdown s %.3f (ref %.3f)\n",
-                axial ? "elastic" : "inext.", r.H, r.ref.H, eh, r.top_tension, r.ref.topTension(), et, r.touchdown_s,
-                r.ref.s);
+    std::printf(
+        "[seabed, anchor, %s] H %.3f (ref %.3f, %.2e), top %.3f (ref %.3f, %.2e), touchdown s %.3f (ref %.3f)\n",
+        axial ? "elastic" : "inext.", r.H, r.ref.H, eh, r.top_tension, r.ref.topTension(), et, r.touchdown_s, r.ref.s);
     EXPECT_NEAR(r.touchdown_s, r.ref.s, s.length / s.elements);
     EXPECT_LT(eh, kForceRelTol90);
     EXPECT_LT(et, kForceRelTol90);

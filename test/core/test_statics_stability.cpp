@@ -37,8 +37,10 @@ TEST(StaticsStability, UpturnedLineInStrongCurrentIsRefusedPlanar) {
   EXPECT_TRUE(names(c.message, "stability: the equilibrium is unstable")) << c.message;
 
   const StaticsResult r = solveStatics(*model, staticsProblem(s));
-  if (r.converged) EXPECT_LT(r.kin.back().end().y(), s.top.position.y()) << r.message;
-  else EXPECT_TRUE(names(r.message, "stability") || names(r.message, "current")) << r.message;
+  if (r.converged)
+    EXPECT_LT(r.kin.back().end().y(), s.top.position.y()) << r.message;
+  else
+    EXPECT_TRUE(names(r.message, "stability") || names(r.message, "current")) << r.message;
 }
 
 TEST(StaticsStability, UpturnedLineInStrongCurrentIsRefused3D) {

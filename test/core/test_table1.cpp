@@ -12,8 +12,8 @@
 namespace riser_sim {
 namespace {
 
-constexpr double kDuration = 20.0;   // [s] Table 1
-constexpr double kSample = 0.01;     // [s] trajectory sampling for the convergence norms
+constexpr double kDuration = 20.0;                      // [s] Table 1
+constexpr double kSample = 0.01;                        // [s] trajectory sampling for the convergence norms
 constexpr double kPaperX = -49.552, kPaperY = -86.765;  // Table 1, absolute coordinates, n >= 30
 
 // h: RK4 is 4th order; the slowest relevant error is the pendulum phase ((ω h)^4 ~ 1e-16) and the
@@ -145,8 +145,8 @@ TEST(Table1, PeriodBracketedByRigidAndMasslessPendulum) {
   const std::vector<double> z = validation::zeroCrossings(tr.t, tr.x);
   ASSERT_EQ(z.size(), 2u);
   const double period = z[0] + z[1];  // crossings at T/4 and 3T/4
-  std::printf("[table1 period] T = %.4f s (crossings %.4f, %.4f); rigid compound %.4f s, massless line %.4f s\n", period,
-              z[0], z[1], t_rigid, t_massless);
+  std::printf("[table1 period] T = %.4f s (crossings %.4f, %.4f); rigid compound %.4f s, massless line %.4f s\n",
+              period, z[0], z[1], t_rigid, t_massless);
   EXPECT_GT(period, t_rigid);
   EXPECT_LT(period, t_massless);
 }

@@ -77,8 +77,8 @@ TEST(TermData, SimulatorsSharingAModelRunIndependently) {
   EXPECT_GE(contacts0, 3);
   std::printf("[term_data] B: %d..%d contacts (A starts with %d)\n", b_contacts_min, b_contacts_max, contacts0);
   EXPECT_GT(b_contacts_max - b_contacts_min, 2) << "B's contacts: " << b_contacts_min << ".." << b_contacts_max;
-  EXPECT_TRUE(a->state() == alone->state()) << "max |difference| "
-                                            << (a->state() - alone->state()).lpNorm<Eigen::Infinity>();
+  EXPECT_TRUE(a->state() == alone->state())
+      << "max |difference| " << (a->state() - alone->state()).lpNorm<Eigen::Infinity>();
 }
 
 }  // namespace
@@ -93,12 +93,12 @@ namespace {
 TEST(TermData, FusedForcesAndPowerEqualSeparateCalls) {
   for (const char* flow : {"paper", "pipe_flow"}) {
     SCOPED_TRACE(flow);
-    const Scene s = loadSceneFile(std::string(RISER_SIM_SOURCE_DIR) + "/config/scenes/paper_jlay_170m.yaml",
-                                  {"line.elements=20", "internal_fluid.velocity=5", "internal_fluid.acceleration=0.5",
-                                   std::string("internal_fluid.model=") + flow, "line.axial_damping=1e6",
-                                   "line.bending_damping=1e5", "seabed.damping_normal=1e4",
-                                   "environment.current.velocity=[0.5, 0]",
-                                   "environment.waves={height: 4, period: 8, depth: 80}"});
+    const Scene s =
+        loadSceneFile(std::string(RISER_SIM_SOURCE_DIR) + "/config/scenes/paper_jlay_170m.yaml",
+                      {"line.elements=20", "internal_fluid.velocity=5", "internal_fluid.acceleration=0.5",
+                       std::string("internal_fluid.model=") + flow, "line.axial_damping=1e6",
+                       "line.bending_damping=1e5", "seabed.damping_normal=1e4", "environment.current.velocity=[0.5, 0]",
+                       "environment.waves={height: 4, period: 8, depth: 80}"});
     auto sim = buildSimulator(s);
     ASSERT_TRUE(sim->advanceTo(0.5));  // moving: every velocity term is non-zero
     const Model& model = sim->model();

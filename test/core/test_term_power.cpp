@@ -87,8 +87,9 @@ TEST(TermPower, ForcesPowerIsMinusPotentialRatePlusReportedPower) {
       VecX Q = VecX::Zero(nq);
       term->addForces(*model, nullptr, kin, t, Q);
       const double forces_power = Q.dot(y.tail(nq));
-      const double v_rate = (term->potentialEnergyAt(*model, nullptr, kp, t) -
-                             term->potentialEnergyAt(*model, nullptr, km, t)) / (2.0 * kFdStep);
+      const double v_rate =
+          (term->potentialEnergyAt(*model, nullptr, kp, t) - term->potentialEnergyAt(*model, nullptr, km, t)) /
+          (2.0 * kFdStep);
       const double reported = term->power(*model, nullptr, kin, t);
       const double scale = std::max({std::abs(forces_power), std::abs(reported), 1.0});
       EXPECT_LT(std::abs(forces_power + v_rate - reported), kPowerRelTol * scale)

@@ -91,9 +91,10 @@ TEST(WaterJonswap, SimulatedElevationHasTheRequestedSpectrum) {
   const double ref = c[n / 4].a * c[n / 4].a / WaterKinematics::jonswapShape(c[n / 4].omega, wp, gamma);
   for (const auto& comp : c)
     EXPECT_NEAR(comp.a * comp.a, ref * WaterKinematics::jonswapShape(comp.omega, wp, gamma), 1e-12 * amax * amax);
-  std::printf("[ measured ] JONSWAP Hs %.3g m: 4 sqrt(m0) of the record %.12g m; Fourier amplitudes vs requested "
-              "%.2e of the largest; spectral peak at %.4f rad/s (omega_p %.4f)\n", hs, 4.0 * std::sqrt(var),
-              err / amax, w_peak, wp);
+  std::printf(
+      "[ measured ] JONSWAP Hs %.3g m: 4 sqrt(m0) of the record %.12g m; Fourier amplitudes vs requested "
+      "%.2e of the largest; spectral peak at %.4f rad/s (omega_p %.4f)\n",
+      hs, 4.0 * std::sqrt(var), err / amax, w_peak, wp);
 }
 
 // v, a at a point: the sum over components of the textbook finite-depth Airy formulas (cosh, sinh evaluated
@@ -197,9 +198,12 @@ TEST(WaterJonswap, RememberedSamplesAreExactAndPerWater) {
 }
 
 TEST(WaterJonswap, SceneKeys) {
-  const std::string line = "line: {length: 50.0, elements: 5, EA: 1.0e7, EI: 1.0e4, mass_per_length: 80.0, outer_diameter: 0.3}\n";
-  const Scene s = loadSceneText(line + "environment: {water: {}, waves: {type: jonswap, significant_height: 5.0, "
-                                       "peak_period: 12.0, gamma: 2.5, components: 80, seed: 4, ramp: 20.0}}\n", "j");
+  const std::string line =
+      "line: {length: 50.0, elements: 5, EA: 1.0e7, EI: 1.0e4, mass_per_length: 80.0, outer_diameter: 0.3}\n";
+  const Scene s = loadSceneText(line +
+                                    "environment: {water: {}, waves: {type: jonswap, significant_height: 5.0, "
+                                    "peak_period: 12.0, gamma: 2.5, components: 80, seed: 4, ramp: 20.0}}\n",
+                                "j");
   EXPECT_EQ(s.water.waves.type, WaveKind::kJonswap);
   EXPECT_EQ(s.water.waves.significant_height, 5.0);
   EXPECT_EQ(s.water.waves.components, 80);

@@ -23,10 +23,10 @@ namespace validation {
 //   y(s) = -(1/w) [T(0) - T(s)] - (V0 s - w s²/2) / EA,     V0 = V(0)
 // EA = +inf gives the inextensible catenary.
 struct Catenary {
-  double L = 0.0;      // unstretched length [m]
-  double w = 0.0;      // weight per unit length [N/m]
-  double EA = 0.0;     // axial stiffness [N] (inf: inextensible)
-  double W_end = 0.0;  // end weight m_s g [N]
+  double L = 0.0;         // unstretched length [m]
+  double w = 0.0;         // weight per unit length [N/m]
+  double EA = 0.0;        // axial stiffness [N] (inf: inextensible)
+  double W_end = 0.0;     // end weight m_s g [N]
   Vec2 F = Vec2::Zero();  // external end force [N]
 
   double V(double s) const { return W_end - F.y() + w * (L - s); }
@@ -73,8 +73,7 @@ inline double catenaryForceForOffset(Catenary c, double dx) {
 inline double catenaryShapeError(const Model& model, const Kinematics& kin, const Catenary& c) {
   const Vec2 top = kin[0].A;
   double err = 0.0;
-  for (int i = 0; i < model.bodies(); ++i)
-    err = std::max(err, (kin[i].A - top - c.at(model.rfe(i).s_begin)).norm());
+  for (int i = 0; i < model.bodies(); ++i) err = std::max(err, (kin[i].A - top - c.at(model.rfe(i).s_begin)).norm());
   return std::max(err, (kin.back().end() - top - c.end()).norm());
 }
 

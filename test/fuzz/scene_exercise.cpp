@@ -17,9 +17,9 @@ namespace {
 
 // The loader's own keyless errors: the text as a whole is bad, there is no key to name.
 bool keylessKind(const std::string& what) {
-  for (const char* m : {": YAML syntax error: ", "cannot read scene", "malformed override",
-                        "a scene must be a map of sections", "cannot apply override",
-                        "top-level keys must be plain names"})
+  for (const char* m :
+       {": YAML syntax error: ", "cannot read scene", "malformed override", "a scene must be a map of sections",
+        "cannot apply override", "top-level keys must be plain names"})
     if (what.find(m) != std::string::npos) return true;
   return false;
 }
@@ -47,8 +47,8 @@ std::string nonFiniteOutput(const LineOutputs& o) {
   if (!finite(o.arc_length)) return "arc_length";
   if (!finite(o.bending_moment)) return "bending_moment";
   if (!o.top_force.allFinite() || !o.bottom_force.allFinite()) return "end forces";
-  for (double v : {o.t, o.top_tension, o.bottom_tension, o.max_tension, o.kinetic_energy, o.potential_energy,
-                   o.work_in, o.constraint_error})
+  for (double v : {o.t, o.top_tension, o.bottom_tension, o.max_tension, o.kinetic_energy, o.potential_energy, o.work_in,
+                   o.constraint_error})
     if (!finite(v)) return "scalar outputs";
   return "";
 }

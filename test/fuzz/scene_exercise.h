@@ -20,7 +20,8 @@ SceneInput splitInput(const std::string& data);
 // that name their key (or a syntax/override error of the whole text), nothing non-finite out of a
 // built simulator.
 struct Outcome {
-  // kRejected by the loader, kParsed (valid, more than kMaxBuiltElements or a long dopri5 step), kBuildRejected by buildSimulator.
+  // kRejected by the loader, kParsed (valid, more than kMaxBuiltElements or a long dopri5 step), kBuildRejected by
+  // buildSimulator.
   enum class Kind { kRejected, kParsed, kBuildRejected, kBuilt } kind = Kind::kRejected;
   std::string message;  // the error, or "built, N steps" / "parsed ..."
   std::string defect;

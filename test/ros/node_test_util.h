@@ -40,11 +40,13 @@ inline bool waitRosTime(double seconds, double timeout) {
 
 // Waits until every frame can be transformed to `world` (latest data), for up to timeout [s of wall time].
 inline bool waitForFrames(const tf2_ros::Buffer& buffer, const std::vector<std::string>& frames, double timeout) {
-  return waitFor([&] {
-    for (const std::string& f : frames)
-      if (!buffer.canTransform("world", f, ros::Time(0))) return false;
-    return true;
-  }, timeout);
+  return waitFor(
+      [&] {
+        for (const std::string& f : frames)
+          if (!buffer.canTransform("world", f, ros::Time(0))) return false;
+        return true;
+      },
+      timeout);
 }
 
 // Keeps every message of type M (with its ROS receipt time) on a topic.
@@ -96,7 +98,8 @@ class PosePublisher {
   PosePublisher(ros::NodeHandle& nh, const std::string& topic, double rate, Path path,
                 const std::string& frame = "world")
       : pub_(nh.advertise<geometry_msgs::PoseStamped>(topic, 10)), path_(std::move(path)), frame_(frame) {
-    timer_ = nh.createTimer(ros::Duration(1.0 / rate), [this](const ros::TimerEvent&) { send(); }, false, false);
+    timer_ = nh.createTimer(
+        ros::Duration(1.0 / rate), [this](const ros::TimerEvent&) { send(); }, false, false);
   }
   void start() {
     t0_ = ros::Time::now();

@@ -49,18 +49,18 @@ TEST(NodeBadInput, BadPosesNeverReachTheIntegrator) {
   std::vector<geometry_msgs::PoseStamped> bad;
   auto next = [&] { return ros::Time::now(); };
   const double nan = std::nan(""), inf = INFINITY;
-  bad.push_back(pose(next(), nan));                    // NaN position
+  bad.push_back(pose(next(), nan));  // NaN position
   bad.push_back(pose(next(), kBadX));
-  bad.back().pose.position.z = inf;                    // Inf position
+  bad.back().pose.position.z = inf;  // Inf position
   bad.push_back(pose(next(), kBadX));
-  bad.back().pose.orientation.w = 0.0;                 // zero quaternion
+  bad.back().pose.orientation.w = 0.0;  // zero quaternion
   bad.push_back(pose(next(), kBadX));
-  bad.back().pose.orientation.w = 2.0;                 // not a unit quaternion
+  bad.back().pose.orientation.w = 2.0;  // not a unit quaternion
   bad.push_back(pose(next(), kBadX));
-  bad.back().pose.orientation.x = nan;                 // NaN orientation
-  bad.push_back(pose(next(), kBadX, "map"));           // wrong frame_id
-  bad.push_back(pose(ros::Time(), kBadX));             // zero stamp
-  bad.push_back(pose(good, kBadX));                    // duplicate stamp
+  bad.back().pose.orientation.x = nan;                    // NaN orientation
+  bad.push_back(pose(next(), kBadX, "map"));              // wrong frame_id
+  bad.push_back(pose(ros::Time(), kBadX));                // zero stamp
+  bad.push_back(pose(good, kBadX));                       // duplicate stamp
   bad.push_back(pose(good - ros::Duration(0.5), kBadX));  // out of order
   for (const auto& m : bad) pub.publish(m);
   // Another valid pose at the origin after them, then wait until the node has seen them all.
@@ -105,7 +105,8 @@ TEST(NodeBadInput, StepAboveTheStabilityLimitIsRefusedWithASafeStep) {
       for (const auto& s : d.status)
         if (s.name.rfind("unstable/riser_sim", 0) == 0 && s.level == diagnostic_msgs::DiagnosticStatus::ERROR) {
           EXPECT_NE(s.message.find("could not start: solver.dt 0.001 s is above rk4's stability limit"),
-                    std::string::npos) << s.message;
+                    std::string::npos)
+              << s.message;
           EXPECT_NE(s.message.find("a safe solver.dt is"), std::string::npos) << s.message;
           EXPECT_EQ(s.message.find("diverged"), std::string::npos) << s.message;
           ++n;
@@ -185,15 +186,17 @@ TEST(NodeBadInput, AbsurdStepDivergesAndResetRecovers) {
   }
   // Back to OK and running (a report from after the reset).
   const size_t d0 = diag.count();
-  ASSERT_TRUE(waitFor([&] {
-    const auto all = diag.all();
-    for (size_t i = d0; i < all.size(); ++i)
-      for (const auto& s : all[i].status)
-        if (s.name.rfind(node, 0) == 0 && s.level == diagnostic_msgs::DiagnosticStatus::OK &&
-            diagValue(all[i], node, "mode") == "running")
-          return true;
-    return false;
-  }, 5.0));
+  ASSERT_TRUE(waitFor(
+      [&] {
+        const auto all = diag.all();
+        for (size_t i = d0; i < all.size(); ++i)
+          for (const auto& s : all[i].status)
+            if (s.name.rfind(node, 0) == 0 && s.level == diagnostic_msgs::DiagnosticStatus::OK &&
+                diagValue(all[i], node, "mode") == "running")
+              return true;
+        return false;
+      },
+      5.0));
 }
 
 // Forces the step cannot resolve (noisy_release.yaml: midpoint at 0.1 s on the released Table 1 line, whose
@@ -245,12 +248,15 @@ TEST(NodeBadInput, HangOffBeyondMaxPositionIsRefused) {
   ASSERT_TRUE(waitFor([&] { return pub.getNumSubscribers() > 0; }, 20.0));
   pub.publish(pose(ros::Time::now(), 80.0));
   std::string why;
-  ASSERT_TRUE(waitFor([&] {
-    const auto all = diag.all();
-    for (auto it = all.rbegin(); it != all.rend(); ++it)
-      if (!(why = diagValue(*it, "far/riser_sim", "last rejection")).empty()) return true;
-    return false;
-  }, 15.0)) << "no rejection on /diagnostics";
+  ASSERT_TRUE(waitFor(
+      [&] {
+        const auto all = diag.all();
+        for (auto it = all.rbegin(); it != all.rend(); ++it)
+          if (!(why = diagValue(*it, "far/riser_sim", "last rejection")).empty()) return true;
+        return false;
+      },
+      15.0))
+      << "no rejection on /diagnostics";
   EXPECT_EQ(why, "attachment point (130, 0, 0) m (pose * vessel offset) is beyond ~max_position 100 m");
   EXPECT_EQ(diagCount(diag, "far/riser_sim", "poses accepted"), 0);
   EXPECT_EQ(tension.count(), 0u);

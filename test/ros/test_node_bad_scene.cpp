@@ -59,8 +59,9 @@ TEST(NodeBadScene, NodeParameterErrorsNameTheParameter) {
 
 // A misspelt private parameter is fatal like a misspelt scene key (it would be ignored silently).
 TEST(NodeBadScene, UnknownParametersAreFatal) {
-  expectFatal("misspelt_rate", "~rates/tensoin: unknown parameter (did you mean 'tension'?); accepted under "
-                               "~rates/: tension, state, wrench, tf, markers, diagnostics");
+  expectFatal("misspelt_rate",
+              "~rates/tensoin: unknown parameter (did you mean 'tension'?); accepted under "
+              "~rates/: tension, state, wrench, tf, markers, diagnostics");
   expectFatal("misspelt_loop_rate", "~loop_rat: unknown parameter (did you mean 'loop_rate'?)");
 }
 

@@ -100,7 +100,8 @@ TEST(NodeBadTf, RejectedCountedAndLogThrottled) {
   EXPECT_GE(sent, 80);  // 50 Hz for 2 s, whatever the machine's load did to the timer
 
   // Every bad transform is a rejected pose (/tf's queue holds 100: none is dropped at 50 Hz).
-  EXPECT_TRUE(waitFor([&] { return rejected() == sent; }, 10.0)) << "poses rejected " << rejected() << ", sent " << sent;
+  EXPECT_TRUE(waitFor([&] { return rejected() == sent; }, 10.0))
+      << "poses rejected " << rejected() << ", sent " << sent;
   const std::string last = diagValue(diag.last(), kName, "last rejection");
   EXPECT_NE(last.find("zero quaternion"), std::string::npos) << last;
   const size_t before = tension.count();

@@ -120,8 +120,7 @@ TEST(NodeClock, StalledClockPausesBackwardsClockResets) {
   auto pausedCount = [&] {
     int n = 0;
     for (const auto& a : diag.all())
-      if (const auto* s = status(a))
-        n += s->message.find("paused: ROS time has not advanced") != std::string::npos;
+      if (const auto* s = status(a)) n += s->message.find("paused: ROS time has not advanced") != std::string::npos;
     return n;
   };
   drv.setRunning(false);
@@ -159,20 +158,26 @@ TEST(NodeClock, StalledClockPausesBackwardsClockResets) {
   const double before = drv.clock();
   const size_t n_before = tension.count();
   drv.jumpTo(500.0);
-  ASSERT_TRUE(waitFor([&] {
-    const auto all = tension.all();
-    return all.size() > n_before + 3 && all.back().header.stamp.toSec() < before;
-  }, 10.0)) << "no data on the new timeline";
+  ASSERT_TRUE(waitFor(
+      [&] {
+        const auto all = tension.all();
+        return all.size() > n_before + 3 && all.back().header.stamp.toSec() < before;
+      },
+      10.0))
+      << "no data on the new timeline";
   const auto all = tension.all();
   for (size_t i = n_before; i < all.size(); ++i) {
     if (all[i].header.stamp.toSec() >= before) continue;  // in flight before the jump
     EXPECT_GE(all[i].header.stamp.toSec(), 500.0);
     EXPECT_NEAR(all[i].top, kWeight, 1e-6 * kWeight);  // restarted from the statics, vessel at rest
   }
-  ASSERT_TRUE(waitFor([&] {
-    const auto d = diag.last();
-    return !diagValue(d, "riser_sim", "ROS time jumps back").empty() && diagValue(d, "riser_sim", "mode") == "running";
-  }, 5.0));
+  ASSERT_TRUE(waitFor(
+      [&] {
+        const auto d = diag.last();
+        return !diagValue(d, "riser_sim", "ROS time jumps back").empty() &&
+               diagValue(d, "riser_sim", "mode") == "running";
+      },
+      5.0));
   EXPECT_EQ(diagValue(diag.last(), "riser_sim", "ROS time jumps back"), "1");
   EXPECT_NE(diagValue(diag.last(), "riser_sim", "last ROS time jump").find("jumped back by"), std::string::npos);
   EXPECT_LT(std::stod(diagValue(diag.last(), "riser_sim", "sim time [s]")), drv.clock() - 500.0 + 0.1);

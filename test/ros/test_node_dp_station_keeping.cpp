@@ -46,12 +46,13 @@ TEST(NodeDpStationKeeping, HoldsStationWhileTheRiserPulls) {
     ++n;
   }
   const auto last = vessel.last().pose.position;
-  std::printf("[ INFO ] DP over %.0f s (%d poses): largest offset %.3f m (bound %.2f m), yaw %.4f rad; final "
-              "(%.3f, %.3f) m; riser pull fx %.0f N (static PD offset fx / kp = %.3f m)\n",
-              kRun, n, worst, kHold, worst_yaw, last.x, last.y, fx, fx / 2.0e4);
+  std::printf(
+      "[ INFO ] DP over %.0f s (%d poses): largest offset %.3f m (bound %.2f m), yaw %.4f rad; final "
+      "(%.3f, %.3f) m; riser pull fx %.0f N (static PD offset fx / kp = %.3f m)\n",
+      kRun, n, worst, kHold, worst_yaw, last.x, last.y, fx, fx / 2.0e4);
   EXPECT_GT(n, 200);
-  EXPECT_GT(fx, 1000.0);     // the current makes the riser pull downstream
-  EXPECT_GT(last.x, 0.1);    // and the vessel gives way to it
+  EXPECT_GT(fx, 1000.0);   // the current makes the riser pull downstream
+  EXPECT_GT(last.x, 0.1);  // and the vessel gives way to it
   EXPECT_LT(worst, kHold);
   EXPECT_LT(worst_yaw, kYawHold);
   EXPECT_EQ(lastDiag(diag, "mode"), "running");

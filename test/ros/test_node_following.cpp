@@ -27,7 +27,8 @@ class Vessel {
   explicit Vessel(ros::NodeHandle& nh)
       : pose_pub_(nh.advertise<geometry_msgs::PoseStamped>("/vessel/pose", 10)),
         odom_pub_(nh.advertise<nav_msgs::Odometry>("/odom/vessel/odom", 10)) {
-    timer_ = nh.createTimer(ros::Duration(1.0 / kRate), [this](const ros::TimerEvent&) { send(); }, false, false);
+    timer_ = nh.createTimer(
+        ros::Duration(1.0 / kRate), [this](const ros::TimerEvent&) { send(); }, false, false);
   }
   void start() {
     t0_ = ros::Time::now();
@@ -105,8 +106,8 @@ TEST(NodeFollowing, TopFollowsTheVesselForEveryInput) {
   int k = 0;
   for (auto* rec : {&state, &state_odom, &state_tf}) {
     const Tracking tr = trackState(rec->all(), vessel);
-    std::printf("[ INFO ] %s input: max tracking error of the top %.4f m (tolerance %.4f m) over %d states\n",
-                names[k], tr.max_error, kTrackTol, tr.samples);
+    std::printf("[ INFO ] %s input: max tracking error of the top %.4f m (tolerance %.4f m) over %d states\n", names[k],
+                tr.max_error, kTrackTol, tr.samples);
     RecordProperty(std::string("max_tracking_error_") + names[k++], std::to_string(tr.max_error));
     ASSERT_GT(tr.samples, 40);
     EXPECT_LT(tr.max_error, kTrackTol);

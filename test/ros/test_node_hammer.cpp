@@ -23,18 +23,19 @@ constexpr double kSettle = 1.0;
 constexpr double kBadX = 100.0;  // where every bad pose with a finite position puts the vessel
 
 // Phases, in seconds of wall (= ROS) time since the driver started.
-constexpr double kGoodUntil = 2.0;        // good poses at 20 Hz
-constexpr double kMixedUntil = 5.0;       // bad poses of every kind at 200 Hz, nothing good
-constexpr double kBadBurstUntil = 6.0;    // bad poses at 1 kHz
-constexpr double kSilenceUntil = 8.0;     // nothing (2 s > pose_timeout 1 s)
-constexpr double kGoodBurstUntil = 9.0;   // good poses at 1 kHz
-constexpr double kJunkUntil = 11.0;       // good at 20 Hz, each followed by a repeated and an older stamp
-constexpr double kEnd = 14.0;             // good at 20 Hz
+constexpr double kGoodUntil = 2.0;       // good poses at 20 Hz
+constexpr double kMixedUntil = 5.0;      // bad poses of every kind at 200 Hz, nothing good
+constexpr double kBadBurstUntil = 6.0;   // bad poses at 1 kHz
+constexpr double kSilenceUntil = 8.0;    // nothing (2 s > pose_timeout 1 s)
+constexpr double kGoodBurstUntil = 9.0;  // good poses at 1 kHz
+constexpr double kJunkUntil = 11.0;      // good at 20 Hz, each followed by a repeated and an older stamp
+constexpr double kEnd = 14.0;            // good at 20 Hz
 
 class Driver {
  public:
   explicit Driver(ros::NodeHandle& nh) : pub_(nh.advertise<geometry_msgs::PoseStamped>("/vessel/pose", 1000)) {
-    timer_ = nh.createWallTimer(ros::WallDuration(0.001), [this](const ros::WallTimerEvent&) { tick(); }, false, false);
+    timer_ = nh.createWallTimer(
+        ros::WallDuration(0.001), [this](const ros::WallTimerEvent&) { tick(); }, false, false);
   }
   void start() {
     t0_ = ros::Time::now();
@@ -68,17 +69,17 @@ class Driver {
       case 2: m.pose.position.y = -inf; break;
       case 3: m.pose.position.x = 1e30; break;
       case 4: m.pose.position.z = -1e30; break;
-      case 5: m.pose.orientation.w = 0.0; break;                                    // zero quaternion
-      case 6: m.pose.orientation.w = 2.0; break;                                    // norm 2
-      case 7: m.pose.orientation.x = 0.3; break;                                    // norm 1.044
+      case 5: m.pose.orientation.w = 0.0; break;  // zero quaternion
+      case 6: m.pose.orientation.w = 2.0; break;  // norm 2
+      case 7: m.pose.orientation.x = 0.3; break;  // norm 1.044
       case 8: m.pose.orientation.y = nan; break;
       case 9: m.pose.orientation.z = 1e30; break;
       case 10: m.header.frame_id = "map"; break;
       case 11: m.header.frame_id = ""; break;
-      case 12: m.header.stamp = now + ros::Duration(1000.0); break;                 // future
+      case 12: m.header.stamp = now + ros::Duration(1000.0); break;  // future
       case 13: m.header.stamp = now + ros::Duration(2.0); break;
-      case 14: m.header.stamp = now - ros::Duration(100.0); break;                  // past
-      case 15: m.header.stamp = ros::Time(); break;                                 // zero
+      case 14: m.header.stamp = now - ros::Duration(100.0); break;  // past
+      case 15: m.header.stamp = ros::Time(); break;                 // zero
     }
     return m;
   }
@@ -152,8 +153,8 @@ TEST(NodeHammer, KeepsRunningRatesNoNaNThrottledWarningsAndTracksAgain) {
   std::printf("[hammer] tension %.2f Hz over %.1f s (bad poses sent %ld)\n", rate, span, vessel.bad());
   EXPECT_NEAR(rate, 20.0, 0.1 * 20.0);
   EXPECT_NEAR(state.countBetween(from, to) / span, 20.0, 0.1 * 20.0);
-  ASSERT_TRUE(waitFor([&] { return !diag.all().empty() && diagValue(diag.last(), "riser_sim", "mode") == "running"; },
-                      5.0));
+  ASSERT_TRUE(
+      waitFor([&] { return !diag.all().empty() && diagValue(diag.last(), "riser_sim", "mode") == "running"; }, 5.0));
   EXPECT_TRUE(ros::service::exists("/riser_sim/reset", false));
 
   // Nothing non-finite, anywhere; and no bad pose ever reached the top (|x| <= 2 m path + 5 cm).

@@ -147,7 +147,9 @@ TEST(CheckStamp, AgeLeadAndOrder) {
 TEST(WarnThrottle, OnePerPeriodAndCountsTheRest) {
   WarnThrottle t(2.0);
   const auto t0 = std::chrono::steady_clock::now();
-  auto at = [&](double s) { return t0 + std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(s)); };
+  auto at = [&](double s) {
+    return t0 + std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(s));
+  };
   long suppressed = -1;
   ASSERT_TRUE(t.allow(at(0.0), suppressed));
   EXPECT_EQ(suppressed, 0);

@@ -68,7 +68,7 @@ TEST(SpatialState, CurvatureAndMomentAreThePlanarNodesInAnyVerticalPlane) {
     const Eigen::AngleAxisd yaw(psi, Vec3::UnitZ());
     for (int j = 0; j < joints; ++j) {
       const double tol = 1e-9 * biggest;
-      EXPECT_NEAR(q.curvatures[j], p.curvatures[j], tol / 100.0) << j;  // EI = 100 N m²
+      EXPECT_NEAR(q.curvatures[j], p.curvatures[j], tol / 100.0) << j;                 // EI = 100 N m²
       EXPECT_NEAR(q.curvatures[j] * 100.0, std::abs(p.bending_moments[j]), tol) << j;  // EI κ, at rest
       EXPECT_NEAR(q.bending_moments[j], std::abs(p.bending_moments[j]), tol) << j;
       const auto& v = q.bending_moment_vectors[j];
@@ -274,7 +274,8 @@ solver: {dt: 0.001}
     ASSERT_TRUE(r.coeffs().allFinite()) << i;
     EXPECT_NEAR(r.norm(), 1.0, 1e-12);
     const Vec3 e = Vec3(st.points[i + 1].x - st.points[i].x, st.points[i + 1].y - st.points[i].y,
-                        st.points[i + 1].z - st.points[i].z).normalized();
+                        st.points[i + 1].z - st.points[i].z)
+                       .normalized();
     EXPECT_LT((r * Vec3::UnitX() - e).norm(), 1e-6) << i;  // the joints' gaps: ~1e-9 m of 2 m elements
   }
 }
@@ -304,8 +305,9 @@ solver: {dt: 0.001}
     ASSERT_TRUE(run->evaluate());
     const riser_sim::LineState st = run->state(ros::Time(3));
     const auto& tq = run->topWrench(ros::Time(3)).wrench.torque;
-    const Vec3 e0 = Vec3(st.points[1].x - st.points[0].x, st.points[1].y - st.points[0].y,
-                         st.points[1].z - st.points[0].z).normalized();
+    const Vec3 e0 =
+        Vec3(st.points[1].x - st.points[0].x, st.points[1].y - st.points[0].y, st.points[1].z - st.points[0].z)
+            .normalized();
     const Vec3 d = Eigen::AngleAxisd(0.15, Vec3::UnitX()) * Vec3(0, 0, -1);
     const Vec3 expected = -2.0e4 * std::acos(std::clamp(e0.dot(d), -1.0, 1.0)) * e0.cross(d).normalized();
     const Vec3 d0(0, 0, -1), fixed = -2.0e4 * std::acos(std::clamp(e0.dot(d0), -1.0, 1.0)) * e0.cross(d0).normalized();
@@ -313,10 +315,12 @@ solver: {dt: 0.001}
     fixed_gap = std::min(fixed_gap, (Vec3(tq.x, tq.y, tq.z) - fixed).norm());
     biggest = std::max(biggest, expected.norm());
   }
-  std::printf("[ INFO ] rolled flex joint: torque minus k angle(R d0, e0) <= %.2e N m of %.1f N m; a joint fixed in "
-              "the world would be off by >= %.1f N m\n", worst, biggest, fixed_gap);
-  EXPECT_GT(biggest, 100.0);   // the roll loads the joint (the line swings after it: 218 N m at most, measured)
-  EXPECT_GT(fixed_gap, 1e3);   // ~k x 0.15 rad: what a joint that did not turn would miss
+  std::printf(
+      "[ INFO ] rolled flex joint: torque minus k angle(R d0, e0) <= %.2e N m of %.1f N m; a joint fixed in "
+      "the world would be off by >= %.1f N m\n",
+      worst, biggest, fixed_gap);
+  EXPECT_GT(biggest, 100.0);  // the roll loads the joint (the line swings after it: 218 N m at most, measured)
+  EXPECT_GT(fixed_gap, 1e3);  // ~k x 0.15 rad: what a joint that did not turn would miss
   // The joint's gaps at the top (~1e-9 m over 2 m elements) bound e_0 from the points: 1e-8 rad of k = 2e4.
   EXPECT_LT(worst, 1e-3);
 }
@@ -343,8 +347,8 @@ solver: {dt: 0.001}
   computeModesResponse(s, 4, r);
   ASSERT_TRUE(r.success) << r.message;
   ASSERT_EQ(r.characters.size(), 4u);
-  EXPECT_NEAR(r.periods[0], r.periods[1], 1e-6 * r.periods[0]);  // a pair across the vertical
-  EXPECT_NE(r.characters[0], r.characters[1]);                   // one in the plane, one across it
+  EXPECT_NEAR(r.periods[0], r.periods[1], 1e-6 * r.periods[0]);        // a pair across the vertical
+  EXPECT_NE(r.characters[0], r.characters[1]);                         // one in the plane, one across it
   for (size_t k = 0; k < 4; ++k) EXPECT_NE(r.characters[k], "axial");  // inextensible
 }
 
@@ -372,8 +376,10 @@ solver: {dt: 0.001}
   std::vector<double> bending;
   int torsional = 0;
   for (size_t k = 0; k < mt.characters.size(); ++k) {
-    if (mt.characters[k] == "torsional") ++torsional;
-    else if (bending.size() < 4) bending.push_back(mt.periods[k]);
+    if (mt.characters[k] == "torsional")
+      ++torsional;
+    else if (bending.size() < 4)
+      bending.push_back(mt.periods[k]);
   }
   EXPECT_GE(torsional, 6);
   ASSERT_EQ(bending.size(), 4u);

@@ -34,7 +34,8 @@ TEST(ManyRisers, EachRiserHasItsNamespacePrefixOffsetAndProcess) {
   ros::NodeHandle nh;
   std::vector<std::unique_ptr<Recorder<riser_sim::LineState>>> states;
   for (int i = 1; i <= kRisers; ++i)
-    states.push_back(std::make_unique<Recorder<riser_sim::LineState>>(nh, "/riser_" + std::to_string(i) + "/riser_sim/state"));
+    states.push_back(
+        std::make_unique<Recorder<riser_sim::LineState>>(nh, "/riser_" + std::to_string(i) + "/riser_sim/state"));
   Recorder<geometry_msgs::PoseStamped> vessel(nh, "/vessel/pose");
   for (int i = 0; i < kRisers; ++i) ASSERT_TRUE(states[i]->waitCount(1, 40.0)) << "riser_" << i + 1 << " runs";
   ASSERT_TRUE(waitRosTime(kWarmup + 3.0, 30.0));
@@ -44,7 +45,8 @@ TEST(ManyRisers, EachRiserHasItsNamespacePrefixOffsetAndProcess) {
   auto vesselAt = [&](const ros::Time& t, geometry_msgs::Point& p) {  // linear in the recorded poses
     for (size_t k = 1; k < poses.size(); ++k)
       if (poses[k - 1].header.stamp <= t && t <= poses[k].header.stamp) {
-        const double w = (t - poses[k - 1].header.stamp).toSec() / (poses[k].header.stamp - poses[k - 1].header.stamp).toSec();
+        const double w =
+            (t - poses[k - 1].header.stamp).toSec() / (poses[k].header.stamp - poses[k - 1].header.stamp).toSec();
         p.x = poses[k - 1].pose.position.x + w * (poses[k].pose.position.x - poses[k - 1].pose.position.x);
         p.z = poses[k - 1].pose.position.z + w * (poses[k].pose.position.z - poses[k - 1].pose.position.z);
         return true;
@@ -61,7 +63,8 @@ TEST(ManyRisers, EachRiserHasItsNamespacePrefixOffsetAndProcess) {
       worst = std::max(worst, std::hypot(s.points[0].x - (v.x + i * kSpacing), s.points[0].z - v.z));
       ++n;
     }
-    std::printf("[ INFO ] riser_%d: max tracking error %.4f m over %d states (tolerance %.4f m)\n", i + 1, worst, n, kTrackTol);
+    std::printf("[ INFO ] riser_%d: max tracking error %.4f m over %d states (tolerance %.4f m)\n", i + 1, worst, n,
+                kTrackTol);
     RecordProperty("max_tracking_error_riser_" + std::to_string(i + 1), std::to_string(worst));
     EXPECT_GE(n, 20) << "riser_" << i + 1 << ": ~state at 10 Hz over 3 s";
     EXPECT_LT(worst, kTrackTol) << "riser_" << i + 1;
@@ -70,7 +73,9 @@ TEST(ManyRisers, EachRiserHasItsNamespacePrefixOffsetAndProcess) {
   tf2_ros::Buffer buffer;
   tf2_ros::TransformListener listener(buffer);
   for (int i = 1; i <= kRisers; ++i)
-    EXPECT_TRUE(waitFor([&] { return buffer.canTransform("world", "riser_" + std::to_string(i) + "/riser_sim/rfe_0", ros::Time(0)); }, 10.0))
+    EXPECT_TRUE(waitFor(
+        [&] { return buffer.canTransform("world", "riser_" + std::to_string(i) + "/riser_sim/rfe_0", ros::Time(0)); },
+        10.0))
         << "frames of riser_" << i;
 
   // nodelets:=true put riser_1..3 in the manager; nodelets:=false gave riser_4..6 their own processes.

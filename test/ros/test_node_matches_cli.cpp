@@ -24,9 +24,9 @@ using namespace riser_sim_test;
 
 namespace {
 
-constexpr double kTick = 0.05;    // /clock step = publish period of tension, state, diagnostics [s]
-constexpr int kTicks = 20;        // the first second
-const ros::Time kT0(1000.0);      // first /clock value (zero would mean "no clock yet")
+constexpr double kTick = 0.05;  // /clock step = publish period of tension, state, diagnostics [s]
+constexpr int kTicks = 20;      // the first second
+const ros::Time kT0(1000.0);    // first /clock value (zero would mean "no clock yet")
 // Hang-off = top.position + kShift (planar: paper x, y; 3D: x, y, z): off the origin, so a sign error in the
 // world -> paper mapping (x, z) or in the 3D pose moves the top by metres.
 const Eigen::Vector2d kShift(4.0, -3.0);
@@ -58,8 +58,8 @@ int64_t key(double t) { return std::llround(t * 1e6); }
 struct Riser {
   std::string ns, scene_file;
   bool spatial = false;
-  Eigen::Vector3d hangoff;   // world: the node's hang-off
-  std::string cli_top;       // top.position for the CLI ("[x,z]" planar, "[x,y,z]" 3D)
+  Eigen::Vector3d hangoff;  // world: the node's hang-off
+  std::string cli_top;      // top.position for the CLI ("[x,z]" planar, "[x,y,z]" 3D)
   bool driven_bottom = false;
   Eigen::Vector3d bottom = Eigen::Vector3d::Zero();  // a driven bottom's pose [m]
   ros::Publisher pose_pub, bottom_pub;
@@ -83,8 +83,8 @@ std::map<int64_t, Sample> runCli(const Riser& r) {
   const std::string csv = "/tmp/node_matches_cli_" + r.ns + "_" + std::to_string(getpid()) + ".csv";
   const std::string cmd = std::string(RISER_SIM_CLI_BIN) + " --scene " + r.scene_file +
                           " --set top.motion.type=fixed --set top.position=" + r.cli_top + " --duration " +
-                          std::to_string(kTicks * kTick) + " --output-dt " + std::to_string(kTick) +
-                          " --quiet --csv " + csv;
+                          std::to_string(kTicks * kTick) + " --output-dt " + std::to_string(kTick) + " --quiet --csv " +
+                          csv;
   std::map<int64_t, Sample> rows;
   if (std::system(cmd.c_str()) != 0) {
     ADD_FAILURE() << "failed: " << cmd;
@@ -169,29 +169,34 @@ TEST(NodeMatchesCli, FirstSecondOfEveryShippedScene) {
     const std::string ns = "/" + r->ns + "/";
     r->pose_pub = nh.advertise<geometry_msgs::PoseStamped>(ns + "vessel/pose", 10);
     if (r->driven_bottom) r->bottom_pub = nh.advertise<geometry_msgs::PoseStamped>(ns + "riser_sim/bottom_pose", 10);
-    r->tension_sub = nh.subscribe<riser_sim::Tension>(ns + "riser_sim/tension", 100, [r](const riser_sim::Tension::ConstPtr& m) {
-      std::lock_guard<std::mutex> lock(mutex_);
-      Sample& s = r->by_stamp[m->header.stamp.toNSec()];
-      s.tension = m->top;
-      s.has_tension = true;
-    });
-    r->state_sub = nh.subscribe<riser_sim::LineState>(ns + "riser_sim/state", 100, [r](const riser_sim::LineState::ConstPtr& m) {
-      std::lock_guard<std::mutex> lock(mutex_);
-      Sample& s = r->by_stamp[m->header.stamp.toNSec()];
-      s.top = {m->points.front().x, m->points.front().y, m->points.front().z};
-      s.end = {m->points.back().x, m->points.back().y, m->points.back().z};
-      s.has_state = true;
-    });
+    r->tension_sub =
+        nh.subscribe<riser_sim::Tension>(ns + "riser_sim/tension", 100, [r](const riser_sim::Tension::ConstPtr& m) {
+          std::lock_guard<std::mutex> lock(mutex_);
+          Sample& s = r->by_stamp[m->header.stamp.toNSec()];
+          s.tension = m->top;
+          s.has_tension = true;
+        });
+    r->state_sub =
+        nh.subscribe<riser_sim::LineState>(ns + "riser_sim/state", 100, [r](const riser_sim::LineState::ConstPtr& m) {
+          std::lock_guard<std::mutex> lock(mutex_);
+          Sample& s = r->by_stamp[m->header.stamp.toNSec()];
+          s.top = {m->points.front().x, m->points.front().y, m->points.front().z};
+          s.end = {m->points.back().x, m->points.back().y, m->points.back().z};
+          s.has_state = true;
+        });
   }
   ros::Publisher clock_pub = nh.advertise<rosgraph_msgs::Clock>("/clock", 10, /*latch=*/true);
-  ASSERT_TRUE(waitFor([&] {
-    if (diag_sub.getNumPublishers() < risers.size()) return false;
-    for (auto& r : risers)
-      if (r->pose_pub.getNumSubscribers() == 0 || r->tension_sub.getNumPublishers() == 0 ||
-          r->state_sub.getNumPublishers() == 0 || (r->driven_bottom && r->bottom_pub.getNumSubscribers() == 0))
-        return false;
-    return true;
-  }, 30.0)) << "nodes not connected";
+  ASSERT_TRUE(waitFor(
+      [&] {
+        if (diag_sub.getNumPublishers() < risers.size()) return false;
+        for (auto& r : risers)
+          if (r->pose_pub.getNumSubscribers() == 0 || r->tension_sub.getNumPublishers() == 0 ||
+              r->state_sub.getNumPublishers() == 0 || (r->driven_bottom && r->bottom_pub.getNumSubscribers() == 0))
+            return false;
+        return true;
+      },
+      30.0))
+      << "nodes not connected";
 
   // Lock-step: publish the tick and a pose stamped with it, wait until every node has handled the tick.
   auto all = [&](const std::function<bool(const Riser&)>& f) {
@@ -248,10 +253,13 @@ TEST(NodeMatchesCli, FirstSecondOfEveryShippedScene) {
       }
       return node;
     };
-    ASSERT_TRUE(waitFor([&] {
-      std::lock_guard<std::mutex> lock(mutex_);
-      return first_second().size() >= 10;
-    }, 10.0)) << "tension/state of the first second (from " << r.origin << ") incomplete";
+    ASSERT_TRUE(waitFor(
+        [&] {
+          std::lock_guard<std::mutex> lock(mutex_);
+          return first_second().size() >= 10;
+        },
+        10.0))
+        << "tension/state of the first second (from " << r.origin << ") incomplete";
     std::lock_guard<std::mutex> lock(mutex_);
     double worst_tension = 0.0, worst_end = 0.0, last_tension = NAN, last_cli = NAN;
     int compared = 0;
@@ -274,9 +282,10 @@ TEST(NodeMatchesCli, FirstSecondOfEveryShippedScene) {
       }
     }
     EXPECT_GE(compared, 5) << "node and CLI share too few instants";
-    std::printf("%-26s %s top tension %.6e N (CLI %.6e N) at the last of %d instants; max |dT|/T %.2e, max |d end| "
-                "%.2e m\n", r.ns.c_str(), r.spatial ? "3D" : "planar", last_tension, last_cli, compared,
-                worst_tension, worst_end);
+    std::printf(
+        "%-26s %s top tension %.6e N (CLI %.6e N) at the last of %d instants; max |dT|/T %.2e, max |d end| "
+        "%.2e m\n",
+        r.ns.c_str(), r.spatial ? "3D" : "planar", last_tension, last_cli, compared, worst_tension, worst_end);
   }
 }
 

@@ -28,10 +28,11 @@ constexpr double kWarmup = 2.5;
 class VesselTrack {
  public:
   explicit VesselTrack(ros::NodeHandle& nh) {
-    sub_ = nh.subscribe<geometry_msgs::PoseStamped>("/vessel/pose", 100, [this](const geometry_msgs::PoseStamped::ConstPtr& m) {
-      std::lock_guard<std::mutex> lock(mutex_);
-      path_[m->header.stamp.toSec()] = m->pose.position;
-    });
+    sub_ = nh.subscribe<geometry_msgs::PoseStamped>("/vessel/pose", 100,
+                                                    [this](const geometry_msgs::PoseStamped::ConstPtr& m) {
+                                                      std::lock_guard<std::mutex> lock(mutex_);
+                                                      path_[m->header.stamp.toSec()] = m->pose.position;
+                                                    });
   }
   // Linear interpolation at stamp t; false outside the recorded range.
   bool at(double t, geometry_msgs::Point& p) const {
@@ -56,7 +57,8 @@ class VesselTrack {
 };
 
 // Max |top - (vessel + offset)| over the states from kWarmup after the first; `n` = states compared.
-double trackingError(const std::vector<riser_sim::LineState>& states, const VesselTrack& vessel, double offset, int& n) {
+double trackingError(const std::vector<riser_sim::LineState>& states, const VesselTrack& vessel, double offset,
+                     int& n) {
   double worst = 0.0;
   n = 0;
   if (states.empty()) return worst;
@@ -131,15 +133,17 @@ TEST(Nodelets, TwoRisersAndTheVesselShareOneManager) {
   EXPECT_NEAR(gap, 10.0, 2.0 * kTrackTol) << "the two tops 10 m apart (their tf stamps may differ by a publish period)";
 
   // Diagnostics named after each nodelet.
-  ASSERT_TRUE(waitFor([&] {
-    bool a = false, b = false;
-    for (const auto& d : diag.all())
-      for (const auto& s : d.status) {
-        a |= s.name == "riser_a/riser_sim: riser simulation";
-        b |= s.name == "riser_b/riser_sim: riser simulation";
-      }
-    return a && b;
-  }, 10.0));
+  ASSERT_TRUE(waitFor(
+      [&] {
+        bool a = false, b = false;
+        for (const auto& d : diag.all())
+          for (const auto& s : d.status) {
+            a |= s.name == "riser_a/riser_sim: riser simulation";
+            b |= s.name == "riser_b/riser_sim: riser simulation";
+          }
+        return a && b;
+      },
+      10.0));
 
   // The vessel's poses reach the risers inside the manager: roscpp joins a process's subscriptions to
   // one topic, so the manager has one inbound link on /vessel/pose serving both risers, intra-process
@@ -155,7 +159,8 @@ TEST(Nodelets, TwoRisersAndTheVesselShareOneManager) {
   srv.request.name = "/riser_a/riser_sim";
   ASSERT_TRUE(unload.call(srv));
   ASSERT_TRUE(srv.response.success);
-  ASSERT_TRUE(waitFor([&] { return !advertised("/riser_a/riser_sim/tension"); }, 10.0)) << "riser_a's publishers are gone";
+  ASSERT_TRUE(waitFor([&] { return !advertised("/riser_a/riser_sim/tension"); }, 10.0))
+      << "riser_a's publishers are gone";
   EXPECT_FALSE(ros::service::exists("/riser_a/riser_sim/reset", false));
   const size_t a_after = tension_a.count(), b_after = tension_b.count();
   ASSERT_TRUE(waitRosTime(1.0, 10.0));

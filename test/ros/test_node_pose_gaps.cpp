@@ -11,11 +11,11 @@ using namespace riser_sim_test;
 
 namespace {
 
-constexpr double kRate = 20.0;        // poses per second
-constexpr double kDrift = 0.15;       // [m/s] along x
-constexpr double kSettle = 4.0;       // [s] after every node's first tension: start_blend (2 s) and its swing
-constexpr double kAfter = 1.5;        // [s] after a return that the tension is checked for
-constexpr double kTolerance = 0.3;    // relative to the mean before the gap
+constexpr double kRate = 20.0;      // poses per second
+constexpr double kDrift = 0.15;     // [m/s] along x
+constexpr double kSettle = 4.0;     // [s] after every node's first tension: start_blend (2 s) and its swing
+constexpr double kAfter = 1.5;      // [s] after a return that the tension is checked for
+constexpr double kTolerance = 0.3;  // relative to the mean before the gap
 struct Gap {
   double from, to;  // [s] after the settling
 };
@@ -84,8 +84,7 @@ class Feeds {
   ros::Time gaps_from_;
 };
 
-std::string lastDiag(const Recorder<diagnostic_msgs::DiagnosticArray>& diag, const std::string& ns,
-                     const char* key) {
+std::string lastDiag(const Recorder<diagnostic_msgs::DiagnosticArray>& diag, const std::string& ns, const char* key) {
   const auto all = diag.all();
   for (auto it = all.rbegin(); it != all.rend(); ++it) {
     const std::string v = diagValue(*it, ns + "/riser_sim", key);
@@ -108,7 +107,8 @@ double worstRelative(const std::vector<riser_sim::Tension>& msgs, const ros::Tim
   double worst = n > 0 ? 0.0 : INFINITY;
   for (const auto& m : msgs) {
     const double s = (m.header.stamp - base).toSec();
-    if (s >= g.from && s <= g.to + kAfter) worst = std::max(worst, std::abs((bottom ? m.bottom : m.top) - before) / before);
+    if (s >= g.from && s <= g.to + kAfter)
+      worst = std::max(worst, std::abs((bottom ? m.bottom : m.top) - before) / before);
   }
   return worst;
 }
@@ -117,14 +117,18 @@ TEST(NodePoseGaps, TensionStaysNearItsValueAndTheGapsAreReported) {
   ros::NodeHandle nh;
   std::vector<Node> nodes;
   for (const char* ns : {"planar", "dp", "d3", "rov"})
-    nodes.push_back({ns, std::make_unique<Recorder<riser_sim::Tension>>(nh, std::string("/") + ns + "/riser_sim/tension")});
+    nodes.push_back(
+        {ns, std::make_unique<Recorder<riser_sim::Tension>>(nh, std::string("/") + ns + "/riser_sim/tension")});
   Recorder<diagnostic_msgs::DiagnosticArray> diag(nh, "/diagnostics");
   Feeds feeds(nh);
-  ASSERT_TRUE(waitFor([&] {
-    for (const Node& n : nodes)
-      if (n.tension->count() == 0) return false;
-    return true;
-  }, 60.0)) << "a node did not start";
+  ASSERT_TRUE(waitFor(
+      [&] {
+        for (const Node& n : nodes)
+          if (n.tension->count() == 0) return false;
+        return true;
+      },
+      60.0))
+      << "a node did not start";
   feeds.startGaps(kSettle);
   const ros::Time base = feeds.gapsFrom();
   ASSERT_TRUE(waitFor([&] { return ros::Time::now() >= base + ros::Duration(kEnd); }, 3.0 * kEnd));
@@ -136,17 +140,21 @@ TEST(NodePoseGaps, TensionStaysNearItsValueAndTheGapsAreReported) {
     EXPECT_GT(n.tension->countBetween(base + ros::Duration(kEnd - 1.0), base + ros::Duration(kEnd)), 5u) << n.ns;
     EXPECT_EQ(lastDiag(diag, n.ns, "mode"), "running") << n.ns;
     const bool rov = n.ns == "rov";
-    for (const Gap& g : rov ? std::vector<Gap>{kRovGap} : std::vector<Gap>(std::begin(kVesselGaps), std::end(kVesselGaps))) {
+    for (const Gap& g :
+         rov ? std::vector<Gap>{kRovGap} : std::vector<Gap>(std::begin(kVesselGaps), std::end(kVesselGaps))) {
       for (bool bottom : {false, true}) {
         if (bottom && !rov) continue;
         double before = 0.0;
         const double worst = worstRelative(msgs, base, g, bottom, before);
-        std::printf("[ measured ] %s: %s gap of %.1f s: %s tension %.1f N before, off by at most %.1f %% until %.1f s "
-                    "after the return\n", n.ns.c_str(), rov ? "ROV" : "vessel", g.to - g.from,
-                    bottom ? "bottom" : "top", before, 100.0 * worst, kAfter);
+        std::printf(
+            "[ measured ] %s: %s gap of %.1f s: %s tension %.1f N before, off by at most %.1f %% until %.1f s "
+            "after the return\n",
+            n.ns.c_str(), rov ? "ROV" : "vessel", g.to - g.from, bottom ? "bottom" : "top", before, 100.0 * worst,
+            kAfter);
         // The ROV's end of its slack tether holds ~10 N, a few of them the drag of its drift, which stops and
         // resumes with the ROV's end: half of it.
-        EXPECT_LT(worst, bottom ? 0.5 : kTolerance) << n.ns << " gap " << g.to - g.from << (bottom ? " bottom" : " top");
+        EXPECT_LT(worst, bottom ? 0.5 : kTolerance)
+            << n.ns << " gap " << g.to - g.from << (bottom ? " bottom" : " top");
       }
     }
     // /diagnostics: the gaps, counted with their length (a gap runs from the last pose before it to the first

@@ -90,10 +90,11 @@ TEST(NodeRovTether, BothEndsFollowAndTheEndForcePointsIntoTheLine) {
     force = f.norm();
     ++paired;
   }
-  std::printf("[ INFO ] ROV tether over %d states (%.1f s): bottom end from the ROV attachment up to %.4f m, "
-              "hang-off from the vessel's up to %.4f m (tolerance %.2f m); the end moved %.2f m; end force %.2f N, "
-              "its direction vs the last element: cos >= %.4f over %d\n",
-              n, kRun, worst_bottom, worst_top, kTrackTol, rov_path, force, min_cos, paired);
+  std::printf(
+      "[ INFO ] ROV tether over %d states (%.1f s): bottom end from the ROV attachment up to %.4f m, "
+      "hang-off from the vessel's up to %.4f m (tolerance %.2f m); the end moved %.2f m; end force %.2f N, "
+      "its direction vs the last element: cos >= %.4f over %d\n",
+      n, kRun, worst_bottom, worst_top, kTrackTol, rov_path, force, min_cos, paired);
   EXPECT_GT(n, 50);
   EXPECT_GT(paired, 50);
   EXPECT_GT(rov_path, 3.0);  // the ROV did move
@@ -126,17 +127,19 @@ TEST(NodeRovTether, BadRovPosesAreRefusedAndCounted) {
   const double nan = std::nan("");
   std::vector<geometry_msgs::PoseStamped> bad(6, rov.last());
   for (auto& m : bad) m.header.stamp = ros::Time::now();
-  bad[0].pose.orientation.w *= 1.5, bad[0].pose.orientation.z *= 1.5;      // norm 1.5
-  bad[1].pose.orientation.w = bad[1].pose.orientation.z = 0.0;             // zero quaternion
-  bad[2].pose.position.y = nan;                                             // NaN position
-  bad[3].pose.position.z = INFINITY;                                        // Inf position
-  bad[4].header.stamp = rov.last().header.stamp;                            // duplicate (or out of order)
-  bad[5].header.stamp = rov.last().header.stamp - ros::Duration(0.3);       // out of order
+  bad[0].pose.orientation.w *= 1.5, bad[0].pose.orientation.z *= 1.5;  // norm 1.5
+  bad[1].pose.orientation.w = bad[1].pose.orientation.z = 0.0;         // zero quaternion
+  bad[2].pose.position.y = nan;                                        // NaN position
+  bad[3].pose.position.z = INFINITY;                                   // Inf position
+  bad[4].header.stamp = rov.last().header.stamp;                       // duplicate (or out of order)
+  bad[5].header.stamp = rov.last().header.stamp - ros::Duration(0.3);  // out of order
   for (const auto& m : bad) pub.publish(m);
-  ASSERT_TRUE(waitFor([&] {
-    const std::string v = lastDiag(diag, "bottom poses rejected");
-    return !v.empty() && std::stol(v) >= 6;
-  }, 20.0));
+  ASSERT_TRUE(waitFor(
+      [&] {
+        const std::string v = lastDiag(diag, "bottom poses rejected");
+        return !v.empty() && std::stol(v) >= 6;
+      },
+      20.0));
   std::printf("[ INFO ] bottom poses rejected %s, last: %s\n", lastDiag(diag, "bottom poses rejected").c_str(),
               lastDiag(diag, "last bottom rejection").c_str());
   EXPECT_EQ(lastDiag(diag, "mode"), "running");
@@ -153,17 +156,19 @@ TEST(NodeRovTether, WaitingNamesTheMissingInputs) {
   Recorder<diagnostic_msgs::DiagnosticArray> diag(nh, "/diagnostics");
   std::string rov, none, mode;
   const auto waiting = [&](const char* node, std::string& message) {
-    return waitFor([&] {
-      for (const auto& a : diag.all())
-        for (const auto& st : a.status)
-          if (st.name.rfind(node, 0) == 0 && diagValue(a, node, "mode").rfind("waiting", 0) == 0 &&
-              (std::string(node) != "no_rov/riser_sim" || diagValue(a, node, "poses accepted") != "0")) {
-            message = st.message;
-            mode = diagValue(a, node, "mode");
-            return true;
-          }
-      return false;
-    }, 20.0);
+    return waitFor(
+        [&] {
+          for (const auto& a : diag.all())
+            for (const auto& st : a.status)
+              if (st.name.rfind(node, 0) == 0 && diagValue(a, node, "mode").rfind("waiting", 0) == 0 &&
+                  (std::string(node) != "no_rov/riser_sim" || diagValue(a, node, "poses accepted") != "0")) {
+                message = st.message;
+                mode = diagValue(a, node, "mode");
+                return true;
+              }
+          return false;
+        },
+        20.0);
   };
   ASSERT_TRUE(waiting("no_rov/riser_sim", rov)) << "no waiting diagnostics with vessel poses accepted";
   EXPECT_NE(rov.find("waiting for the first valid bottom pose (/no_rov/riser_sim/bottom_pose)"), std::string::npos)
@@ -172,7 +177,9 @@ TEST(NodeRovTether, WaitingNamesTheMissingInputs) {
   EXPECT_EQ(mode, "waiting for bottom pose");
   ASSERT_TRUE(waiting("no_poses/riser_sim", none));
   EXPECT_NE(none.find("waiting for the first valid vessel pose (/no_poses/vessel/pose) and bottom pose "
-                      "(/no_poses/riser_sim/bottom_pose)"), std::string::npos) << none;
+                      "(/no_poses/riser_sim/bottom_pose)"),
+            std::string::npos)
+      << none;
 }
 
 }  // namespace

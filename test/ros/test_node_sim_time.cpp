@@ -43,11 +43,14 @@ TEST(NodeSimTime, FollowsTheClock) {
     // ros::Time(double) rounds to whole nanoseconds: allow that rounding, nothing more.
     EXPECT_LE(m.header.stamp.toSec(), g_clock.load() + 1e-6);
   }
-  ASSERT_TRUE(waitFor([&] {
-    if (diag.count() < 2) return false;
-    const std::string rtf = diagValue(diag.last(), "riser_sim", "real-time factor");
-    return !rtf.empty() && std::abs(std::stod(rtf) - 1.0) < 0.1;
-  }, 10.0)) << "real-time factor (in clock time) not ~1";
+  ASSERT_TRUE(waitFor(
+      [&] {
+        if (diag.count() < 2) return false;
+        const std::string rtf = diagValue(diag.last(), "riser_sim", "real-time factor");
+        return !rtf.empty() && std::abs(std::stod(rtf) - 1.0) < 0.1;
+      },
+      10.0))
+      << "real-time factor (in clock time) not ~1";
   ticker.stop();
 }
 

@@ -14,20 +14,23 @@ TEST(NodeSlow, ReportsFallingBehindAndKeepsPublishing) {
   ASSERT_TRUE(tension.waitCount(1, 20.0));
 
   diagnostic_msgs::DiagnosticStatus warn;
-  ASSERT_TRUE(waitFor([&] {
-    for (const auto& d : diag.all())
-      for (const auto& s : d.status)
-        if (s.name.rfind("riser_sim", 0) == 0 && s.level == diagnostic_msgs::DiagnosticStatus::WARN &&
-            s.message.find("falling behind") != std::string::npos) {
-          diagnostic_msgs::DiagnosticArray one;
-          one.status.push_back(s);
-          const std::string dropped = diagValue(one, "riser_sim", "time dropped total [s]");
-          if (dropped.empty() || std::stod(dropped) <= 0.0) continue;  // not yet past max_lag
-          warn = s;
-          return true;
-        }
-    return false;
-  }, 15.0)) << "no 'falling behind' WARN with dropped time on /diagnostics";
+  ASSERT_TRUE(waitFor(
+      [&] {
+        for (const auto& d : diag.all())
+          for (const auto& s : d.status)
+            if (s.name.rfind("riser_sim", 0) == 0 && s.level == diagnostic_msgs::DiagnosticStatus::WARN &&
+                s.message.find("falling behind") != std::string::npos) {
+              diagnostic_msgs::DiagnosticArray one;
+              one.status.push_back(s);
+              const std::string dropped = diagValue(one, "riser_sim", "time dropped total [s]");
+              if (dropped.empty() || std::stod(dropped) <= 0.0) continue;  // not yet past max_lag
+              warn = s;
+              return true;
+            }
+        return false;
+      },
+      15.0))
+      << "no 'falling behind' WARN with dropped time on /diagnostics";
   diagnostic_msgs::DiagnosticArray a;
   a.status.push_back(warn);
   EXPECT_LT(std::stod(diagValue(a, "riser_sim", "real-time factor")), 0.9);

@@ -17,7 +17,9 @@ Eigen::Vector3d vesselAt(double t) {
   return Eigen::Vector3d(1.5 * std::sin(w(6) * t), 2.0 * std::sin(w(8) * t), 0.3 * std::sin(w(3) * t));
 }
 double yawAt(double t) { return 0.4 * std::sin(w(8) * t); }
-Eigen::Vector3d hangoffAt(double t) { return vesselAt(t) + Eigen::AngleAxisd(yawAt(t), Eigen::Vector3d::UnitZ()) * kOffset; }
+Eigen::Vector3d hangoffAt(double t) {
+  return vesselAt(t) + Eigen::AngleAxisd(yawAt(t), Eigen::Vector3d::UnitZ()) * kOffset;
+}
 // Peak hang-off speed ~3.1 m/s (sway 1.57 + yaw 0.31 rad/s x 5 m); half a pose period of that motion.
 constexpr double kTrackTol = 0.08;  // [m]
 constexpr double kWarmup = 1.0;     // [s]
@@ -58,8 +60,10 @@ TEST(NodeSpatial, HangoffFollowsTheRotatedOffsetAndTheLineLeavesThePlane) {
     end_y = std::max(end_y, std::abs(m.points.back().y));
     ++n;
   }
-  std::printf("[ INFO ] 3D hang-off: largest distance from the rotated offset %.4f m (tolerance %.2f m) over %d "
-              "states; end of the line up to %.2f m out of the x-z plane\n", worst, kTrackTol, n, end_y);
+  std::printf(
+      "[ INFO ] 3D hang-off: largest distance from the rotated offset %.4f m (tolerance %.2f m) over %d "
+      "states; end of the line up to %.2f m out of the x-z plane\n",
+      worst, kTrackTol, n, end_y);
   EXPECT_GT(n, 100);
   EXPECT_LT(worst, kTrackTol);
   EXPECT_GT(end_y, 1.0);
@@ -92,9 +96,7 @@ TEST(NodeSpatial, HangoffFollowsTheRotatedOffsetAndTheLineLeavesThePlane) {
 TEST(NodeSpatial, YawedVesselAtRestGivesTheRotatedStatics) {
   ros::NodeHandle nh;
   const double yaw = M_PI / 3.0;
-  const auto still = [](double angle) {
-    return [angle](double, geometry_msgs::Pose& p) { setYaw(p, angle); };
-  };
+  const auto still = [](double angle) { return [angle](double, geometry_msgs::Pose& p) { setYaw(p, angle); }; };
   PosePublisher flat(nh, "/flat/vessel/pose", 10.0, still(0.0)), yawed(nh, "/yawed/vessel/pose", 10.0, still(yaw)),
       body(nh, "/yawed_body/vessel/pose", 10.0, still(yaw));
   Recorder<geometry_msgs::WrenchStamped> top_flat(nh, "/flat/riser_sim/top_wrench"),
@@ -112,9 +114,10 @@ TEST(NodeSpatial, YawedVesselAtRestGivesTheRotatedStatics) {
   const Eigen::Vector3d fb = vec(top_body.last().wrench.force);
   const Eigen::Vector3d b0 = vec(bottom_flat.last().wrench.force), b1 = vec(bottom_yawed.last().wrench.force);
   const double tol = 1e-3;  // [N], of a 875 N top force (measured ~1e-10 N)
-  std::printf("[ INFO ] top force flat (%.3f, %.3f, %.3f) N; yawed minus rotated %.2e N; body frame minus flat "
-              "%.2e N; bottom: yawed minus rotated %.2e N\n", f0.x(), f0.y(), f0.z(), (f1 - R * f0).norm(),
-              (fb - f0).norm(), (b1 - R * b0).norm());
+  std::printf(
+      "[ INFO ] top force flat (%.3f, %.3f, %.3f) N; yawed minus rotated %.2e N; body frame minus flat "
+      "%.2e N; bottom: yawed minus rotated %.2e N\n",
+      f0.x(), f0.y(), f0.z(), (f1 - R * f0).norm(), (fb - f0).norm(), (b1 - R * b0).norm());
   EXPECT_GT(f0.norm(), 100.0);
   EXPECT_GT(std::abs(f0.x()), 10.0);  // the tether pulls the hang-off towards the axis: not just the weight
   EXPECT_LT((f1 - R * f0).norm(), tol);
@@ -125,7 +128,8 @@ TEST(NodeSpatial, YawedVesselAtRestGivesTheRotatedStatics) {
   const auto s0 = state_flat.last(), s1 = state_yawed.last();
   ASSERT_EQ(s0.points.size(), s1.points.size());
   double shape = 0.0;
-  for (size_t i = 0; i < s0.points.size(); ++i) shape = std::max(shape, (vec(s1.points[i]) - R * vec(s0.points[i])).norm());
+  for (size_t i = 0; i < s0.points.size(); ++i)
+    shape = std::max(shape, (vec(s1.points[i]) - R * vec(s0.points[i])).norm());
   std::printf("[ INFO ] shape: yawed minus rotated flat %.2e m\n", shape);
   EXPECT_LT(shape, 1e-6);  // [m] (measured ~1e-13 m)
   EXPECT_NEAR(s0.points.front().x, 8.0, 1e-6);
@@ -142,7 +146,8 @@ TEST(NodeSpatial, YawedVesselAtRestGivesTheRotatedStatics) {
     EXPECT_NEAR(s1.bending_moments[j], 100.0 * s1.curvatures[j], 1e-3) << "joint " << j + 1;
     EXPECT_NEAR(s1.bending_moments[j], vec(s1.bending_moment_vectors[j]).norm(), 1e-12);
   }
-  std::printf("[ INFO ] bending: largest %.3f N m; yawed minus rotated flat moment vectors %.2e N m\n", biggest, turned);
+  std::printf("[ INFO ] bending: largest %.3f N m; yawed minus rotated flat moment vectors %.2e N m\n", biggest,
+              turned);
   EXPECT_GT(biggest, 1.0);
   EXPECT_LT(turned, 1e-3);
 }

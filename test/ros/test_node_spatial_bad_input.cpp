@@ -52,14 +52,14 @@ TEST(NodeSpatialBadInput, BadPosesNeverReachTheIntegrator) {
   bad.push_back(pose(next(), kBadY));
   bad.back().pose.orientation.w *= 1.5, bad.back().pose.orientation.z *= 1.5;  // norm 1.5
   bad.push_back(pose(next(), kBadY));
-  bad.back().pose.orientation.w = bad.back().pose.orientation.z = 0.0;         // zero quaternion
+  bad.back().pose.orientation.w = bad.back().pose.orientation.z = 0.0;  // zero quaternion
   bad.push_back(pose(next(), kBadY));
-  bad.back().pose.orientation.z = nan;                                          // NaN orientation
-  bad.push_back(pose(next(), nan));                                             // NaN position (y)
+  bad.back().pose.orientation.z = nan;  // NaN orientation
+  bad.push_back(pose(next(), nan));     // NaN position (y)
   bad.push_back(pose(next(), kBadY));
-  bad.back().pose.position.z = inf;                                             // Inf position
-  bad.push_back(pose(good, kBadY));                                             // duplicate stamp
-  bad.push_back(pose(good - ros::Duration(0.3), kBadY));                        // out of order
+  bad.back().pose.position.z = inf;                       // Inf position
+  bad.push_back(pose(good, kBadY));                       // duplicate stamp
+  bad.push_back(pose(good - ros::Duration(0.3), kBadY));  // out of order
   for (const auto& m : bad) pub.publish(m);
   pub.publish(pose(ros::Time::now(), 0.0));
   ASSERT_TRUE(waitFor([&] { return diagCount(diag, "poses rejected") >= long(bad.size()); }, 10.0))

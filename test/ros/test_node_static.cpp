@@ -165,10 +165,12 @@ TEST_F(NodeStatic, MarkersShowTheLineAndTheTopTension) {
 }
 
 TEST_F(NodeStatic, DiagnosticsReportRealTime) {
-  ASSERT_TRUE(waitFor([] {
-    if (diag_->count() == 0) return false;
-    return diagValue(diag_->last(), "riser_sim", "mode") == "running";
-  }, 10.0));
+  ASSERT_TRUE(waitFor(
+      [] {
+        if (diag_->count() == 0) return false;
+        return diagValue(diag_->last(), "riser_sim", "mode") == "running";
+      },
+      10.0));
   ASSERT_TRUE(diag_->waitCount(diag_->count() + 1, 5.0));  // a full window after the start
   const auto d = diag_->last();
   ASSERT_FALSE(d.status.empty());

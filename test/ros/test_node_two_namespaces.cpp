@@ -61,15 +61,17 @@ TEST(TwoNamespaces, EachNodeHasItsOwnTopicsFramesAndService) {
   }
 
   // Diagnostics: one status per node, distinct names.
-  ASSERT_TRUE(waitFor([&] {
-    bool seen_a = false, seen_b = false;
-    for (const auto& d : diag.all())
-      for (const auto& s : d.status) {
-        seen_a |= s.name.rfind("riser_a/riser_sim", 0) == 0;
-        seen_b |= s.name.rfind("riser_b/riser_sim", 0) == 0;
-      }
-    return seen_a && seen_b;
-  }, 10.0));
+  ASSERT_TRUE(waitFor(
+      [&] {
+        bool seen_a = false, seen_b = false;
+        for (const auto& d : diag.all())
+          for (const auto& s : d.status) {
+            seen_a |= s.name.rfind("riser_a/riser_sim", 0) == 0;
+            seen_b |= s.name.rfind("riser_b/riser_sim", 0) == 0;
+          }
+        return seen_a && seen_b;
+      },
+      10.0));
 }
 
 }  // namespace

@@ -19,12 +19,14 @@ class Attachments : public ForceTerm {
               const SeabedSpec& seabed, double gravity);
   std::string name() const override { return "attachments"; }
   void addForces(const Model& model, const TermData*, const Kinematics& kin, double t, VecX& Q) const override;
-  double addForcesAndPower(const Model& model, const TermData*, const Kinematics& kin, double t, VecX& Q) const override;
+  double addForcesAndPower(const Model& model, const TermData*, const Kinematics& kin, double t,
+                           VecX& Q) const override;
   double potentialEnergy(const Model& model, const TermData*, const Kinematics& kin) const override;
   double power(const Model& model, const TermData*, const Kinematics& kin, double t) const override;
   bool hasInertia() const override { return has_added_mass_; }
   void addInertia(const Model& model, const Kinematics& kin, double t, AlignedVector<Mat4>& M, VecX& h) const override;
-  bool addStiffness(const Model& model, const TermData*, const Kinematics& kin, double t, StiffnessBlocks& S) const override;
+  bool addStiffness(const Model& model, const TermData*, const Kinematics& kin, double t,
+                    StiffnessBlocks& S) const override;
   std::unique_ptr<ForceTerm> steadyTerm(double t) const override { return steadyTerm(t, 1.0); }
   std::unique_ptr<ForceTerm> steadyTerm(double t, double current_factor) const override;
 

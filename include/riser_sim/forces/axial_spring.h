@@ -9,7 +9,8 @@ class AxialSpring : public ForceTerm {
  public:
   std::string name() const override { return "axial_spring"; }
   void addForces(const Model& model, const TermData*, const Kinematics& kin, double t, VecX& Q) const override;
-  bool addStiffness(const Model& model, const TermData*, const Kinematics& kin, double t, StiffnessBlocks& S) const override;
+  bool addStiffness(const Model& model, const TermData*, const Kinematics& kin, double t,
+                    StiffnessBlocks& S) const override;
   double potentialEnergy(const Model& model, const TermData*, const Kinematics& kin) const override;
   double power(const Model& model, const TermData*, const Kinematics& kin, double t) const override;
 };

@@ -13,7 +13,8 @@ class Buoyancy : public ForceTerm {
   explicit Buoyancy(const WaterSpec& water) : water_(water) {}
   std::string name() const override { return "buoyancy"; }
   void addForces(const Model& model, const TermData*, const Kinematics& kin, double t, VecX& Q) const override;
-  bool addStiffness(const Model& model, const TermData*, const Kinematics& kin, double t, StiffnessBlocks& S) const override;
+  bool addStiffness(const Model& model, const TermData*, const Kinematics& kin, double t,
+                    StiffnessBlocks& S) const override;
   double potentialEnergy(const Model& model, const TermData*, const Kinematics& kin) const override;
   double power(const Model&, const TermData*, const Kinematics&, double) const override { return 0.0; }  // conservative
   const WaterSpec& water() const { return water_; }

@@ -11,7 +11,8 @@ class EndLoad : public ForceTerm {
   explicit EndLoad(const Vec2& force) : force_(force) {}
   std::string name() const override { return "end_load"; }
   void addForces(const Model& model, const TermData*, const Kinematics& kin, double t, VecX& Q) const override;
-  bool addStiffness(const Model& model, const TermData*, const Kinematics& kin, double t, StiffnessBlocks& S) const override;
+  bool addStiffness(const Model& model, const TermData*, const Kinematics& kin, double t,
+                    StiffnessBlocks& S) const override;
   double potentialEnergy(const Model& model, const TermData*, const Kinematics& kin) const override;
   double power(const Model&, const TermData*, const Kinematics&, double) const override { return 0.0; }  // conservative
   const Vec2& force() const { return force_; }

@@ -9,7 +9,8 @@ class Gravity : public ForceTerm {
  public:
   std::string name() const override { return "gravity"; }
   void addForces(const Model& model, const TermData*, const Kinematics& kin, double t, VecX& Q) const override;
-  bool addStiffness(const Model& model, const TermData*, const Kinematics& kin, double t, StiffnessBlocks& S) const override;
+  bool addStiffness(const Model& model, const TermData*, const Kinematics& kin, double t,
+                    StiffnessBlocks& S) const override;
   double potentialEnergy(const Model& model, const TermData*, const Kinematics& kin) const override;
   double power(const Model&, const TermData*, const Kinematics&, double) const override { return 0.0; }  // conservative
 };

@@ -24,10 +24,11 @@ class HydroInertia : public ForceTerm {
   }
   void addForces(const Model& model, const TermData*, const Kinematics& kin, double t, VecX& Q) const override;
   bool hasInertia() const override { return cm_ != 1.0 || ca_t_ != 0.0 || section_added_mass_; }
-  void addInertia(const Model& model, const Kinematics& kin, double t, AlignedVector<Mat4>& M,
-                  VecX& h) const override;
+  void addInertia(const Model& model, const Kinematics& kin, double t, AlignedVector<Mat4>& M, VecX& h) const override;
   double power(const Model& model, const TermData*, const Kinematics& kin, double t) const override;
-  double potentialEnergy(const Model&, const TermData*, const Kinematics&) const override { return 0.0; }  // inertia + Froude-Krylov: power() only
+  double potentialEnergy(const Model&, const TermData*, const Kinematics&) const override {
+    return 0.0;
+  }  // inertia + Froude-Krylov: power() only
   double addForcesAndPower(const Model& model, const TermData*, const Kinematics& kin, double t,
                            VecX& Q) const override;
 

@@ -52,7 +52,9 @@ class PipeFlow : public ForceTerm {
   PipeFlow(const InternalFlowSpec& spec, double flow_area) : spec_(spec), rho_l_(spec.density * flow_area) {}
   std::string name() const override { return "pipe_flow"; }
   void addForces(const Model& model, const TermData*, const Kinematics& kin, double t, VecX& Q) const override;
-  double potentialEnergy(const Model&, const TermData*, const Kinematics&) const override { return 0.0; }  // open system
+  double potentialEnergy(const Model&, const TermData*, const Kinematics&) const override {
+    return 0.0;
+  }  // open system
   double power(const Model& model, const TermData*, const Kinematics& kin, double t) const override;
   double addForcesAndPower(const Model& model, const TermData*, const Kinematics& kin, double t,
                            VecX& Q) const override;

@@ -20,7 +20,9 @@ class MorisonDrag : public ForceTerm {
   }
   void addForces(const Model& model, const TermData*, const Kinematics& kin, double t, VecX& Q) const override;
   double power(const Model& model, const TermData*, const Kinematics& kin, double t) const override;
-  double potentialEnergy(const Model&, const TermData*, const Kinematics&) const override { return 0.0; }  // dissipative: power() only
+  double potentialEnergy(const Model&, const TermData*, const Kinematics&) const override {
+    return 0.0;
+  }  // dissipative: power() only
   double addForcesAndPower(const Model& model, const TermData*, const Kinematics& kin, double t,
                            VecX& Q) const override;
   // Damping C = -∂F/∂v of each quadrature point (the quadratic law's slope 2 k D |V'|). The force's dependence

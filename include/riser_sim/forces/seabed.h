@@ -41,7 +41,8 @@ class Seabed : public ForceTerm {
   explicit Seabed(const SeabedSpec& spec) : spec_(spec) {}
   std::string name() const override { return "seabed"; }
   void addForces(const Model& model, const TermData* data, const Kinematics& kin, double t, VecX& Q) const override;
-  bool addStiffness(const Model& model, const TermData* data, const Kinematics& kin, double t, StiffnessBlocks& S) const override;
+  bool addStiffness(const Model& model, const TermData* data, const Kinematics& kin, double t,
+                    StiffnessBlocks& S) const override;
   double potentialEnergy(const Model& model, const TermData* data, const Kinematics& kin) const override;
   double power(const Model& model, const TermData* data, const Kinematics& kin, double t) const override;
   double seabedLevel() const override { return spec_.level; }

@@ -61,8 +61,8 @@ class ExternalMotion3 : public TopMotion3 {
 
   SampledMotion<3> pos_, rot_;
   bool rotates_ = false;
-  Mat3 base_ = Mat3::Identity();       // R = base_ Exp(r)
-  Mat3 last_ = Mat3::Identity();       // the newest sample's attitude
+  Mat3 base_ = Mat3::Identity();  // R = base_ Exp(r)
+  Mat3 last_ = Mat3::Identity();  // the newest sample's attitude
 };
 
 }  // namespace spatial

@@ -42,10 +42,10 @@ class IndependentData3 {
   double t = 0.0;
   PointMotion3 top;
   Kinematics3 kin;
-  Reactions3 reactions;        // top and bottom (pinned) only; joint forces are not computed
+  Reactions3 reactions;           // top and bottom (pinned) only; joint forces are not computed
   double constraint_error = 0.0;  // pinned end gap [m] (0 free)
-  double term_power = 0.0;     // [W]
-  VecX Q;                      // terms' forces, natural coordinates (7 per rfe)
+  double term_power = 0.0;        // [W]
+  VecX Q;                         // terms' forces, natural coordinates (7 per rfe)
   // Per rfe: G = ∂e'/∂u' (3x2); C = ∂E_i'/∂(Δ', u') = [e, len G] (the Δ column unused when
   // inextensible); D = m_{>i} C + M7(A, Δe) L (the off-diagonal blocks of M_θ are C_jᵀ D_i); the e'' bias;
   // A_bias: A_i'' at θ'' = 0 (i = 0..n+1); the natural mass block M7 and f = Q - h - M7 b.
@@ -54,10 +54,10 @@ class IndependentData3 {
   AlignedVector<Vec3> e_bias, A_bias;
   AlignedVector<Mat7> M7;
   AlignedVector<Vec7> f;
-  MatX M;       // M_θ (full)
+  MatX M;  // M_θ (full)
   VecX rhs, theta_dd;
   Eigen::LLT<MatX> llt;
-  MatX Phi, X;  // pinned: ∂E_n'/∂θ' (3 x p) and M_θ⁻¹ Φᵀ
+  MatX Phi, X;                    // pinned: ∂E_n'/∂θ' (3 x p) and M_θ⁻¹ Φᵀ
   std::vector<AddedMass3> added;  // terms with inertia: per rfe (empty without)
   // Torsion on: the twist (m, m', τ, kb, moments per rfe), the spin angle, rate ω and connection a per rfe.
   TwistData twist;
@@ -107,7 +107,7 @@ class IndependentFormulation3 {
   // Torsion on: Σ ½ J_i ω_i² and the twist's Σ ½ (GJ/d) m_k² [J] (0 off).
   double spinKineticEnergy(const VecX& y, const SphereCharts& charts, const Kinematics3& kin) const;
   double twistEnergy(const VecX& y, const SphereCharts& charts, const Kinematics3& kin, IndependentData3& d) const;
-  double spinInertia(int i) const;  // J_i [kg m²]
+  double spinInertia(int i) const;                       // J_i [kg m²]
   double constraintError(const Kinematics3& kin) const;  // pinned end gap [m] (0 free)
 
  private:
@@ -132,10 +132,10 @@ class IndependentFormulation3 {
 // integrator the state moved). The same observers as SpatialSimulator.
 class IndependentSimulator3 : private OdeSystem {
  public:
-  IndependentSimulator3(std::shared_ptr<const SpatialModel> model, std::shared_ptr<const TopMotion3> top, IntegratorKind kind,
-                        const IntegratorOptions& options = {}, double stabilization = 50.0);
-  void reset(const Kinematics3& kin, double t0);  // W = 0; charts centred on kin's directors
-  bool step(double h);                            // one step, then the chart switches
+  IndependentSimulator3(std::shared_ptr<const SpatialModel> model, std::shared_ptr<const TopMotion3> top,
+                        IntegratorKind kind, const IntegratorOptions& options = {}, double stabilization = 50.0);
+  void reset(const Kinematics3& kin, double t0);        // W = 0; charts centred on kin's directors
+  bool step(double h);                                  // one step, then the chart switches
   void setChartThreshold(double u) { threshold_ = u; }  // |u| beyond which a chart moves (default 0.5)
 
   double time() const { return t_; }
@@ -155,7 +155,7 @@ class IndependentSimulator3 : private OdeSystem {
   double potentialEnergy() const;
   double energy() const { return kineticEnergy() + potentialEnergy(); }
   double work() const { return y_[y_.size() - 1]; }
-  double constraintError() const;  // pinned end gap [m]
+  double constraintError() const;      // pinned end gap [m]
   const IndependentData3& evaluate();  // one evaluation at the current state (reactions.top, .bottom)
 
  private:

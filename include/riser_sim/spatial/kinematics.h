@@ -14,22 +14,20 @@ namespace spatial {
 using Vec3 = Eigen::Vector3d;
 using Mat3 = Eigen::Matrix3d;
 
-constexpr int kDofPerBody3 = 7;  // [A (3), Δ, e (3)]
+constexpr int kDofPerBody3 = 7;             // [A (3), Δ, e (3)]
 constexpr int kA = 0, kDelta3 = 3, kE = 4;  // offsets inside q_i
 
 struct BodyKinematics3 {
-  Vec3 A = Vec3::Zero();      // point A_i [m]
-  Vec3 A_dot = Vec3::Zero();  // [m/s]
+  Vec3 A = Vec3::Zero();                // point A_i [m]
+  Vec3 A_dot = Vec3::Zero();            // [m/s]
   double delta = 0.0, delta_dot = 0.0;  // Δ_i [m], [m/s]
-  Vec3 e = Vec3(1, 0, 0);      // director, unit on the manifold
-  Vec3 e_dot = Vec3::Zero();   // [1/s]
-  double len = 0.0;            // l_i + Δ_i [m]
+  Vec3 e = Vec3(1, 0, 0);               // director, unit on the manifold
+  Vec3 e_dot = Vec3::Zero();            // [1/s]
+  double len = 0.0;                     // l_i + Δ_i [m]
 
   // Point at distance s0 + kappa Δ from A_i along e, and its velocity.
   Vec3 point(double s0, double kappa) const { return A + (s0 + kappa * delta) * e; }
-  Vec3 velocity(double s0, double kappa) const {
-    return A_dot + kappa * delta_dot * e + (s0 + kappa * delta) * e_dot;
-  }
+  Vec3 velocity(double s0, double kappa) const { return A_dot + kappa * delta_dot * e + (s0 + kappa * delta) * e_dot; }
   Vec3 end() const { return A + len * e; }
   Vec3 endVelocity() const { return A_dot + delta_dot * e + len * e_dot; }
   Vec3 omega() const { return e.cross(e_dot); }  // angular velocity transverse to e [rad/s]

@@ -20,24 +20,24 @@ namespace riser_sim {
 namespace spatial {
 
 struct SpatialMode {
-  double omega2 = 0.0;  // ω² [1/s²]; < 0: unstable in this direction
-  double omega = 0.0;   // [rad/s], 0 when ω² <= 0
-  double axial_fraction = 0.0;  // share of θᵀ M θ in the Δ coordinates, 0..1
-  bool axial = false;           // axial_fraction > 0.5
+  double omega2 = 0.0;            // ω² [1/s²]; < 0: unstable in this direction
+  double omega = 0.0;             // [rad/s], 0 when ω² <= 0
+  double axial_fraction = 0.0;    // share of θᵀ M θ in the Δ coordinates, 0..1
+  bool axial = false;             // axial_fraction > 0.5
   double torsion_fraction = 0.0;  // share of θᵀ M θ in the spin angles (torsion on), 0..1
   bool torsional = false;         // torsion_fraction > 0.5
   // Share of the mode's kinetic energy (rigid parts) moving along the line, 0..1: the planar
   // Mode::axial_fraction (what the CLI's table prints as the axial share).
   double along_fraction = 0.0;
-  VecX theta;                   // mass-normalised: θᵀ M_θ θ = 1
+  VecX theta;  // mass-normalised: θᵀ M_θ θ = 1
   // Displacements of A_0..A_n and the end per unit of this θ [m] (central difference of the positions along
   // θ, step fd_step: linear to its square); A_0 is held, so its entry is 0.
   AlignedVector<Vec3> displacement;
 };
 
 struct SpatialModalResult {
-  Kinematics3 equilibrium;         // the state the modes are about
-  std::vector<SpatialMode> modes;  // every mode, lowest first
+  Kinematics3 equilibrium;            // the state the modes are about
+  std::vector<SpatialMode> modes;     // every mode, lowest first
   double equilibrium_residual = 0.0;  // max |Q_θ| / (total weight x length): ~0 at equilibrium
   double asymmetry = 0.0;             // ||K - Kᵀ||_F / ||K||_F before symmetrisation
   MatX stiffness, mass;

@@ -18,8 +18,8 @@ class SpatialForceTerm;
 class SpatialModel {
  public:
   // gravity: acceleration vector [m/s^2], default (0, 0, -9.81)-like; the held planar Model gets |gravity|.
-  SpatialModel(double length, int segments, const LineProperties& props, const ModelOptions& options,
-               double end_mass, const Vec3& gravity);
+  SpatialModel(double length, int segments, const LineProperties& props, const ModelOptions& options, double end_mass,
+               const Vec3& gravity);
   // Sections from the top and bend stiffeners (line_sections.h), as the planar Model.
   SpatialModel(const std::vector<LineSection>& sections, const std::vector<BendStiffener>& stiffeners,
                const ModelOptions& options, double end_mass, const Vec3& gravity);
@@ -44,7 +44,11 @@ class SpatialModel {
   // prescribed path (setBottomMotion: A_{n+1} = p_b(t), held as the top's A_0 = p(t)).
   BottomBoundary bottom() const { return bottom_; }
   const Vec3& bottomPoint() const { return bottom_point_; }  // at t = 0 when it moves
-  void setBottom(BottomBoundary b, const Vec3& p) { bottom_ = b; bottom_point_ = p; bottom_motion_.reset(); }
+  void setBottom(BottomBoundary b, const Vec3& p) {
+    bottom_ = b;
+    bottom_point_ = p;
+    bottom_motion_.reset();
+  }
   // Pins the bottom to motion (its position at t = 0 becomes bottomPoint()).
   void setBottomMotion(std::shared_ptr<const TopMotion3> motion);
   bool bottomMoves() const { return bottom_motion_ != nullptr; }
@@ -67,7 +71,7 @@ class SpatialModel {
   // with the spin) and a uniform line (Model::uniform()). Throws std::invalid_argument naming what is wrong.
   void setBendingAxes(double EI1, double EI2, const Vec3& axis1);
   bool hasBendingAxes() const { return has_axes_; }
-  double bendingSplit() const { return split_; }  // σ = (EI_1 - EI_2) / (2d) [N m/rad]
+  double bendingSplit() const { return split_; }      // σ = (EI_1 - EI_2) / (2d) [N m/rad]
   const Vec3& bendingAxis() const { return axis1_; }  // zero without axes
 
   void addTerm(std::unique_ptr<SpatialForceTerm> term);

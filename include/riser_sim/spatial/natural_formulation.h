@@ -4,9 +4,9 @@
 // a point-mass system plus a director inertia, so M_i u'' + h_i = Q_i + constraint forces with the 7x7
 // M_i (m I, m_k e, S I; m_k, S_k eᵀ; I_A I) and h_i = 2Δ' [m_k e'; m_k e·e'; S_k e'].
 // Constraints: per rfe ½(e·e - 1) = 0, eliminated inside the rfe (one scalar Schur step); joints
-// E_{k-1} - A_k = 0, the top A_0 = p(t), a pinned end E_n = p_b(t) (fixed or moving), with joint reactions λ_k ∈ R³ from a
-// block-tridiagonal (3x3 blocks) system solved by block Thomas: O(n) per evaluation. Every constraint
-// is Baumgarte-stabilised, c'' + 2ω c' + ω² c = 0. Evaluations allocate nothing (NaturalData).
+// E_{k-1} - A_k = 0, the top A_0 = p(t), a pinned end E_n = p_b(t) (fixed or moving), with joint reactions λ_k ∈ R³
+// from a block-tridiagonal (3x3 blocks) system solved by block Thomas: O(n) per evaluation. Every constraint is
+// Baumgarte-stabilised, c'' + 2ω c' + ω² c = 0. Evaluations allocate nothing (NaturalData).
 #pragma once
 #include <memory>
 #include <vector>
@@ -29,7 +29,7 @@ struct Reactions3 {
   // (h: the hang-off's axis; the holding moment of the homokinetic top), top_twist = τ its part along h.
   double top_twist = 0.0;
   Vec3 top_twist_moment = Vec3::Zero();
-  AlignedVector<Vec3> joint;   // λ_k: force on rfe k-1 at its end (minus the force on rfe k at A_k), k = 0..n+1
+  AlignedVector<Vec3> joint;  // λ_k: force on rfe k-1 at its end (minus the force on rfe k at A_k), k = 0..n+1
 };
 
 // One evaluation's results and workspaces, sized once by NaturalFormulation::makeData().
@@ -121,7 +121,7 @@ class NaturalFormulation {
   // Linearises at (t, y): data's evaluation is used when it was made at exactly (t, y), else linearize()
   // evaluates there first (data then holds that evaluation).
   void linearize(double t, const VecX& y, const PointMotion3& top, NaturalData& data, ShiftedSolver3& s) const;
-  void factorShifted(double c, ShiftedSolver3& s) const;  // throws std::logic_error before linearize()
+  void factorShifted(double c, ShiftedSolver3& s) const;               // throws std::logic_error before linearize()
   void solveShifted(const VecX& b, VecX& x, ShiftedSolver3& s) const;  // throws before factorShifted()
   // Whether data holds the evaluation at exactly (t, y).
   bool evaluatedAt(double t, const VecX& y, const NaturalData& data) const;

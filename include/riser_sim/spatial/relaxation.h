@@ -16,11 +16,11 @@ namespace riser_sim {
 namespace spatial {
 
 struct Relaxed3 {
-  Kinematics3 kin;            // at rest
+  Kinematics3 kin;                    // at rest
   AlignedVector<Vec3> material_axes;  // torsion on: each rfe's material axis 1 at rest (its spins)
   HangOff hang_off;                   // torsion on: the hang-off's twist frame it held (made at the guess)
-  double acceleration = 0.0;  // largest at rest [m/s^2] (restAcceleration)
-  double time = 0.0;          // simulated [s]
+  double acceleration = 0.0;          // largest at rest [m/s^2] (restAcceleration)
+  double time = 0.0;                  // simulated [s]
   int steps = 0;
 };
 

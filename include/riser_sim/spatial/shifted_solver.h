@@ -77,15 +77,15 @@ class ShiftedSolver3 {
     Mat43 Wd;
     Mat45 Ri;
     Mat47 RN;
-    Vec7 x;                 // solve: x_i's constant part (backward), then x_v,i (forward)
+    Vec7 x;  // solve: x_i's constant part (backward), then x_v,i (forward)
     // The mass without added mass, for the solve's M b_v: m I, m_k e, S I; m_k eᵀ, m_k e·e, S_k eᵀ; S I, S_k e,
     // I_A I (Δ locked: 1 on Δ, no m_k, S_k). The whole 7x7 M lives in M_ (the factor's, and the solve's with
     // added mass); K, C, K_sub, K_sup, C_sub in S_: K(i, i), C(i, i), rows i / columns i-1.
     double m = 0.0, mk = 0.0, S = 0.0, Sk = 0.0, I = 0.0;
     Vec3 e = Vec3::Zero();
-    Mat3 Kup, Up;           // e-e: K(i, i+1) = K_sub[i+1]ᵀ + K_sup[i+1] (the right side's coupling to rfe i+1)
-    Row3 gE, rE, Gam;       // Baumgarte law of E_i: g δa + p δv + r δq (g = B_E = ∂E/∂q)
-    Vec7 gu, ru;            // Baumgarte law of the unit length
+    Mat3 Kup, Up;      // e-e: K(i, i+1) = K_sub[i+1]ᵀ + K_sup[i+1] (the right side's coupling to rfe i+1)
+    Row3 gE, rE, Gam;  // Baumgarte law of E_i: g δa + p δv + r δq (g = B_E = ∂E/∂q)
+    Vec7 gu, ru;       // Baumgarte law of the unit length
     Row3 pE;
     Vec7 pu;
     Mat73 Xmu;
@@ -110,9 +110,9 @@ class ShiftedSolver3 {
   SpatialStiffness S_;
   AlignedVector<Mat3> turn_;  // followDirectors' R_i
   bool turning_ = false;
-  VecX b_turned_;  // the right side's rates turned back (entries vo_..vo_ + nq_)
+  VecX b_turned_;                       // the right side's rates turned back (entries vo_..vo_ + nq_)
   std::vector<double> t_diag_, t_mul_;  // torsion: the Thomas factor's pivots and multipliers
-  Mat3 Sm_inv_ = Mat3::Zero();           // pinned: (Γ_{n-1} ∂x_{n-1}/∂λ_n)⁻¹
+  Mat3 Sm_inv_ = Mat3::Zero();          // pinned: (Γ_{n-1} ∂x_{n-1}/∂λ_n)⁻¹
   double c_ = 0.0, s_ = 1.0;
   bool linearized_ = false, factored_ = false;
 };

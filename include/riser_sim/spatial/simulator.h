@@ -1,9 +1,8 @@
 // Runs the spatial line with the existing integrators (integrator.h's OdeSystem, state y = [q; v; W],
-// W [J] the work of the top motion, of a moving bottom and of the non-conservative terms integrated alongside). After every
-// integrator step the state is projected back onto |e_i| = 1, e_i·e'_i = 0 (NaturalFormulation::
-// project); within a step the Baumgarte terms hold the drift. The joint gaps are not projected (the
-// planar absolute formulation does not either).
-// The implicit schemes (rosenbrock2, midpoint, generalized_alpha) use options.jacobian: "structured" (the
+// W [J] the work of the top motion, of a moving bottom and of the non-conservative terms integrated alongside). After
+// every integrator step the state is projected back onto |e_i| = 1, e_i·e'_i = 0 (NaturalFormulation:: project); within
+// a step the Baumgarte terms hold the drift. The joint gaps are not projected (the planar absolute formulation does not
+// either). The implicit schemes (rosenbrock2, midpoint, generalized_alpha) use options.jacobian: "structured" (the
 // default) solves with the formulation's O(n) block-tridiagonal KKT factorisation (shifted_solver.h),
 // relinearised every step (at its first solve: the Newton predictor, simulator.cpp); "dense" uses their
 // finite-difference Jacobian (O(p²) per solve, O(p³) per refresh).
@@ -22,8 +21,8 @@ namespace spatial {
 
 class SpatialSimulator : private OdeSystem {
  public:
-  SpatialSimulator(std::shared_ptr<const SpatialModel> model, std::shared_ptr<const TopMotion3> top, IntegratorKind kind,
-                   const IntegratorOptions& options = {}, double stabilization = 50.0);
+  SpatialSimulator(std::shared_ptr<const SpatialModel> model, std::shared_ptr<const TopMotion3> top,
+                   IntegratorKind kind, const IntegratorOptions& options = {}, double stabilization = 50.0);
   // Starts from the given rfe kinematics at time t0 [s] (projected; W = 0). Torsion on: hang_off_ref is the
   // hang-off's reference at kin's top rfe (zero: made from the model's bending axis, else any).
   void reset(const Kinematics3& kin, double t0, const HangOff& hang_off = HangOff());
@@ -32,8 +31,8 @@ class SpatialSimulator : private OdeSystem {
   void setTwist(const VecX& theta, const VecX& omega);
   // The same from each rfe's material axis 1 (torsion.h, frame-free; e.g. InitialState3::material_axes), at rest.
   void setMaterialAxes(const AlignedVector<Vec3>& m1);
-  // One integrator step of h [s], then the projection (and, torsion on, the twist charts moved). False when the integrator failed or the state
-  // is not finite.
+  // One integrator step of h [s], then the projection (and, torsion on, the twist charts moved). False when the
+  // integrator failed or the state is not finite.
   bool step(double h);
   // Project only when max_i max(| |e_i| - 1 |, |e_i·e'_i| h) exceeds tol (default 0: after every step).
   // The integrator is told (Integrator::stateProjected), so generalized_alpha keeps its ẏ history and its
@@ -54,8 +53,8 @@ class SpatialSimulator : private OdeSystem {
   double kineticEnergy();  // [J], the added mass's included
   double potentialEnergy();
   double energy() { return kineticEnergy() + potentialEnergy(); }  // T + V [J]
-  double work() const { return y_[y_.size() - 1]; }                 // W [J]
-  double constraintError() const {  // [m]
+  double work() const { return y_[y_.size() - 1]; }                // W [J]
+  double constraintError() const {                                 // [m]
     return formulation_.constraintError(y_, top_->at(t_), model_->bottomAt(t_));
   }
   PointMotion3 topAt(double t) const { return top_->at(t); }

@@ -11,9 +11,9 @@ namespace riser_sim {
 namespace spatial {
 
 struct PointMotion3 {
-  Vec3 p = Vec3::Zero();  // [m]
-  Vec3 v = Vec3::Zero();  // [m/s]
-  Vec3 a = Vec3::Zero();  // [m/s^2]
+  Vec3 p = Vec3::Zero();      // [m]
+  Vec3 v = Vec3::Zero();      // [m/s]
+  Vec3 a = Vec3::Zero();      // [m/s^2]
   Mat3 R = Mat3::Identity();  // the holder's orientation: holder frame -> world
   Vec3 w = Vec3::Zero();      // the holder's angular velocity, world frame [rad/s]
 };

@@ -57,11 +57,11 @@ struct TwistFrames {
 // One evaluation's twist results and workspaces (sized once).
 struct TwistData {
   TwistFrames frames;
-  std::vector<double> m, mdot, tau;  // per joint k (rfes k, k+1): twist [rad], its rate, moment k m + c m' [N m]
-  AlignedVector<Vec3> kb;            // per joint
-  std::vector<double> moment;        // per rfe: moment about e_i of the springs and dampers [N m]
-  std::vector<double> bend;          // per rfe: its part from the bending axes (bending_axes.h) [N m]
-  AlignedVector<Vec3> m1;            // per rfe: material axis 1 (a workspace of the bending axes)
+  std::vector<double> m, mdot, tau;       // per joint k (rfes k, k+1): twist [rad], its rate, moment k m + c m' [N m]
+  AlignedVector<Vec3> kb;                 // per joint
+  std::vector<double> moment;             // per rfe: moment about e_i of the springs and dampers [N m]
+  std::vector<double> bend;               // per rfe: its part from the bending axes (bending_axes.h) [N m]
+  AlignedVector<Vec3> m1;                 // per rfe: material axis 1 (a workspace of the bending axes)
   double top_twist = 0.0, top_tau = 0.0;  // top spring: its twist m_t [rad], moment k_t m_t + c_t m_t' [N m]
   void resize(int bodies);
 };

@@ -30,8 +30,13 @@ Attachments::Attachments(const Model& model, const std::vector<AttachmentSpec>& 
 }
 
 Attachments::Attachments(const Attachments& other, const WaterKinematics& water)
-    : bodies_(other.bodies_), water_(other.water_), kinematics_(water), seabed_(other.seabed_),
-      has_added_mass_(other.has_added_mass_), gravity_(other.gravity_), factor_(other.factor_) {}
+    : bodies_(other.bodies_),
+      water_(other.water_),
+      kinematics_(water),
+      seabed_(other.seabed_),
+      has_added_mass_(other.has_added_mass_),
+      gravity_(other.gravity_),
+      factor_(other.factor_) {}
 
 std::unique_ptr<ForceTerm> Attachments::scaled(double factor) const {
   auto t = std::unique_ptr<Attachments>(new Attachments(*this, kinematics_));
@@ -49,9 +54,9 @@ AttachmentLoad<Vec2> Attachments::load(const Body& a, const Kinematics& kin, dou
   Vec2 uw = Vec2::Zero(), aw = Vec2::Zero();
   if (water_.enabled && kinematics_.moving()) kinematics_.at(p, t, uw, aw);
   const bool contact = seabed_.enabled && a.spec.seabed_contact;
-  AttachmentLoad<Vec2> L = attachmentLoad<Vec2>(a.spec, a.radius, water_, p.y() - kinematics_.spec().surface,
-                                                Vec2::UnitY(), v, uw, aw, contact ? &seabed_ : nullptr,
-                                                seabed_.level - p.y(), Vec2::UnitY());
+  AttachmentLoad<Vec2> L =
+      attachmentLoad<Vec2>(a.spec, a.radius, water_, p.y() - kinematics_.spec().surface, Vec2::UnitY(), v, uw, aw,
+                           contact ? &seabed_ : nullptr, seabed_.level - p.y(), Vec2::UnitY());
   if (factor_ != 1.0) {  // the statics' continuation (scaled())
     const double lift = (1.0 - factor_) * a.spec.mass * gravity_;
     L.total = factor_ * L.total + Vec2(0.0, lift);
@@ -103,7 +108,8 @@ void Attachments::addInertia(const Model&, const Kinematics& kin, double, Aligne
   }
 }
 
-bool Attachments::addStiffness(const Model&, const TermData*, const Kinematics& kin, double t, StiffnessBlocks& S) const {
+bool Attachments::addStiffness(const Model&, const TermData*, const Kinematics& kin, double t,
+                               StiffnessBlocks& S) const {
   for (const Body& a : bodies_) {
     const AttachmentLoad<Vec2> L = load(a, kin, t);
     const BodyKinematics& b = kin[a.at.rfe];

@@ -25,7 +25,8 @@ double AxialSpring::power(const Model& model, const TermData*, const Kinematics&
 
 namespace riser_sim {
 
-bool AxialSpring::addStiffness(const Model& model, const TermData*, const Kinematics&, double, StiffnessBlocks& S) const {
+bool AxialSpring::addStiffness(const Model& model, const TermData*, const Kinematics&, double,
+                               StiffnessBlocks& S) const {
   for (int i = 0; i < model.bodies(); ++i) {
     S.K_diag[i](kDelta, kDelta) += model.rfe(i).axial_stiffness;
     S.C_diag[i](kDelta, kDelta) += model.rfe(i).axial_damping;

@@ -35,7 +35,8 @@ double BendingSpring::power(const Model& model, const TermData*, const Kinematic
 namespace riser_sim {
 
 // ½ k_i (φ_i - φ_{i-1})²: +k_i on both diagonals, -k_i between the neighbours (same for the damping).
-bool BendingSpring::addStiffness(const Model& model, const TermData*, const Kinematics&, double, StiffnessBlocks& S) const {
+bool BendingSpring::addStiffness(const Model& model, const TermData*, const Kinematics&, double,
+                                 StiffnessBlocks& S) const {
   for (int i = 1; i < model.bodies(); ++i) {
     const double k = model.bendingStiffness(i), c = model.bendingDamping(i);
     S.K_diag[i](kPhi, kPhi) += k;

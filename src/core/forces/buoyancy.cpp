@@ -44,7 +44,8 @@ namespace riser_sim {
 
 // The geometric part of the lift on each wet part (the change of the wet length at the surface is left
 // to the explicit side).
-bool Buoyancy::addStiffness(const Model& model, const TermData*, const Kinematics& kin, double, StiffnessBlocks& S) const {
+bool Buoyancy::addStiffness(const Model& model, const TermData*, const Kinematics& kin, double,
+                            StiffnessBlocks& S) const {
   const Mat2 zero = Mat2::Zero();
   for (int i = 0; i < model.bodies(); ++i)
     for (int p = 0; p < 2; ++p) {

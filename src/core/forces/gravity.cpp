@@ -30,7 +30,8 @@ double Gravity::potentialEnergy(const Model& model, const TermData*, const Kinem
 namespace riser_sim {
 
 // Only the geometric part: the weights are constant, their lever arms turn with φ and stretch with Δ.
-bool Gravity::addStiffness(const Model& model, const TermData*, const Kinematics& kin, double, StiffnessBlocks& S) const {
+bool Gravity::addStiffness(const Model& model, const TermData*, const Kinematics& kin, double,
+                           StiffnessBlocks& S) const {
   const double g = model.gravity();
   for (int i = 0; i < model.bodies(); ++i) {
     const Rfe& r = model.rfe(i);

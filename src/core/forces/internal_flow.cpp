@@ -21,8 +21,8 @@ void InternalFlow::addForces(const Model& model, const TermData*, const Kinemati
     const Vec2 Pd = 0.5 * l1 * (bp.phi_dot * bp.nrm() + b.phi_dot * b.nrm()) +
                     0.5 * l2 * (b.phi_dot * b.nrm() + bn.phi_dot * bn.nrm());
     const double Kd = 0.5 * l2 * sn * (b.phi_dot - bn.phi_dot);
-    const double Rd = C1 * cp * (bp.phi_dot - b.phi_dot) + 0.5 * l2 * b.delta_dot * sn +
-                      C2 * cn * (bn.phi_dot - b.phi_dot);
+    const double Rd =
+        C1 * cp * (bp.phi_dot - b.phi_dot) + 0.5 * l2 * b.delta_dot * sn + C2 * cn * (bn.phi_dot - b.phi_dot);
     // -(u' a + u a') on the rfe's own coordinates.
     double* q = Q.data() + 4 * i;
     const Vec2 fA = -rho_l_ * (ud * P + u * Pd);
@@ -34,8 +34,8 @@ void InternalFlow::addForces(const Model& model, const TermData*, const Kinemati
     const double ru = rho_l_ * u;
     const Vec2& Ad = b.A_dot;
     const double g_prev = Ad.dot(0.5 * l1 * bp.nrm()) + b.phi_dot * C1 * cp;
-    const double g_self = Ad.dot(0.5 * (l1 + l2) * b.nrm()) + b.delta_dot * 0.5 * l2 * sn -
-                          b.phi_dot * (C1 * cp + C2 * cn);
+    const double g_self =
+        Ad.dot(0.5 * (l1 + l2) * b.nrm()) + b.delta_dot * 0.5 * l2 * sn - b.phi_dot * (C1 * cp + C2 * cn);
     const double g_next = Ad.dot(0.5 * l2 * bn.nrm()) - b.delta_dot * 0.5 * l2 * sn + b.phi_dot * C2 * cn;
     Q[4 * ip + kPhi] += ru * g_prev - c3 * l1 * sp;
     Q[4 * i + kPhi] += ru * g_self + c3 * l1 * sp + c3 * l2 * sn;
@@ -89,8 +89,7 @@ void PipeFlow::forces(const Model& model, const Kinematics& kin, double t, Visit
     if (i > 0) visit(i, 0.0, 0.0, Vec2(-rho_l_ * u * u * (b.e() - kin[i - 1].e())));
     const double lens[2] = {r.length1, r.length2}, s0[2] = {0.5 * r.length1, r.length1 + 0.5 * r.length2};
     for (int p = 0; p < 2; ++p)
-      visit(i, s0[p], p == 0 ? 0.0 : 1.0,
-            Vec2(-rho_l_ * lens[p] * (2.0 * u * b.phi_dot * b.nrm() + ud * b.e())));
+      visit(i, s0[p], p == 0 ? 0.0 : 1.0, Vec2(-rho_l_ * lens[p] * (2.0 * u * b.phi_dot * b.nrm() + ud * b.e())));
     visit(i, r.length1, 1.0, Vec2(-2.0 * rho_l_ * u * b.delta_dot * b.e()));
   }
 }
@@ -113,11 +112,9 @@ double PipeFlow::addForcesAndPower(const Model& model, const TermData*, const Ki
 
 double PipeFlow::power(const Model& model, const TermData*, const Kinematics& kin, double t) const {
   double pw = 0.0;
-  forces(model, kin, t, [&](int i, double s0, double kappa, const Vec2& F) {
-    pw += F.dot(kin[i].velocity(s0, kappa));
-  });
+  forces(model, kin, t,
+         [&](int i, double s0, double kappa, const Vec2& F) { pw += F.dot(kin[i].velocity(s0, kappa)); });
   return pw;
 }
 
 }  // namespace riser_sim
-

@@ -6,8 +6,8 @@
 
 namespace riser_sim {
 
-Vec2 MorisonDrag::force(const Model& model, const BodyKinematics& b, int i, int p, double t, double& s0,
-                        double& kappa, Vec2& v) const {
+Vec2 MorisonDrag::force(const Model& model, const BodyKinematics& b, int i, int p, double t, double& s0, double& kappa,
+                        Vec2& v) const {
   const WetPart w = wetPart(model, b, i, p, water_.spec().surface);
   s0 = w.s0;
   kappa = w.kappa;
@@ -58,7 +58,8 @@ bool MorisonDrag::addStiffness(const Model& model, const TermData*, const Kinema
       const LineSection& sec = model.partSection(i, p);
       const double k = 0.5 * water_.spec().density * sec.dragDiameter() * w.length;  // -∂F/∂V' > 0
       const double cd_t = orLine(sec.hydro.drag_tangential, cd_t_), cd_n = orLine(sec.hydro.drag_normal, cd_n_);
-      const Mat2 Cp = (2.0 * k * cd_t * std::abs(vt)) * e * e.transpose() + (2.0 * k * cd_n * std::abs(vn)) * n * n.transpose();
+      const Mat2 Cp =
+          (2.0 * k * cd_t * std::abs(vt)) * e * e.transpose() + (2.0 * k * cd_n * std::abs(vn)) * n * n.transpose();
       addPointStiffness(b, w.s0, w.kappa, Vec2::Zero(), zero, Cp, S.K_diag[i], S.C_diag[i]);
     }
   return true;

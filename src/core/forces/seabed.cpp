@@ -5,8 +5,7 @@
 
 namespace riser_sim {
 
-void Seabed::point(const Model& model, const Kinematics& kin, int j, int& body, double& s0, Vec2& p,
-                   Vec2& v) const {
+void Seabed::point(const Model& model, const Kinematics& kin, int j, int& body, double& s0, Vec2& p, Vec2& v) const {
   const int n1 = model.bodies();
   body = j < n1 ? j : n1 - 1;
   s0 = j < n1 ? 0.0 : model.rfe(body).length;
@@ -113,7 +112,8 @@ namespace riser_sim {
 
 // Contact springs and dampers on each point below the level, as in force(); a clamped normal force
 // (the damper would pull) contributes nothing.
-bool Seabed::addStiffness(const Model& model, const TermData* data, const Kinematics& kin, double, StiffnessBlocks& S) const {
+bool Seabed::addStiffness(const Model& model, const TermData* data, const Kinematics& kin, double,
+                          StiffnessBlocks& S) const {
   const double* anchor = anchors(data);
   forEachContact(model, kin, [&](int j, int body, double s0, const Vec2& p, const Vec2& v) {
     const Vec2 F = force(anchor, j, p, v, true);

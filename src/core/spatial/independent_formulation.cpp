@@ -79,8 +79,11 @@ IndependentData3::IndependentData3(const SpatialModel& model, int k, int spins)
 }
 
 IndependentFormulation3::IndependentFormulation3(const SpatialModel& model, double stabilization)
-    : model_(model), omega_(stabilization), k_(model.options().axial_flexibility ? 3 : 2),
-      ku_(model.options().axial_flexibility ? 1 : 0), s0_(spatial::firstSpin(model)),
+    : model_(model),
+      omega_(stabilization),
+      k_(model.options().axial_flexibility ? 3 : 2),
+      ku_(model.options().axial_flexibility ? 1 : 0),
+      s0_(spatial::firstSpin(model)),
       nt_(model.hasTorsion() ? model.bodies() - s0_ : 0) {
   if (model.bottomMoves())
     throw std::invalid_argument("spatial independent formulation: a fixed or free bottom only (not a moving one)");
@@ -315,10 +318,13 @@ int IndependentFormulation3::recentre(VecX& y, SphereCharts& charts, double thre
 
 // ---------------------------------------------------------------------------------------------
 
-IndependentSimulator3::IndependentSimulator3(std::shared_ptr<const SpatialModel> model, std::shared_ptr<const TopMotion3> top,
-                                             IntegratorKind kind, const IntegratorOptions& options,
-                                             double stabilization)
-    : model_(std::move(model)), top_(std::move(top)), formulation_(*model_, stabilization), data_(formulation_.makeData()),
+IndependentSimulator3::IndependentSimulator3(std::shared_ptr<const SpatialModel> model,
+                                             std::shared_ptr<const TopMotion3> top, IntegratorKind kind,
+                                             const IntegratorOptions& options, double stabilization)
+    : model_(std::move(model)),
+      top_(std::move(top)),
+      formulation_(*model_, stabilization),
+      data_(formulation_.makeData()),
       kin_(model_->bodies()) {
   IntegratorOptions o = options;
   o.jacobian = JacobianKind::kDense;  // no structured solves here

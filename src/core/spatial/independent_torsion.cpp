@@ -55,9 +55,9 @@ void IndependentFormulation3::addTwistForces(const VecX& y, const SphereCharts& 
     t.tau[j] = k * t.m[j] + c * t.mdot[j];
     power -= c * t.mdot[j] * t.mdot[j];
   }
-  // Top spring (flex joint's torsional stiffness) and damper: V_t = ½ k_t m_t², τ_t = k_t m_t + c_t m_t', ∂m_t/∂φ_0 = 1,
-  // ∂m_t/∂e_0 = a(c_0, e_0) - a(h, e_0) (rfe 0's frame and the hang-off's transported one both spin).
-  // A turning hang-off moves the twist next to it by -s: the holder's work -τ s (natural_formulation's too).
+  // Top spring (flex joint's torsional stiffness) and damper: V_t = ½ k_t m_t², τ_t = k_t m_t + c_t m_t', ∂m_t/∂φ_0 =
+  // 1, ∂m_t/∂e_0 = a(c_0, e_0) - a(h, e_0) (rfe 0's frame and the hang-off's transported one both spin). A turning
+  // hang-off moves the twist next to it by -s: the holder's work -τ s (natural_formulation's too).
   const double s = hangOffSpin(charts.twist, d.kin[0].e);
   if (s0_ > 0 && nj > 0) power -= t.tau[0] * s;
   const double kt = model_.torsion().top_stiffness;
@@ -120,7 +120,7 @@ void IndependentFormulation3::addSpinInertia(const VecX& y, const SphereCharts& 
 void IndependentFormulation3::recentreTwist(VecX& y, SphereCharts& charts) const {
   const int p = positionSize();
   kinematics(y, charts, PointMotion3(), charts.kin);  // e, e' only (the top does not enter them)
-  for (int i = s0_; i < model_.bodies(); ++i) {  // φ' <- ω: a = 0 at the new centre
+  for (int i = s0_; i < model_.bodies(); ++i) {       // φ' <- ω: a = 0 at the new centre
     const BodyKinematics3& b = charts.kin[i];
     y[p + spinIndex(i)] += spinConnection(charts.twist.centre[i], b.e).dot(b.e_dot);
   }

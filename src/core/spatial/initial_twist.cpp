@@ -59,8 +59,8 @@ void twistedEquilibrium(const Scene& scene, bool held_end, const Vec2& xy, Initi
       newton();
     } catch (const std::runtime_error& e) {
       throw std::runtime_error(std::string("initial: the equilibrium twisted by the bending axes (line.EI: [EI_1, "
-                                           "EI_2]), Newton in 3D with the spins: ") + first.what() +
-                               "; from a dynamic relaxation: " + e.what());
+                                           "EI_2]), Newton in 3D with the spins: ") +
+                               first.what() + "; from a dynamic relaxation: " + e.what());
     }
   }
   init.kin = kin;

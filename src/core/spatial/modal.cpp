@@ -35,8 +35,9 @@ SpatialModalResult computeSpatialModes(const SpatialModel& model, const Kinemati
     Eigen::ColPivHouseholderQR<MatX> qr(line.endJacobian(theta0).transpose());
     qr.setThreshold(1e-10);
     if (qr.rank() < 3)
-      throw std::runtime_error("spatial modal: the pinned end's Jacobian is singular (an inextensible line pinned "
-                               "at exactly its length is locked); use axial flexibility");
+      throw std::runtime_error(
+          "spatial modal: the pinned end's Jacobian is singular (an inextensible line pinned "
+          "at exactly its length is locked); use axial flexibility");
     const MatX Q = qr.householderQ();
     N = Q.rightCols(line.size() - 3);
   }

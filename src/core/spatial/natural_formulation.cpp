@@ -152,7 +152,8 @@ void NaturalFormulation::closedFormBody(int i, NaturalData& d) const {
   c.S = S_t;
   c.bdd = unitGamma(b) / c.rho;
   closedFormAcceleration(c, d.Q.segment<7>(kDofPerBody3 * i) - d.h.segment<7>(kDofPerBody3 * i), c.a.data());
-  // Compliances p n nᵀ + q (I - n nᵀ): a unit force at E_i adds [F; ρ n·F; len F] to f, and E'' = A'' + ρ Δ'' n + len e''.
+  // Compliances p n nᵀ + q (I - n nᵀ): a unit force at E_i adds [F; ρ n·F; len F] to f, and E'' = A'' + ρ Δ'' n + len
+  // e''.
   const double len = b.len, rho = c.rho;
   const Mat3 N = c.n * c.n.transpose();
   auto split = [&N](double p, double q, Mat3& out) {
@@ -177,8 +178,7 @@ void NaturalFormulation::closedFormAcceleration(const NaturalData::Body& c, cons
   udd[kDelta3] = c.a_ad * fa + c.a_dd * fd;
 }
 
-void NaturalFormulation::derivative(double t, const VecX& y, const PointMotion3& top, VecX& dy,
-                                    NaturalData& d) const {
+void NaturalFormulation::derivative(double t, const VecX& y, const PointMotion3& top, VecX& dy, NaturalData& d) const {
   const int nb = model_.bodies(), nq = model_.dofs(), vo = positionSize(), nt = twistDofs();
   const bool pinned = model_.bottom() == BottomBoundary::kPinned;
   d.t = t;
@@ -205,7 +205,8 @@ void NaturalFormulation::derivative(double t, const VecX& y, const PointMotion3&
     const Rfe& r = model_.rfe(i);
     const double w = 2.0 * b.delta_dot;
     double* h = d.h.data() + kDofPerBody3 * i;
-    for (int k = 0; k < 3; ++k) h[kA + k] = w * r.mass_k * b.e_dot[k], h[kE + k] = w * r.firstMomentK(b.delta) * b.e_dot[k];
+    for (int k = 0; k < 3; ++k)
+      h[kA + k] = w * r.mass_k * b.e_dot[k], h[kE + k] = w * r.firstMomentK(b.delta) * b.e_dot[k];
     h[kDelta3] = w * r.mass_k * b.e.dot(b.e_dot);
     if (!d.added.empty()) addAddedVelocityTerms(d.added[i], b, h);
     if (closed_form_)
@@ -228,7 +229,8 @@ void NaturalFormulation::derivative(double t, const VecX& y, const PointMotion3&
       f.segment<3>(kE) += b.len * L;
       closedFormAcceleration(c, f, dy.data() + vo + kDofPerBody3 * i);
     } else {
-      dy.segment<7>(vo + kDofPerBody3 * i).noalias() = c.a - d.dense[i].W.middleCols<3>(kA) * d.lambda[i] + d.dense[i].WE * d.lambda[i + 1];
+      dy.segment<7>(vo + kDofPerBody3 * i).noalias() =
+          c.a - d.dense[i].W.middleCols<3>(kA) * d.lambda[i] + d.dense[i].WE * d.lambda[i + 1];
     }
   }
   for (int k = 0; k <= nb; ++k) d.reactions.joint[k] = d.lambda[k];

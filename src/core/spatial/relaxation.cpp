@@ -101,7 +101,8 @@ Relaxed3 relaxToRest(const Scene& scene, const Kinematics3& guess_in, const Vec3
   dragless.torsion.end_polar_inertia = 0.0;
   const double D = dragless.line.outer_diameter;
   if (D > 0.0)
-    dragless.torsion.polar_inertia = std::min(dragless.torsion.polar_inertia, dragless.line.mass_per_length * D * D / 8.0);
+    dragless.torsion.polar_inertia =
+        std::min(dragless.torsion.polar_inertia, dragless.line.mass_per_length * D * D / 8.0);
   // The seabed's friction and tangential damper vanish at rest; they would only slow the creep to it.
   dragless.seabed.friction_axial = dragless.seabed.friction_lateral = dragless.seabed.damping_tangential = 0.0;
   std::shared_ptr<SpatialModel> model = buildSpatialModel(dragless);
@@ -109,8 +110,10 @@ Relaxed3 relaxToRest(const Scene& scene, const Kinematics3& guess_in, const Vec3
   if (still.water.enabled && hs.enabled && (hs.drag_normal > 0.0 || hs.drag_tangential > 0.0))
     model->addTerm(std::make_unique<MorisonDrag3>(Water3(still.water, model->gravity()), hs.drag_tangential,
                                                   hs.drag_normal, true));
-  if (scene.bottom == BottomBoundary::kPinned) model->setBottom(BottomBoundary::kPinned, guess.back().end());
-  else if (end_force.squaredNorm() > 0.0) model->addTerm(std::make_unique<EndLoad3>(end_force));
+  if (scene.bottom == BottomBoundary::kPinned)
+    model->setBottom(BottomBoundary::kPinned, guess.back().end());
+  else if (end_force.squaredNorm() > 0.0)
+    model->addTerm(std::make_unique<EndLoad3>(end_force));
   // The slowest mode of a hanging line is about its pendulum, ω1 ~ sqrt(g_wet / L) (g_wet: gravity less the
   // buoyancy of the whole line; the current and the pins stiffen it). α = 2 ω1 damps it critically and every
   // faster mode at α/2; a mode slower than the estimate would creep (at ω²/α), so ω1 errs low.
@@ -139,27 +142,29 @@ Relaxed3 relaxToRest(const Scene& scene, const Kinematics3& guess_in, const Vec3
   out.time = pre_time;
   out.steps = pre_steps;
   const auto atRest = [&] {
-    out.acceleration = restAcceleration(still, out.kin, end_force, top, out.material_axes, where, moment, moment_where,
-                                        out.hang_off);
+    out.acceleration =
+        restAcceleration(still, out.kin, end_force, top, out.material_axes, where, moment, moment_where, out.hang_off);
     return out.acceleration <= 0.01 * bound && moment <= 0.01 * moment_bound;
   };
   // The untwisted spins on the relaxed shape: done when they are at rest within the bounds (a stiff GJ
   // turns the round-off of the twist into moments the relaxation's 1/100 margin would chase in vain).
   if (!atRest() && pre_steps > 0 && out.acceleration <= bound && moment <= moment_bound) return out;
-  double h = 0.2 / w1;  // 5 steps per time constant 1/ω1 of the slowest mode (ρ∞ = 0 damps the rest)
+  double h = 0.2 / w1;              // 5 steps per time constant 1/ω1 of the slowest mode (ρ∞ = 0 damps the rest)
   const double budget = 60.0 / w1;  // 60 time constants: e^-60 of any start the planar statics give
   const int kCheck = 10;
   while (!atRest()) {
     if (sim.time() >= budget)
-      throw std::runtime_error("initial: the 3D equilibrium (dynamic relaxation from the planar statics) did not "
-                               "converge in " + fmt(out.time) + " s: acceleration at rest " + fmt(out.acceleration) +
-                               " m/s^2 at rfe " + std::to_string(where) + " (bound " + fmt(bound) +
-                               " m/s^2 from initial.tolerance), moment on a spin " + fmt(moment) + " N m at rfe " +
-                               std::to_string(moment_where));
+      throw std::runtime_error(
+          "initial: the 3D equilibrium (dynamic relaxation from the planar statics) did not "
+          "converge in " +
+          fmt(out.time) + " s: acceleration at rest " + fmt(out.acceleration) + " m/s^2 at rfe " +
+          std::to_string(where) + " (bound " + fmt(bound) + " m/s^2 from initial.tolerance), moment on a spin " +
+          fmt(moment) + " N m at rfe " + std::to_string(moment_where));
     for (int k = 0; k < kCheck; ++k) {
       if (!sim.step(h)) {  // Newton failed at this step: restart from the last state with half the step
-        if (h < 1e-4 / w1) throw std::runtime_error("initial: the 3D equilibrium (dynamic relaxation) failed: " +
-                                                    sim.integrator().failure());
+        if (h < 1e-4 / w1)
+          throw std::runtime_error("initial: the 3D equilibrium (dynamic relaxation) failed: " +
+                                   sim.integrator().failure());
         h *= 0.5;
         sim.reset(out.kin, sim.time(), out.hang_off);
         if (!out.material_axes.empty()) sim.setMaterialAxes(out.material_axes);

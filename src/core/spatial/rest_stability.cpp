@@ -17,8 +17,10 @@ LinearStability spatialStability(const SpatialModel& model, const Kinematics3& e
   const MatX C = line.damping(theta0, model);
   const MatX M = line.mass(theta0);
   MatX G;  // the end conditions' Jacobian
-  if (pinned) G = line.endJacobian(theta0);
-  else if (held_end) G = line.endJacobian(theta0).topRows(2);
+  if (pinned)
+    G = line.endJacobian(theta0);
+  else if (held_end)
+    G = line.endJacobian(theta0).topRows(2);
   MatX N;
   if (G.rows() > 0) {
     Eigen::HouseholderQR<MatX> qr(G.transpose());

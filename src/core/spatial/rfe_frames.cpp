@@ -24,8 +24,10 @@ void LineFrames::update(const AlignedVector<Eigen::Vector3d>& points, int nb, st
   for (int i = 0; i < nb; ++i) {
     const Eigen::Vector3d e = (points[i + 1] - points[i]).normalized();
     // Not yet started, or a turn of more than 120 deg since the last call (a fold): start afresh.
-    if (i == 0 && (!started_ || prev.dot(e) < -0.5)) q = startFrame(e);
-    else q = (Eigen::Quaterniond::FromTwoVectors(prev, e) * q).normalized();  // the minimal rotation prev -> e
+    if (i == 0 && (!started_ || prev.dot(e) < -0.5))
+      q = startFrame(e);
+    else
+      q = (Eigen::Quaterniond::FromTwoVectors(prev, e) * q).normalized();  // the minimal rotation prev -> e
     out[i] = q;
     prev = e;
     if (i == 0) first_ = q;

@@ -23,8 +23,12 @@ constexpr double kStabilityFactor3 = 0.9;
 
 SpatialSimulator::SpatialSimulator(std::shared_ptr<const SpatialModel> model, std::shared_ptr<const TopMotion3> top,
                                    IntegratorKind kind, const IntegratorOptions& options, double stabilization)
-    : model_(std::move(model)), top_(std::move(top)), formulation_(*model_, stabilization),
-      data_(formulation_.makeData()), shifted_(formulation_.makeShifted()), integrator_(makeIntegrator(kind, options)),
+    : model_(std::move(model)),
+      top_(std::move(top)),
+      formulation_(*model_, stabilization),
+      data_(formulation_.makeData()),
+      shifted_(formulation_.makeShifted()),
+      integrator_(makeIntegrator(kind, options)),
       kin_(model_->bodies()) {
   const int n = 2 * formulation_.positionSize() + 1;  // [q; v; W]
   y_.setZero(n);
@@ -84,8 +88,8 @@ void SpatialSimulator::rhs(double t, const VecX& y, VecX& dy) {
 void SpatialSimulator::linearize(double t, const VecX& y) {
   if (reused_) backoff_ = 0;  // the last step converged on the kept factor
   if (wait_ > 0) --wait_;
-  bool reuse = newton_ && !force_lin_ && shifted_->factored() && solves_ <= kReuseSolves && age_ < kReuseSteps &&
-               wait_ == 0;
+  bool reuse =
+      newton_ && !force_lin_ && shifted_->factored() && solves_ <= kReuseSolves && age_ < kReuseSteps && wait_ == 0;
   if (reuse && reused_ && age_ > 0 && solves_ == kReuseSolves && staleNext()) reuse = false;
   solves_ = 0;
   reused_ = reuse;
@@ -192,7 +196,8 @@ void SpatialSimulator::estimateStability() {
       formulation_.positionSize(), y_, [&](const VecX& y, VecX& dy) { rhs(t_, y, dy); },
       [&](Complex z) { return scheme.stabilityFunction(z); });
   omega_max_ = s.omega_max;
-  const double undamped = omega_max_ > 0.0 ? scheme.stabilityBound() / omega_max_ : std::numeric_limits<double>::infinity();
+  const double undamped =
+      omega_max_ > 0.0 ? scheme.stabilityBound() / omega_max_ : std::numeric_limits<double>::infinity();
   stable_step_ = std::min(undamped, s.damped_step);
   rhs(t_, y_, dy_);  // leave data_'s evaluation at the state
 }

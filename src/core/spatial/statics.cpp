@@ -46,8 +46,9 @@ double stabilizingShift(const MatX& K, const MatX& M, const MatX& C) {
 void requireStable(const MatX& K, const MatX& M, const MatX& C) {
   const double neutral = 1e-9 * K.diagonal().cwiseAbs().maxCoeff() / M.diagonal().cwiseAbs().maxCoeff();
   if (!positiveDefinite(penalised(K, C) + neutral * M))
-    throw std::runtime_error("the equilibrium found is unstable (its stiffness is negative in some motion the ends "
-                             "allow)");
+    throw std::runtime_error(
+        "the equilibrium found is unstable (its stiffness is negative in some motion the ends "
+        "allow)");
 }
 
 }  // namespace

@@ -16,7 +16,9 @@ class FroudeKrylov3 : public SpatialForceTerm {
       : water_(water), cm_n_(cm_normal), cm_t_(cm_axial) {}
   std::string name() const override { return "froude_krylov"; }
   void addForces(const SpatialModel& model, const Kinematics3& kin, double t, VecX& Q) const override;
-  double potentialEnergy(const SpatialModel&, const Kinematics3&, double) const override { return 0.0; }  // power() only
+  double potentialEnergy(const SpatialModel&, const Kinematics3&, double) const override {
+    return 0.0;
+  }  // power() only
   double power(const SpatialModel& model, const Kinematics3& kin, double t) const override;
   double addForcesAndPower(const SpatialModel& model, const Kinematics3& kin, double t, VecX& Q) const override;
 

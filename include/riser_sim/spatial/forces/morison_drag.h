@@ -17,7 +17,9 @@ class MorisonDrag3 : public SpatialForceTerm {
       : water_(water), cd_t_(drag_tangential), cd_n_(drag_normal), at_rest_(line_at_rest) {}
   std::string name() const override { return "morison_drag"; }
   void addForces(const SpatialModel& model, const Kinematics3& kin, double t, VecX& Q) const override;
-  double potentialEnergy(const SpatialModel&, const Kinematics3&, double) const override { return 0.0; }  // power() only
+  double potentialEnergy(const SpatialModel&, const Kinematics3&, double) const override {
+    return 0.0;
+  }  // power() only
   double power(const SpatialModel& model, const Kinematics3& kin, double t) const override;
   double addForcesAndPower(const SpatialModel& model, const Kinematics3& kin, double t, VecX& Q) const override;
   // Damping C = -∂F/∂V' of each centroid (exact in the rates); the dependence on position stays explicit.

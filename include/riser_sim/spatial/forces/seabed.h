@@ -42,7 +42,6 @@ class Seabed3 : public SpatialForceTerm {
   SeabedSpec spec_;
   Vec3 n_;         // the plane's unit normal (up when level)
   double offset_;  // n·(level up): level when level
-
 };
 
 }  // namespace spatial

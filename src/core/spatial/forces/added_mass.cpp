@@ -3,7 +3,8 @@
 namespace riser_sim {
 namespace spatial {
 
-void AddedMassTerm::addInertia(const SpatialModel& model, const Kinematics3& kin, std::vector<AddedMass3>& per_rfe) const {
+void AddedMassTerm::addInertia(const SpatialModel& model, const Kinematics3& kin,
+                               std::vector<AddedMass3>& per_rfe) const {
   for (int i = 0; i < model.bodies(); ++i)
     for (int p = 0; p < 2; ++p) {
       const BodyKinematics3& b = kin[i];

@@ -3,8 +3,8 @@
 namespace riser_sim {
 namespace spatial {
 
-Attachments3::Attachments3(const SpatialModel& model, const std::vector<AttachmentSpec>& specs,
-                           const WaterSpec& water, const SeabedSpec& seabed)
+Attachments3::Attachments3(const SpatialModel& model, const std::vector<AttachmentSpec>& specs, const WaterSpec& water,
+                           const SeabedSpec& seabed)
     : sea_(water.enabled ? water : WaterSpec(), model.gravity()), seabed_(seabed), plane_(seabed, model.gravity()) {
   const double g = model.gravity().norm();
   water_.enabled = water.enabled && g != 0.0;
@@ -41,13 +41,17 @@ double Attachments3::sweep(const Kinematics3& kin, double t, VecX* Q) const {
   return pw;
 }
 
-void Attachments3::addForces(const SpatialModel&, const Kinematics3& kin, double t, VecX& Q) const { sweep(kin, t, &Q); }
+void Attachments3::addForces(const SpatialModel&, const Kinematics3& kin, double t, VecX& Q) const {
+  sweep(kin, t, &Q);
+}
 
 double Attachments3::addForcesAndPower(const SpatialModel&, const Kinematics3& kin, double t, VecX& Q) const {
   return sweep(kin, t, &Q);
 }
 
-double Attachments3::power(const SpatialModel&, const Kinematics3& kin, double t) const { return sweep(kin, t, nullptr); }
+double Attachments3::power(const SpatialModel&, const Kinematics3& kin, double t) const {
+  return sweep(kin, t, nullptr);
+}
 
 double Attachments3::potentialEnergy(const SpatialModel&, const Kinematics3& kin, double t) const {
   double e = 0.0;
@@ -56,7 +60,8 @@ double Attachments3::potentialEnergy(const SpatialModel&, const Kinematics3& kin
 }
 
 // Q = Jᵀ F, J = [I, κ e, s I]: K = Jᵀ Kp J - ∂Jᵀ/∂q F (the geometric part: Q_Δ = κ e·F, Q_e = s F).
-void Attachments3::addStiffness(const SpatialModel& model, const Kinematics3& kin, double t, SpatialStiffness& S) const {
+void Attachments3::addStiffness(const SpatialModel& model, const Kinematics3& kin, double t,
+                                SpatialStiffness& S) const {
   for (const Body& a : bodies_) {
     const AttachmentLoad<Vec3> L = load(a, kin, t);
     const BodyKinematics3& b = kin[a.at.rfe];
@@ -92,7 +97,8 @@ void Attachments3::addInertia(const SpatialModel&, const Kinematics3& kin, std::
 double Attachments3::kineticEnergy(const SpatialModel&, const Kinematics3& kin) const {
   double T = 0.0;
   for (const Body& a : bodies_)
-    if (a.spec.added_mass > 0.0) T += 0.5 * a.spec.added_mass * kin[a.at.rfe].velocity(a.at.s0, a.at.kappa).squaredNorm();
+    if (a.spec.added_mass > 0.0)
+      T += 0.5 * a.spec.added_mass * kin[a.at.rfe].velocity(a.at.s0, a.at.kappa).squaredNorm();
   return T;
 }
 

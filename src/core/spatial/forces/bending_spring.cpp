@@ -17,7 +17,8 @@ double BendingSpring::thetaOverSin(double theta) {
 // asin(x)/x = θ/sinθ from x² = sin²θ (θ < 90°): its Maclaurin series to x¹⁴, c_j = (2j)! / (4^j (j!)² (2j+1));
 // for x² <= kSeriesSin2 = 0.01 the first term left out, c_8 x¹⁶ = 1.2e-18, is below round-off.
 double BendingSpring::asinOverSin(double x2) {
-  constexpr double c[8] = {1.0, 1.0 / 6.0, 3.0 / 40.0, 5.0 / 112.0, 35.0 / 1152.0, 63.0 / 2816.0, 231.0 / 13312.0, 143.0 / 10240.0};
+  constexpr double c[8] = {1.0,           1.0 / 6.0,     3.0 / 40.0,      5.0 / 112.0,
+                           35.0 / 1152.0, 63.0 / 2816.0, 231.0 / 13312.0, 143.0 / 10240.0};
   const double x4 = x2 * x2, x8 = x4 * x4;  // Estrin's scheme: three levels, not a chain of seven
   const double p01 = c[0] + c[1] * x2, p23 = c[2] + c[3] * x2, p45 = c[4] + c[5] * x2, p67 = c[6] + c[7] * x2;
   return (p01 + x4 * p23) + x8 * (p45 + x4 * p67);
@@ -78,7 +79,8 @@ double BendingSpring::potentialEnergy(const SpatialModel& model, const Kinematic
 
 double BendingSpring::power(const SpatialModel& model, const Kinematics3& kin, double) const {
   double p = 0.0;
-  for (int i = 1; i < model.bodies(); ++i) p -= model.bendingDamping(i) * (kin[i].omega() - kin[i - 1].omega()).squaredNorm();
+  for (int i = 1; i < model.bodies(); ++i)
+    p -= model.bendingDamping(i) * (kin[i].omega() - kin[i - 1].omega()).squaredNorm();
   return p;
 }
 
@@ -109,8 +111,8 @@ void BendingSpring::addStiffness(const SpatialModel& model, const Kinematics3& k
       const double la = a.norm(), lb = b.norm();
       const Vec3 u = a / la, w = b / lb;
       const double cs = u.dot(w), sn = std::sin(theta), phi = thetaOverSin(theta);
-      const double psi = theta < 1e-4 ? 1.0 / 3.0 + 2.0 * theta * theta / 15.0
-                                      : (sn - theta * std::cos(theta)) / (sn * sn * sn);
+      const double psi =
+          theta < 1e-4 ? 1.0 / 3.0 + 2.0 * theta * theta / 15.0 : (sn - theta * std::cos(theta)) / (sn * sn * sn);
       const Vec3 ga = (w - cs * u) / la, gb = (u - cs * w) / lb;
       const Mat3 dga_a = -(u * ga.transpose() + ga * u.transpose()) / la - cs * (I3 - u * u.transpose()) / (la * la);
       const Mat3 dgb_b = -(w * gb.transpose() + gb * w.transpose()) / lb - cs * (I3 - w * w.transpose()) / (lb * lb);

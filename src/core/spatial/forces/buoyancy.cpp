@@ -15,7 +15,8 @@ void Buoyancy3::addForces(const SpatialModel& model, const Kinematics3& kin, dou
     for (int p = 0; p < 2; ++p) {
       const double f = liftPerLength(model, water_, i, p);
       const WetPart3 w = wetPart3(model.line(), kin[i], i, p, water_);
-      if (w.length > 0.0) addPointForce(kin[i], w.s0, w.kappa, (f * w.length) * water_.up(), Q.data() + kDofPerBody3 * i);
+      if (w.length > 0.0)
+        addPointForce(kin[i], w.s0, w.kappa, (f * w.length) * water_.up(), Q.data() + kDofPerBody3 * i);
     }
 }
 

@@ -104,12 +104,13 @@ void FlexJoint::addStiffness(const SpatialModel& model, const Kinematics3& kin, 
     const double lb = b.norm();
     const Vec3 w = b / lb;
     const double cs = d.dot(w), sn = std::sin(theta), phi = BendingSpring::thetaOverSin(theta);
-    const double psi = theta < 1e-4 ? 1.0 / 3.0 + 2.0 * theta * theta / 15.0
-                                    : (sn - theta * std::cos(theta)) / (sn * sn * sn);
+    const double psi =
+        theta < 1e-4 ? 1.0 / 3.0 + 2.0 * theta * theta / 15.0 : (sn - theta * std::cos(theta)) / (sn * sn * sn);
     const Vec3 g = (d - cs * w) / lb;
     const Mat3 dg = -(w * g.transpose() + g * w.transpose()) / lb - cs * (I3 - w * w.transpose()) / (lb * lb);
     const double bb = lb * lb;
-    S.K_diag[i].block<3, 3>(kE, kE) -= k_ * (-psi * bb * g * g.transpose() + 2.0 * phi * g * b.transpose() + phi * bb * dg);
+    S.K_diag[i].block<3, 3>(kE, kE) -=
+        k_ * (-psi * bb * g * g.transpose() + 2.0 * phi * g * b.transpose() + phi * bb * dg);
   }
   if (c_ != 0.0) {
     const BodyKinematics3& r = kin[i];

@@ -48,7 +48,8 @@ double MorisonDrag3::power(const SpatialModel& model, const Kinematics3& kin, do
 }
 
 // -∂F/∂V' = k l [2 D_ξ |V'_ξ| e eᵀ + D_η (|V'_η| (I - e eᵀ) + V'_η V'_ηᵀ / |V'_η|)], mapped by the point's Jacobian.
-void MorisonDrag3::addStiffness(const SpatialModel& model, const Kinematics3& kin, double t, SpatialStiffness& S) const {
+void MorisonDrag3::addStiffness(const SpatialModel& model, const Kinematics3& kin, double t,
+                                SpatialStiffness& S) const {
   if (at_rest_) return;  // no dependence on the rates
   for (int i = 0; i < model.bodies(); ++i)
     for (int p = 0; p < 2; ++p) {

@@ -48,7 +48,8 @@ Vec3 Seabed3::force(const Contact& c, const Vec3& e, bool conservative) const {
     const Vec3 l = n_.cross(a);
     const double va = vh.dot(a), vl = vh.dot(l);
     const double vs = spec_.friction_velocity;
-    F -= (fn / std::sqrt(va * va + vl * vl + vs * vs)) * (spec_.friction_axial * va * a + spec_.friction_lateral * vl * l);
+    F -= (fn / std::sqrt(va * va + vl * vl + vs * vs)) *
+         (spec_.friction_axial * va * a + spec_.friction_lateral * vl * l);
   }
   return F;
 }
