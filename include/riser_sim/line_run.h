@@ -13,6 +13,7 @@
 #include "riser_sim/force_noise.h"
 #include "riser_sim/integrator.h"
 #include "riser_sim/scene.h"
+#include "riser_sim/statics.h"
 #include "riser_sim/types.h"
 
 #include <Eigen/Core>
@@ -24,28 +25,28 @@ using Vec3 = Eigen::Vector3d;
 
 // Every output of the current state, in 3D (z up), sized once per run.
 struct RunOutputs {
-  double t = 0.0;                                                 // [s]
-  Vec3 top_point = Vec3::Zero(), end_point = Vec3::Zero();         // A_0, the end of rfe n [m]
-  Vec3 top_force = Vec3::Zero(), bottom_force = Vec3::Zero();      // on the hang-off, on the anchor [N]
-  Vec3 top_moment = Vec3::Zero(), bottom_moment = Vec3::Zero();    // through a flex joint (else 0) [N m]
-  Vec3 bottom_point = Vec3::Zero();  // the pinned bottom's anchor (3D; moves with bottom.motion) [m]
-  double top_twist = 0.0;            // line.torsion: the twisting moment the hang-off holds [N m]
-  double top_tension = 0.0, max_tension = 0.0;                    // [N]
-  double energy = 0.0, work = 0.0;                                // T + V, work fed in since t = 0 [J]
-  double energy_drift = 0.0;         // (E - E0 - W) / max(|E0|, m g L)
-  double constraint_error = 0.0;     // [m]
-  AlignedVector<Vec3> springs;       // per rfe: the point of its axial spring [m]
-  std::vector<double> axial_force;   // per rfe [N]
-  double bottom_tension = 0.0;       // axial force of the bottom rfe [N]
+  double t = 0.0;                                                // [s]
+  Vec3 top_point = Vec3::Zero(), end_point = Vec3::Zero();       // A_0, the end of rfe n [m]
+  Vec3 top_force = Vec3::Zero(), bottom_force = Vec3::Zero();    // on the hang-off, on the anchor [N]
+  Vec3 top_moment = Vec3::Zero(), bottom_moment = Vec3::Zero();  // through a flex joint (else 0) [N m]
+  Vec3 bottom_point = Vec3::Zero();             // the pinned bottom's anchor (3D; moves with bottom.motion) [m]
+  double top_twist = 0.0;                       // line.torsion: the twisting moment the hang-off holds [N m]
+  double top_tension = 0.0, max_tension = 0.0;  // [N]
+  double energy = 0.0, work = 0.0;              // T + V, work fed in since t = 0 [J]
+  double energy_drift = 0.0;                    // (E - E0 - W) / max(|E0|, m g L)
+  double constraint_error = 0.0;                // [m]
+  AlignedVector<Vec3> springs;                  // per rfe: the point of its axial spring [m]
+  std::vector<double> axial_force;              // per rfe [N]
+  double bottom_tension = 0.0;                  // axial force of the bottom rfe [N]
 
   // The line in full (n + 1 rfes, n joints), for the node's messages.
-  AlignedVector<Vec3> points;        // A_0..A_n and the end of rfe n (n + 2) [m]
+  AlignedVector<Vec3> points;  // A_0..A_n and the end of rfe n (n + 2) [m]
   // Per rfe: its frame, x along the rfe. Planar: the turn φ_i about -y (x towards z). 3D: the minimal-rotation
   // frames (rfe_frames.h: continuous in time and along the line), with line.torsion the material frames.
   std::vector<Eigen::Quaterniond> frames;
-  std::vector<double> elongations;   // Δ_i per rfe [m]
-  std::vector<double> arc_length;    // unstretched arc length from the top to the middle of rfe i [m]
-  std::vector<double> angles;        // planar: φ_i per rfe [rad]; 3D: empty
+  std::vector<double> elongations;  // Δ_i per rfe [m]
+  std::vector<double> arc_length;   // unstretched arc length from the top to the middle of rfe i [m]
+  std::vector<double> angles;       // planar: φ_i per rfe [rad]; 3D: empty
   // Per joint i = 1..n (between rfe i - 1 and i): the bending moment vector (EI κ along e_{i-1} × e_i plus the
   // damper's; planar (0, -M_i, 0)) [N m], its size as the planar message has it (planar: M_i signed; 3D: its
   // norm) [N m], and the curvature |turn| / d [1/m].
@@ -72,21 +73,22 @@ struct LineRunInputs {
   std::optional<HolderStart> top;     // the top an external motion from here (planar: projected onto x-z)
   std::optional<HolderStart> bottom;  // a pinned bottom driven from outside (3D, bottom.type pinned)
   ExternalMotionOptions motion;       // the smoothing, prediction and gap rejoin of their samples
+  StaticsProgress statics_progress;   // optional: the start's statics report their progress (statics.h)
 };
 
 enum class Holder { kTop, kBottom };
 
 // What the run starts from.
 struct StartReport {
-  std::string about;                 // what the initial state is ("hanging equilibrium", ...)
-  bool equilibrium = true;           // false for initial.type straight
+  std::string about;        // what the initial state is ("hanging equilibrium", ...)
+  bool equilibrium = true;  // false for initial.type straight
   int statics_iterations = 0;
-  double statics_residual = 0.0;     // relative to the total weight
+  double statics_residual = 0.0;  // relative to the total weight
   std::string statics_message;
-  Vec3 end_force = Vec3::Zero();     // force at the end that holds the initial state [N]
+  Vec3 end_force = Vec3::Zero();       // force at the end that holds the initial state [N]
   bool has_rest_acceleration = false;  // the engine checks the state's accelerations at rest (3D)
   double initial_acceleration = 0.0, initial_acceleration_bound = 0.0;  // [m/s^2]
-  bool has_twist_moment = false;     // line.torsion
+  bool has_twist_moment = false;                                        // line.torsion
   double initial_twist_moment = 0.0, initial_twist_moment_bound = 0.0;  // [N m]
 };
 
@@ -106,13 +108,13 @@ class LineRun {
   // Health.
   virtual double maxConstraintError() const = 0;  // [m]
   virtual double energyDrift() = 0;
-  virtual double energyScale() const = 0;         // m g L [J]
+  virtual double energyScale() const = 0;  // m g L [J]
   virtual const ForceNoiseMonitor& forceNoise() const = 0;
   virtual std::string forceWarning(const ForceNoise& e) const = 0;
   virtual double stableStepEstimate() const = 0;  // [s]
   // Empty, or why solver.dt is above the explicit scheme's estimated limit, with a safe step.
   virtual std::string stepAboveLimit() const = 0;
-  virtual double highestFrequency() const = 0;    // [rad/s]
+  virtual double highestFrequency() const = 0;  // [rad/s]
   virtual bool explicitFixedStep() const = 0;
   virtual Integrator::Stats integratorStats() const = 0;
 
@@ -123,7 +125,7 @@ class LineRun {
   virtual void restartHolder(Holder h, double t, const Vec3& p, const Eigen::Quaterniond& q) = 0;
   virtual void shiftSampleTimes(double dt) = 0;  // every live holder's sample times, by dt [s]
   virtual bool live(Holder h) const = 0;
-  virtual MotionGaps gaps(Holder h) const = 0;   // of a live holder's samples (none: empty)
+  virtual MotionGaps gaps(Holder h) const = 0;  // of a live holder's samples (none: empty)
 
   const StartReport& start() const { return start_; }
   // The scene this run steps, its live holders fixed where they started: what its modes are about.

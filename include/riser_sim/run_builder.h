@@ -23,6 +23,7 @@ struct RunInputs {
   std::optional<Vec2> top;            // A_0 at t = 0 [m] (the node: hang-off from the vessel pose);
                                       // default: the scene's top motion at t = 0
   std::unique_ptr<TopMotion> motion;  // default: the scene's top.motion
+  StaticsProgress statics_progress;   // optional: the statics report their progress
 };
 
 struct Run {
@@ -34,8 +35,9 @@ struct Run {
 // The scene's initial state with A_0 at top, for the scene's model. equilibrium_only: an
 // initial.type straight scene gets its hanging equilibrium instead (the modal analysis).
 // Throws std::runtime_error("initial: ...") when the statics fail.
-InitialState solveInitialState(const Scene& scene, const Model& model, const Vec2& top,
-                               bool equilibrium_only = false);
+// progress: the statics' progress report (optional).
+InitialState solveInitialState(const Scene& scene, const Model& model, const Vec2& top, bool equilibrium_only = false,
+                               const StaticsProgress& progress = {});
 
 // Model, initial state, simulator: ready to step. Throws std::invalid_argument ("key: message") for a
 // setup the loader let through, std::runtime_error when the statics fail or the start is not finite.

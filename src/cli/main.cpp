@@ -53,8 +53,8 @@ int main(int argc, char** argv) {
   for (const int k : opt.probe_rfes)
     if (k > scene.elements)
       return fail(kExitBadInput, "--probe-rfe: rfe " + std::to_string(k) + " does not exist (rfes 0.." +
-                                     std::to_string(scene.elements) + ", line.elements = " +
-                                     std::to_string(scene.elements) + ")");
+                                     std::to_string(scene.elements) +
+                                     ", line.elements = " + std::to_string(scene.elements) + ")");
   if (!(scene.duration / scene.solver.dt <= kMaxSceneSteps)) {  // run.duration itself is checked by the loader
     std::ostringstream why;
     why << "--duration: " << scene.duration / scene.solver.dt << " steps of solver.dt, more than " << kMaxSceneSteps;
@@ -63,15 +63,27 @@ int main(int argc, char** argv) {
   info("scene '%s': n = %d, dt = %g s, %s/%s, duration %g s%s", scene.name.c_str(), scene.elements, scene.solver.dt,
        name(scene.solver.integrator), scene.space == SpaceKind::kSpatial ? "natural" : name(scene.solver.formulation),
        scene.duration, scene.space == SpaceKind::kSpatial ? ", space: spatial (3D)" : "");
-  if (scene.top.type == MotionKind::kExternal) info("top.motion.type external: the top is held at top.position offline");
+  if (scene.top.type == MotionKind::kExternal)
+    info("top.motion.type external: the top is held at top.position offline");
   if (opt.modes > 0) {  // statics + modes; a time run only when --duration is given too
     const int rc = runModes(scene, opt.modes, opt.modes_csv, opt.quiet);
     if (rc != kExitOk || opt.duration < 0.0) return rc;
   }
 
   std::unique_ptr<LineRun> run;
+  LineRunInputs inputs;
+  if (!opt.quiet) {  // a statics that takes a while says so every 2 s (its time is bounded: statics.h)
+    double next = 2.0;
+    inputs.statics_progress = [next](const std::string& stage, int iterations, double residual,
+                                     double seconds) mutable {
+      if (seconds < next) return;
+      next = seconds + 2.0;
+      std::fprintf(stderr, "riser_sim_cli: statics: %s, %d iterations, residual %.3g, %.0f s\n", stage.c_str(),
+                   iterations, residual, seconds);
+    };
+  }
   try {
-    run = buildLineRun(scene);
+    run = buildLineRun(scene, inputs);
   } catch (const std::invalid_argument& e) {  // input the scene parser let through, or what the engine cannot run
     return fail(kExitBadInput, e.what());
   } catch (const std::runtime_error& e) {  // statics did not converge / not an equilibrium
@@ -169,7 +181,9 @@ int main(int argc, char** argv) {
     if (run->hasTopFlexJoint()) j.add("top_moment_max", run->maxTopMoment());
     if (run->hasBottomFlexJoint()) j.add("bottom_moment_max", run->maxBottomMoment());
     if (run->bottomMoves())
-      j.add("x_bottom", last.bottom_point.x()).add("y_bottom", last.bottom_point.y()).add("z_bottom", last.bottom_point.z());
+      j.add("x_bottom", last.bottom_point.x())
+          .add("y_bottom", last.bottom_point.y())
+          .add("z_bottom", last.bottom_point.z());
     if (run->hasTorsion()) j.add("top_twist", last.top_twist);
     for (size_t k = 0; k < last.attachment_points.size(); ++k) {  // attachments (scene order), at the end
       const std::string a = "attachment" + std::to_string(k);
@@ -182,10 +196,10 @@ int main(int argc, char** argv) {
       j.add("tension_max_s", range->tensionMaxS())
           .add("curvature_max", range->curvatureMax())
           .add("curvature_max_s", range->curvatureMaxS());
-      if (range->hasSeabed()) j.add("touchdown_s_min", range->touchdownMin()).add("touchdown_s_max", range->touchdownMax());
+      if (range->hasSeabed())
+        j.add("touchdown_s_min", range->touchdownMin()).add("touchdown_s_max", range->touchdownMax());
     }
-    j
-        .add("max_constraint_error", run->maxConstraintError())
+    j.add("max_constraint_error", run->maxConstraintError())
         .add("energy_drift", last.energy_drift)
         .add("force_noise_top", run->forceNoise().total().top)
         .add("force_noise_max_axial", run->forceNoise().total().max_axial)

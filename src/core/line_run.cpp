@@ -28,11 +28,11 @@ bool allFinite(const RunOutputs& o) {
   };
   for (const Eigen::Quaterniond& q : o.frames)
     if (!q.coeffs().allFinite()) return false;
-  for (const Vec3* v : {&o.top_point, &o.end_point, &o.top_force, &o.bottom_force, &o.top_moment, &o.bottom_moment,
-                        &o.bottom_point})
+  for (const Vec3* v :
+       {&o.top_point, &o.end_point, &o.top_force, &o.bottom_force, &o.top_moment, &o.bottom_moment, &o.bottom_point})
     if (!v->allFinite()) return false;
-  for (double x : {o.t, o.top_twist, o.top_tension, o.max_tension, o.bottom_tension, o.energy, o.work,
-                   o.energy_drift, o.constraint_error})
+  for (double x : {o.t, o.top_twist, o.top_tension, o.max_tension, o.bottom_tension, o.energy, o.work, o.energy_drift,
+                   o.constraint_error})
     if (!std::isfinite(x)) return false;
   return finite3(o.springs) && finite3(o.points) && finite3(o.bending_moment_vector) && finite(o.axial_force) &&
          finite(o.elongations) && finite(o.arc_length) && finite(o.angles) && finite(o.bending_moment) &&
@@ -152,14 +152,14 @@ class PlanarLineRun : public LineRun {
  private:
   // The run of the scene; a live top: an ExternalMotion from its start, the scene's top fixed there.
   Run build(const Scene& scene, const LineRunInputs& inputs) {
-    if (inputs.bottom)
-      throw std::invalid_argument("bottom.motion: a bottom driven from outside needs space: spatial");
+    if (inputs.bottom) throw std::invalid_argument("bottom.motion: a bottom driven from outside needs space: spatial");
     held_ = scene;
-    if (!inputs.top) return buildRun(held_);
+    RunInputs in;
+    in.statics_progress = inputs.statics_progress;
+    if (!inputs.top) return buildRun(held_, std::move(in));
     const Vec2 top = inPlane(inputs.top->point);
     held_.top.type = MotionKind::kFixed;
     held_.top.position = top;
-    RunInputs in;
     in.top = top;
     in.motion = std::make_unique<ExternalMotion>(top, inputs.top->t, inputs.motion);
     return buildRun(held_, std::move(in));
@@ -170,7 +170,7 @@ class PlanarLineRun : public LineRun {
   ExternalMotion* motion_ = nullptr;  // a live top, owned by sim_
   RunOutputs out_;
   const Attachments* attachments_ = nullptr;  // the scene's attachments' term (or none)
-  Kinematics kin_;  // the state's, for the attachments' outputs
+  Kinematics kin_;                            // the state's, for the attachments' outputs
 };
 
 class SpatialLineRun : public LineRun {
@@ -296,6 +296,7 @@ class SpatialLineRun : public LineRun {
   spatial::SpatialRun build(const Scene& scene, const LineRunInputs& inputs) {
     held_ = scene;
     spatial::RunInputs3 in;
+    in.statics_progress = inputs.statics_progress;
     if (inputs.top) {
       const HolderStart& s = *inputs.top;
       held_.top.type = MotionKind::kFixed;
@@ -331,8 +332,9 @@ class SpatialLineRun : public LineRun {
         const Vec3 m2 = n.cross(m1);
         return Vec3(m1.dot(kappa) * m1 - m2.dot(kappa) * m2);
       };
-      out_.bending_moment_vector[j] += 0.5 * sigma * (split(na, spatial::materialDirector(f, a, na, theta[a])) +
-                                                      split(nb, spatial::materialDirector(f, b, nb, theta[b])));
+      out_.bending_moment_vector[j] += 0.5 * sigma *
+                                       (split(na, spatial::materialDirector(f, a, na, theta[a])) +
+                                        split(nb, spatial::materialDirector(f, b, nb, theta[b])));
       out_.bending_moment[j] = out_.bending_moment_vector[j].norm();
     }
   }
@@ -354,12 +356,12 @@ class SpatialLineRun : public LineRun {
     if (!finite) line_frames_.update(out_.points, nb, out_.frames);
   }
 
-  spatial::ExternalMotion3* top_ = nullptr;         // a live top, owned by run_'s simulator
+  spatial::ExternalMotion3* top_ = nullptr;           // a live top, owned by run_'s simulator
   std::shared_ptr<spatial::ExternalMotion3> bottom_;  // a live bottom, shared with run_'s model
-  mutable spatial::SpatialRun run_;                 // simulator() is non-const
+  mutable spatial::SpatialRun run_;                   // simulator() is non-const
   RunOutputs out_;
   spatial::LineFrames line_frames_;
-  spatial::Kinematics3 kin_;  // of the last outputs()
+  spatial::Kinematics3 kin_;                            // of the last outputs()
   const spatial::Attachments3* attachments_ = nullptr;  // the scene's attachments' term (or none)
 };
 

@@ -8,7 +8,8 @@
 
 namespace riser_sim {
 
-InitialState solveInitialState(const Scene& scene, const Model& model, const Vec2& top, bool equilibrium_only) {
+InitialState solveInitialState(const Scene& scene, const Model& model, const Vec2& top, bool equilibrium_only,
+                               const StaticsProgress& progress) {
   InitialState init;
   const bool straight = scene.initial.type == InitialKind::kStraight;
   if (straight && !equilibrium_only) {
@@ -33,12 +34,14 @@ InitialState solveInitialState(const Scene& scene, const Model& model, const Vec
   }
   StaticsProblem problem = staticsProblem(scene);
   problem.top = top;
+  problem.progress = progress;
   if (straight) problem.kind = StaticsProblem::Kind::kHanging;  // the modes of a straight start
   init.statics = solveStatics(model, problem, 0.0);
   if (!init.statics.converged) throw std::runtime_error("initial: " + init.statics.message);
   init.kin = init.statics.kin;
   init.end_force = init.statics.end_force;
-  init.about = straight ? "hanging equilibrium (initial.type straight is none)" : std::string(name(scene.initial.type)) + " equilibrium";
+  init.about = straight ? "hanging equilibrium (initial.type straight is none)"
+                        : std::string(name(scene.initial.type)) + " equilibrium";
   if (straight) init.statics.message = init.about + "; " + init.statics.message;
   return init;
 }
@@ -46,13 +49,14 @@ InitialState solveInitialState(const Scene& scene, const Model& model, const Vec
 Run buildRun(const Scene& scene, RunInputs inputs) {
   // A 3D scene run planar would drop its y components: spatial::SpatialRun builds it.
   if (scene.space != SpaceKind::kPlanar)
-    throw std::invalid_argument("space: 'spatial' scenes run through the 3D core (riser_sim/spatial/run_builder.h), "
-                                "not the planar builder");
+    throw std::invalid_argument(
+        "space: 'spatial' scenes run through the 3D core (riser_sim/spatial/run_builder.h), "
+        "not the planar builder");
   Run run;
   run.model = buildModel(scene);
   if (!inputs.motion) inputs.motion = buildTopMotion(scene.top);
   const Vec2 top = inputs.top ? *inputs.top : inputs.motion->at(0.0).p;
-  run.initial = solveInitialState(scene, *run.model, top);
+  run.initial = solveInitialState(scene, *run.model, top, false, inputs.statics_progress);
   // The statics' end force stays on as a constant end load, so the start is an exact equilibrium.
   if (scene.initial.type == InitialKind::kDisplaced && scene.initial.end_force == EndForceKind::kHold)
     run.model->addTerm(std::make_unique<EndLoad>(run.initial.end_force));
@@ -62,8 +66,9 @@ Run buildRun(const Scene& scene, RunInputs inputs) {
   // Values within the loader's limits can still combine into forces beyond double range (an extreme
   // sinusoid, stabilisation or drag): such a run never starts, so nothing non-finite is published.
   if (!run.sim->state().allFinite() || !allFinite(run.sim->outputs()))
-    throw std::runtime_error("initial: the initial state or its forces are not finite (NaN/Inf): the scene's values "
-                             "combine beyond double range");
+    throw std::runtime_error(
+        "initial: the initial state or its forces are not finite (NaN/Inf): the scene's values "
+        "combine beyond double range");
   return run;
 }
 

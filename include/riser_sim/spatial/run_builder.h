@@ -40,7 +40,11 @@ class SinusoidMotion3 : public TopMotion3 {
  public:
   SinusoidMotion3(const Vec3& center, const Vec3& amplitude, double period, const Vec3& phase,
                   const Vec3& attitude = Vec3::Zero(), const Vec3& attitude_phase = Vec3::Zero())
-      : center_(center), amp_(amplitude), omega_(2.0 * M_PI / period), phase_(phase), att_(attitude),
+      : center_(center),
+        amp_(amplitude),
+        omega_(2.0 * M_PI / period),
+        phase_(phase),
+        att_(attitude),
         att_phase_(attitude_phase) {}
   PointMotion3 at(double t) const override;
   bool rotates() const override { return !att_.isZero(); }
@@ -69,13 +73,13 @@ std::unique_ptr<TopMotion3> buildTopMotion3(const TopMotionSpec& spec);
 std::shared_ptr<SpatialModel> buildSpatialModel(const Scene& scene);
 
 struct InitialState3 {
-  Kinematics3 kin;               // at rest
+  Kinematics3 kin;                // at rest
   Vec3 end_force = Vec3::Zero();  // force [N] at the end that holds kin (displaced; the anchor's for pinned)
-  bool equilibrium = true;       // false for initial.type straight
+  bool equilibrium = true;        // false for initial.type straight
   std::string about;
-  StaticsResult statics;         // of the planar problem (kin in its plane)
+  StaticsResult statics;                 // of the planar problem (kin in its plane)
   Vec3 plane_direction = Vec3::UnitX();  // horizontal unit vector of the statics' plane
-  double max_acceleration = 0.0;  // largest |acceleration| of a joint or the end at rest [m/s^2]
+  double max_acceleration = 0.0;         // largest |acceleration| of a joint or the end at rest [m/s^2]
   double acceleration_bound = 0.0;
   // Torsion on: the largest |moment about e_i| on a free spin at rest [N m] and its bound; with bending axes
   // (line.EI: [EI_1, EI_2]) bent between them, each rfe's material axis 1 (the spins; empty: untwisted).
@@ -85,7 +89,8 @@ struct InitialState3 {
   HangOff hang_off;  // then also the hang-off's twist frame the statics held (SpatialSimulator::reset)
 };
 
-// The initial state (initial_state.cpp). The scene without its waves: what the statics and the equilibrium check see (the current stays, steady at t = 0).
+// The initial state (initial_state.cpp). The scene without its waves: what the statics and the equilibrium check see
+// (the current stays, steady at t = 0).
 Scene stillWater(const Scene& scene);
 // Throws std::runtime_error("initial: ... fails the check stability: ...") unless the equilibrium init.kin (its end
 // force, spins and hang-off frame) has no growing mode in the scene's still water (spatialStability, statics.h);
@@ -104,7 +109,7 @@ double restAcceleration(const Scene& scene, const Kinematics3& kin, const Vec3& 
 
 // The scene's initial state with A_0 at top. Throws std::runtime_error("initial: ...") when the statics
 // fail, the problem is not planar, or the rotated state is not an equilibrium of the 3D model.
-InitialState3 solveInitialState3(const Scene& scene, const Vec3& top);
+InitialState3 solveInitialState3(const Scene& scene, const Vec3& top, const StaticsProgress& progress = {});
 
 // The scene's flex joints (top.flex_joint, bottom.flex_joint) added to model, their axes given or along the
 // line in `initial` at t = 0 (then unloaded) and turning with their holder's motion when it rotates()
@@ -122,9 +127,9 @@ FlexJoints3 addFlexJoints(const Scene& scene, const Kinematics3& initial, Spatia
 // Every output of the current state.
 struct LineOutputs3 {
   double t = 0.0;
-  AlignedVector<Vec3> points;      // A_0..A_n and the end [m]
-  AlignedVector<Vec3> springs;     // A_i + l1_i e_i: the point of rfe i's axial spring [m]
-  std::vector<double> axial_force;  // per rfe [N]
+  AlignedVector<Vec3> points;        // A_0..A_n and the end [m]
+  AlignedVector<Vec3> springs;       // A_i + l1_i e_i: the point of rfe i's axial spring [m]
+  std::vector<double> axial_force;   // per rfe [N]
   Vec3 top_force = Vec3::Zero();     // force the line exerts on the hang-off [N]
   Vec3 bottom_force = Vec3::Zero();  // on the anchor (pinned; 0 when free) [N]
   // Moment the line exerts on the hang-off / the anchor through a flex joint [N m] (0 when pinned or free:
@@ -132,10 +137,10 @@ struct LineOutputs3 {
   Vec3 top_moment = Vec3::Zero(), bottom_moment = Vec3::Zero();
   // line.torsion: the twisting moment the hang-off holds about its axis [N m] (in top_moment too; 0 when free).
   double top_twist = 0.0;
-  Vec3 bottom_point = Vec3::Zero();  // the pinned bottom's anchor p_b(t) [m] (moves with bottom.motion)
+  Vec3 bottom_point = Vec3::Zero();             // the pinned bottom's anchor p_b(t) [m] (moves with bottom.motion)
   double top_tension = 0.0, max_tension = 0.0;  // [N]
   double kinetic_energy = 0.0, potential_energy = 0.0, work_in = 0.0;  // [J]
-  double constraint_error = 0.0;  // [m]
+  double constraint_error = 0.0;                                       // [m]
 };
 
 // What a caller gives instead of the scene's top (as the planar RunInputs): the node's vessel feed.
@@ -143,9 +148,10 @@ struct LineOutputs3 {
 // statics end at its position at t = 0, the path is not shifted by the statics' gap (within
 // initial.tolerance). Default: buildTopMotion3(scene.bottom_motion).
 struct RunInputs3 {
-  std::optional<Vec3> top;              // A_0 at t = 0 [m]; default: motion's at t = 0
-  std::unique_ptr<TopMotion3> motion;   // default: buildTopMotion3(scene.top)
+  std::optional<Vec3> top;                          // A_0 at t = 0 [m]; default: motion's at t = 0
+  std::unique_ptr<TopMotion3> motion;               // default: buildTopMotion3(scene.top)
   std::shared_ptr<const TopMotion3> bottom_motion;  // needs bottom.type: pinned
+  StaticsProgress statics_progress;                 // optional: the planar statics report their progress
 };
 
 class SpatialRun {
@@ -187,7 +193,7 @@ class SpatialRun {
   const InitialState3& initial() const { return initial_; }
   bool bottomMoves() const { return model_->bottomMoves(); }
   bool hasTorsion() const { return model_->hasTorsion(); }
-  const FlexJoint* topFlexJoint() const { return top_joint_; }      // nullptr: pinned (free rotation)
+  const FlexJoint* topFlexJoint() const { return top_joint_; }  // nullptr: pinned (free rotation)
   const FlexJoint* bottomFlexJoint() const { return bottom_joint_; }
   SpatialSimulator& simulator() { return *sim_; }
 

@@ -71,16 +71,19 @@ CurrentSpec planarCurrent(const CurrentSpec& c, const Vec2& u, double& across) {
 void checkBendingAxis(const Scene& scene, const Kinematics3& kin) {
   const Vec3& a = scene.bending_axes.axis;
   if (scene.bending_axes.enabled && !(a.normalized().cross(kin[0].e.normalized()).norm() > 1e-6))
-    throw std::runtime_error("line.bending_axis: lies along the top rfe at t = 0 (within 1e-6 rad): give material "
-                             "axis 1 across the line");
+    throw std::runtime_error(
+        "line.bending_axis: lies along the top rfe at t = 0 (within 1e-6 rad): give material "
+        "axis 1 across the line");
 }
 
 }  // namespace
 
 void checkStable(const Scene& scene, const InitialState3& init, bool held_end) {
   const std::shared_ptr<SpatialModel> model = buildSpatialModel(stillWater(scene));
-  if (scene.bottom == BottomBoundary::kPinned) model->setBottom(BottomBoundary::kPinned, init.kin.back().end());
-  else if (init.end_force.squaredNorm() > 0.0) model->addTerm(std::make_unique<EndLoad3>(init.end_force));
+  if (scene.bottom == BottomBoundary::kPinned)
+    model->setBottom(BottomBoundary::kPinned, init.kin.back().end());
+  else if (init.end_force.squaredNorm() > 0.0)
+    model->addTerm(std::make_unique<EndLoad3>(init.end_force));
   SpatialModalOptions o;
   o.hang_off = init.hang_off;
   const LinearStability s =
@@ -97,7 +100,8 @@ Scene stillWater(const Scene& scene) {
   return s;
 }
 
-double restAcceleration(const Scene& scene, const Kinematics3& kin, const Vec3& end_force, const Vec3& top, int& where) {
+double restAcceleration(const Scene& scene, const Kinematics3& kin, const Vec3& end_force, const Vec3& top,
+                        int& where) {
   double moment = 0.0;
   int moment_where = 0;
   return restAcceleration(scene, kin, end_force, top, AlignedVector<Vec3>(), where, moment, moment_where);
@@ -148,8 +152,8 @@ struct StaticsPlane {
   Vec2 u = Vec2(1.0, 0.0);
   Mat3 R = Mat3::Identity();  // planar (x, y_up) -> u x + y_up z
   Vec3 origin = Vec3::Zero(), normal = Vec3::UnitY();
-  bool free_hang = false;     // the end hangs free (hanging, or displaced by zero)
-  bool sloped = false;        // a sloped seabed
+  bool free_hang = false;  // the end hangs free (hanging, or displaced by zero)
+  bool sloped = false;     // a sloped seabed
 };
 
 StaticsPlane staticsPlane(const Scene& scene, const Vec3& top) {
@@ -162,8 +166,8 @@ StaticsPlane staticsPlane(const Scene& scene, const Vec3& top) {
   if (kind == InitialKind::kBetweenPoints && bottom_h.norm() > 0.0) p.u = bottom_h.normalized();
   // A line hanging free in a current leans downstream: its plane is the current's (the statics see it steady).
   const Vec2 cur = scene.water.enabled ? currentDirection(scene.water.current) : Vec2::Zero();
-  p.free_hang = kind == InitialKind::kHanging ||
-                (kind == InitialKind::kDisplaced && scene.initial.end_offset.norm() == 0.0);
+  p.free_hang =
+      kind == InitialKind::kHanging || (kind == InitialKind::kDisplaced && scene.initial.end_offset.norm() == 0.0);
   if (p.free_hang && cur.norm() > 0.0) p.u = cur;
   p.sloped = scene.seabed.enabled && scene.seabed.slope > 0.0;
   const Vec2 uphill(std::cos(scene.seabed.slope_heading), std::sin(scene.seabed.slope_heading));
@@ -196,10 +200,12 @@ Scene planarScene(const Scene& scene, const StaticsPlane& plane, const Vec3& top
   ps.bottom_point = Vec2((scene.bottom_point3.head<2>() - top.head<2>()).norm(), scene.bottom_point3.z());
   ps.water.current = planarCurrent(scene.water.current, plane.u, across);
   ps.water.waves = WaveSpec();  // the statics never see the waves
-  if (plane.sloped && kind == InitialKind::kBetweenPoints) ps.seabed.level = slopeHeight(scene.bottom_point3.head<2>());
+  if (plane.sloped && kind == InitialKind::kBetweenPoints)
+    ps.seabed.level = slopeHeight(scene.bottom_point3.head<2>());
   else if (plane.sloped && !plane.free_hang)
     ps.seabed.level = std::max(slopeHeight(top.head<2>()), slopeHeight(top.head<2>() + scene.initial.end_offset));
-  else if (plane.sloped) ps.seabed.level = slopeHeight(top.head<2>());
+  else if (plane.sloped)
+    ps.seabed.level = slopeHeight(top.head<2>());
   ps.seabed.slope = ps.seabed.slope_heading = 0.0;
   return ps;
 }
@@ -233,7 +239,7 @@ InitialState3 straightStart(const Scene& scene, const StaticsPlane& plane, const
 // Stage 4. The planar statics in the plane, rotated into 3D; refused when the problem is not planar there (the
 // anchor, the end force or the solution off the plane beyond round-off).
 void planarEquilibrium(const Scene& scene, const StaticsPlane& plane, const Model& planar, const Scene& ps,
-                       const Vec3& top, InitialState3& init) {
+                       const Vec3& top, const StaticsProgress& progress, InitialState3& init) {
   const InitialKind kind = scene.initial.type;
   const double L = scene.length;
   const auto offPlane = [&](const Vec3& p) { return std::abs(plane.normal.dot(p - plane.origin)); };
@@ -242,7 +248,9 @@ void planarEquilibrium(const Scene& scene, const StaticsPlane& plane, const Mode
       offPlane(scene.bottom_point3) > kPlanarTolerance * std::max(L, (scene.bottom_point3 - top).norm()))
     check = "bottom.position is " + fmt(offPlane(scene.bottom_point3)) + " m off the plane";
   if (check.empty()) {
-    init.statics = solveStatics(planar, staticsProblem(ps), 0.0);
+    StaticsProblem problem = staticsProblem(ps);
+    problem.progress = progress;
+    init.statics = solveStatics(planar, problem, 0.0);
     if (!init.statics.converged) throw std::runtime_error("initial: " + init.statics.message);
     init.kin = fromPlanar(init.statics.kin, plane.R, plane.origin);
     init.end_force = planarPoint(init.statics.end_force, plane.R);
@@ -279,8 +287,9 @@ void restIn3D(const Scene& scene, const StaticsPlane& plane, double current_acro
       init.kin = spatialEquilibriumHeldEnd(*model, init.kin, xy, init.end_force);
     } catch (const std::runtime_error& e) {
       throw std::runtime_error(std::string("initial: the displaced end ") +
-                               (slope_end ? "on the sloped seabed (seabed.slope" : "in the current across the plane "
-                                                                                   "(environment.current") +
+                               (slope_end ? "on the sloped seabed (seabed.slope"
+                                          : "in the current across the plane "
+                                            "(environment.current") +
                                "): " + e.what());
     }
     init.about = std::string("displaced equilibrium ") +
@@ -306,7 +315,7 @@ void restIn3D(const Scene& scene, const StaticsPlane& plane, double current_acro
 // The stages above, then the spins at rest (stage 6: bent between bending axes, Newton in 3D with the spins) and
 // the checks every accepted start passes: at rest (accelerations and twist moments within the bounds from
 // initial.tolerance) and stable (checkStable).
-InitialState3 solveInitialState3(const Scene& scene, const Vec3& top) {
+InitialState3 solveInitialState3(const Scene& scene, const Vec3& top, const StaticsProgress& progress) {
   const InitialKind kind = scene.initial.type;
   const StaticsPlane plane = staticsPlane(scene, top);
   double current_across = 0.0;
@@ -317,7 +326,7 @@ InitialState3 solveInitialState3(const Scene& scene, const Vec3& top) {
 
   InitialState3 init;
   init.plane_direction = Vec3(plane.u.x(), plane.u.y(), 0.0);
-  planarEquilibrium(scene, plane, *planar, ps, top, init);
+  planarEquilibrium(scene, plane, *planar, ps, top, progress, init);
 
   // The rotated state must be an equilibrium of the 3D model: its accelerations at rest ~0. The statics
   // leave a residual force up to initial.tolerance x the weight W on a coordinate; on the lightest rfe
@@ -351,10 +360,11 @@ InitialState3 solveInitialState3(const Scene& scene, const Vec3& top) {
     atRest();
   }
   if (!(init.max_acceleration <= init.acceleration_bound))
-    throw std::runtime_error("initial: the " + std::string(name(kind)) + " equilibrium rotated into 3D is not an "
-                             "equilibrium of the 3D model: acceleration " + fmt(init.max_acceleration) +
-                             " m/s^2 at rest at rfe " + std::to_string(where) + " (bound " +
-                             fmt(init.acceleration_bound) + " m/s^2 from initial.tolerance)");
+    throw std::runtime_error("initial: the " + std::string(name(kind)) +
+                             " equilibrium rotated into 3D is not an "
+                             "equilibrium of the 3D model: acceleration " +
+                             fmt(init.max_acceleration) + " m/s^2 at rest at rfe " + std::to_string(where) +
+                             " (bound " + fmt(init.acceleration_bound) + " m/s^2 from initial.tolerance)");
   if (!(init.max_twist_moment <= init.twist_moment_bound))
     throw std::runtime_error("initial: the " + std::string(name(kind)) + " equilibrium is not at rest in twist: " +
                              fmt(init.max_twist_moment) + " N m about rfe " + std::to_string(moment_where) +

@@ -49,8 +49,9 @@ bool implicitScheme(IntegratorKind k) {
 std::optional<SceneIssue> unsupported(const Scene& s) {
   const std::string yet = "not available with space: spatial yet";
   if (s.seabed.enabled && s.seabed.stiffness_tangential > 0.0)
-    return SceneIssue{"seabed.stiffness_tangential", "anchored tangential springs are " + yet +
-                                                         " (the 3D seabed has Coulomb friction: friction_axial, friction_lateral)"};
+    return SceneIssue{"seabed.stiffness_tangential",
+                      "anchored tangential springs are " + yet +
+                          " (the 3D seabed has Coulomb friction: friction_axial, friction_lateral)"};
   const InternalFlowSpec& f = s.internal_fluid;
   if (f.density > 0.0 && (f.velocity != 0.0 || f.acceleration != 0.0))
     return SceneIssue{"internal_fluid", "a flow (velocity or acceleration != 0) is " + yet +
@@ -61,10 +62,11 @@ std::optional<SceneIssue> unsupported(const Scene& s) {
                                                 "the 3D counterpart of 'absolute' (remove the key or set absolute)"};
   if (implicitScheme(s.solver.integrator) && s.solver.jacobian == JacobianKind::kDense &&
       s.elements > kMaxDenseElements3)
-    return SceneIssue{"line.elements", "must be <= " + std::to_string(kMaxDenseElements3) + " with a dense " +
-                                           name(s.solver.integrator) + " Jacobian and space: spatial, got " +
-                                           std::to_string(s.elements) +
-                                           " (7(n + 1) coordinates); use solver.jacobian auto (structured O(n) solves)"};
+    return SceneIssue{"line.elements",
+                      "must be <= " + std::to_string(kMaxDenseElements3) + " with a dense " +
+                          name(s.solver.integrator) + " Jacobian and space: spatial, got " +
+                          std::to_string(s.elements) +
+                          " (7(n + 1) coordinates); use solver.jacobian auto (structured O(n) solves)"};
   return std::nullopt;
 }
 
@@ -100,7 +102,8 @@ VelocityProfileMotion3::VelocityProfileMotion3(const Vec3& start, const std::vec
 
 PointMotion3 VelocityProfileMotion3::at(double t) const {
   const PointMotion a = xz_->at(t), b = y_->at(t);
-  return PointMotion3{Vec3(a.p.x(), b.p.x(), a.p.y()), Vec3(a.v.x(), b.v.x(), a.v.y()), Vec3(a.a.x(), b.a.x(), a.a.y())};
+  return PointMotion3{Vec3(a.p.x(), b.p.x(), a.p.y()), Vec3(a.v.x(), b.v.x(), a.v.y()),
+                      Vec3(a.a.x(), b.a.x(), a.a.y())};
 }
 
 std::unique_ptr<TopMotion3> buildTopMotion3(const TopMotionSpec& spec) {
@@ -137,8 +140,8 @@ std::shared_ptr<SpatialModel> buildSpatialModel(const Scene& scene) {
       model->addTerm(std::make_unique<FroudeKrylov3>(water, h.inertia_coefficient, 1.0 + h.axial_added_mass));
     const bool section_mass = sectionsAddMass(scene);
     if (h.enabled && (h.inertia_coefficient != 1.0 || h.axial_added_mass != 0.0 || section_mass))
-      model->addTerm(std::make_unique<AddedMassTerm>(water, h.inertia_coefficient - 1.0, h.axial_added_mass,
-                                                     section_mass));
+      model->addTerm(
+          std::make_unique<AddedMassTerm>(water, h.inertia_coefficient - 1.0, h.axial_added_mass, section_mass));
   }
   if (scene.seabed.enabled) model->addTerm(std::make_unique<Seabed3>(scene.seabed, model->gravity()));
   if (!scene.attachments.empty()) {  // as the planar buildModel
@@ -157,7 +160,10 @@ std::shared_ptr<SpatialModel> buildSpatialModel(const Scene& scene) {
 }
 
 SpatialRun::SpatialRun(const Scene& scene, RunInputs3 inputs)
-    : integrator_kind_(scene.solver.integrator), rho_inf_(scene.solver.rho_inf), dt_(scene.solver.dt), max_gap_(scene.solver.max_constraint_error * scene.length / scene.elements) {
+    : integrator_kind_(scene.solver.integrator),
+      rho_inf_(scene.solver.rho_inf),
+      dt_(scene.solver.dt),
+      max_gap_(scene.solver.max_constraint_error * scene.length / scene.elements) {
   if (scene.space != SpaceKind::kSpatial) throw std::invalid_argument("space: SpatialRun needs space: spatial");
   if (const auto issue = unsupported(scene)) throw std::invalid_argument(issue->key + ": " + issue->message);
   model_ = buildSpatialModel(scene);
@@ -171,7 +177,7 @@ SpatialRun::SpatialRun(const Scene& scene, RunInputs3 inputs)
   if (pinned)
     at0.bottom_point3 =
         inputs.bottom_motion ? inputs.bottom_motion->at(0.0).p : buildTopMotion3(scene.bottom_motion)->at(0.0).p;
-  initial_ = solveInitialState3(at0, top);
+  initial_ = solveInitialState3(at0, top, inputs.statics_progress);
   // A pinned end is held where the statics put it: within initial.tolerance x line.length of
   // bottom.position (their end condition), so the run starts without a Baumgarte kick from that gap. A
   // moving bottom's path is shifted by that gap for the same reason.
@@ -208,8 +214,8 @@ SpatialRun::SpatialRun(const Scene& scene, RunInputs3 inputs)
   if ((w_top > 0.0 && ((top_joint_ && scene.top_flex_joint.damping > 0.0) || twist_damped)) ||
       (w_bottom > 0.0 && bottom_joint_ && scene.bottom_flex_joint.damping > 0.0)) {
     initial_.equilibrium = false;
-    initial_.about += "; not an equilibrium: a holder turns at t = 0 (top " + fmt(w_top) + ", bottom " +
-                      fmt(w_bottom) + " rad/s) and its dampers load the line at rest";
+    initial_.about += "; not an equilibrium: a holder turns at t = 0 (top " + fmt(w_top) + ", bottom " + fmt(w_bottom) +
+                      " rad/s) and its dampers load the line at rest";
   }
   // The statics' end force stays on as a constant end load (hold), so the start is an exact equilibrium.
   if (scene.initial.type == InitialKind::kDisplaced && scene.initial.end_force == EndForceKind::kHold)
@@ -221,8 +227,7 @@ SpatialRun::SpatialRun(const Scene& scene, RunInputs3 inputs)
   io.jacobian = scene.solver.jacobian == JacobianKind::kDense ? JacobianKind::kDense : JacobianKind::kStructured;
   io.rho_inf = scene.solver.rho_inf;
   io.newton_tolerance = scene.solver.newton_tolerance;
-  sim_ = std::make_unique<SpatialSimulator>(model_, motion, scene.solver.integrator, io,
-                                            scene.solver.stabilization);
+  sim_ = std::make_unique<SpatialSimulator>(model_, motion, scene.solver.integrator, io, scene.solver.stabilization);
   sim_->reset(initial_.kin, 0.0, initial_.hang_off);
   // The spins of an equilibrium twisted by the bending axes.
   if (!initial_.material_axes.empty()) sim_->setMaterialAxes(initial_.material_axes);
@@ -237,8 +242,9 @@ SpatialRun::SpatialRun(const Scene& scene, RunInputs3 inputs)
   ends_.assign(nb, BodyKinematics3());
   trackMoments();
   if (!sim_->state().allFinite() || !std::isfinite(e0_) || !sim_->evaluate().reactions.top.allFinite())
-    throw std::runtime_error("initial: the initial state or its forces are not finite (NaN/Inf): the scene's values "
-                             "combine beyond double range");
+    throw std::runtime_error(
+        "initial: the initial state or its forces are not finite (NaN/Inf): the scene's values "
+        "combine beyond double range");
 }
 
 void SpatialRun::trackMoments() {
@@ -272,11 +278,13 @@ FlexJoints3 addFlexJoints(const Scene& scene, const Kinematics3& initial, Spatia
       throw std::invalid_argument(std::string(key) + ".axis: " + fmt(theta * 180.0 / M_PI) +
                                   " deg from the line's direction at the start (at most 90 deg); give the axis "
                                   "along the line, pointing away from the holder");
-    if (theta > 1e-9) out.loaded += std::string(out.loaded.empty() ? "" : ", ") + key + " turned " + fmt(theta) + " rad";
+    if (theta > 1e-9)
+      out.loaded += std::string(out.loaded.empty() ? "" : ", ") + key + " turned " + fmt(theta) + " rad";
     return joint;
   };
   out.top = add(scene.top_flex_joint, FlexJoint::End::kTop, initial.front().e, top_holder, "top.flex_joint");
-  out.bottom = add(scene.bottom_flex_joint, FlexJoint::End::kBottom, -initial.back().e, bottom_holder, "bottom.flex_joint");
+  out.bottom =
+      add(scene.bottom_flex_joint, FlexJoint::End::kBottom, -initial.back().e, bottom_holder, "bottom.flex_joint");
   return out;
 }
 
@@ -319,8 +327,8 @@ bool SpatialRun::step() {
   else if (!finite)
     why << "state is not finite (NaN/Inf) at t = " << time() << " s";
   else
-    why << "joint constraint error " << err << " m exceeds " << max_gap_ << " m (solver.max_constraint_error x d) at t = "
-        << time() << " s";
+    why << "joint constraint error " << err << " m exceeds " << max_gap_
+        << " m (solver.max_constraint_error x d) at t = " << time() << " s";
   if (failure.find("loosen solver.tolerance") == std::string::npos) why << "; reduce solver.dt (now " << dt_ << " s)";
   if (explicitFixedStep() && highestFrequency() > 0.0)  // as the planar Simulator
     why << divergenceStabilityNote(sim_->integrator().name(), dt_, stableStepEstimate(), highestFrequency());
@@ -372,7 +380,8 @@ const LineOutputs3& SpatialRun::outputs() {
   out_.points[nb] = d.kin[nb - 1].end();
   out_.top_force = d.reactions.top;
   out_.bottom_force = d.reactions.bottom;
-  out_.top_moment = (top_joint_ ? top_joint_->moment(*model_, d.kin, sim_->time()) : Vec3::Zero()) + d.reactions.top_twist_moment;
+  out_.top_moment =
+      (top_joint_ ? top_joint_->moment(*model_, d.kin, sim_->time()) : Vec3::Zero()) + d.reactions.top_twist_moment;
   out_.bottom_moment = bottom_joint_ ? bottom_joint_->moment(*model_, d.kin, sim_->time()) : Vec3::Zero();
   out_.top_twist = d.reactions.top_twist;
   out_.bottom_point = model_->bottom() == BottomBoundary::kPinned ? d.bottom.p : Vec3::Zero();
