@@ -152,7 +152,7 @@ TEST(NodeMatchesCli, FirstSecondOfEveryShippedScene) {
     }
     risers.push_back(std::move(r));
   }
-  ASSERT_EQ(risers.size(), 14u) << "the shipped scenes changed: update node_matches_cli.test";
+  ASSERT_EQ(risers.size(), 17u) << "the shipped scenes changed: update node_matches_cli.test";
 
   ros::Subscriber diag_sub = nh.subscribe<diagnostic_msgs::DiagnosticArray>(
       "/diagnostics", 100, [&](const diagnostic_msgs::DiagnosticArray::ConstPtr& m) {
