@@ -6,8 +6,12 @@ SETUP := set +u; source $(WS)/devel/setup.bash
 
 .PHONY: deps fuzz-deps build check test format test-sanitize fuzz fuzz-replay sim bench bench-baseline soak many_risers figures demo modes clean
 
+# The Debian packages (ROS 1 from Debian itself; list in tools/install_deps.sh), installed when missing.
 deps:
-	@tools/install_deps.sh
+	@missing=$$(tools/install_deps.sh --missing); if [ -n "$$missing" ]; then \
+	  echo "installing: $$missing"; SUDO=""; [ "$$(id -u)" = 0 ] || SUDO=sudo; \
+	  $$SUDO apt-get update -qq && DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y --no-install-recommends $$missing; \
+	fi
 
 build: deps
 	@tools/build.sh -j2 all riser_sim_benches

@@ -18,6 +18,8 @@ missing=()
 for p in "${PKGS[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
+# --missing: print the missing packages and stop (the Makefile's deps target installs them).
+if [ "${1:-}" = "--missing" ]; then echo "${missing[*]}"; exit 0; fi
 if [ ${#missing[@]} -eq 0 ]; then exit 0; fi
 echo "installing: ${missing[*]}"
 SUDO=""; [ "$(id -u)" = 0 ] || SUDO=sudo
