@@ -3,6 +3,7 @@ add_library(riser_sim_core
   src/core/line_properties.cpp
   src/core/line_sections.cpp
   src/core/model.cpp
+  src/core/force_registry.cpp
   src/core/rfe_inertia.cpp
   src/core/top_motion.cpp
   src/core/external_motion.cpp

@@ -199,7 +199,7 @@ class SpatialLineRun : public LineRun {
     for (int i = 0; i < nb; ++i) out_.arc_length[i] = model.rfe(i).s_begin + 0.5 * model.rfe(i).length;
     kin_.resize(nb);
     for (const auto& term : model.terms())
-      if (const auto* a = dynamic_cast<const spatial::Attachments3*>(term.get())) attachments_ = a;
+      if (const auto* a = dynamic_cast<const spatial::Attachments*>(term.get())) attachments_ = a;
     if (attachments_) {
       out_.attachment_points.assign(attachments_->count(), Vec3::Zero());
       out_.attachment_forces.assign(attachments_->count(), Vec3::Zero());
@@ -361,8 +361,8 @@ class SpatialLineRun : public LineRun {
   mutable spatial::SpatialRun run_;                   // simulator() is non-const
   RunOutputs out_;
   spatial::LineFrames line_frames_;
-  spatial::Kinematics3 kin_;                            // of the last outputs()
-  const spatial::Attachments3* attachments_ = nullptr;  // the scene's attachments' term (or none)
+  spatial::Kinematics3 kin_;                           // of the last outputs()
+  const spatial::Attachments* attachments_ = nullptr;  // the scene's attachments' term (or none)
 };
 
 }  // namespace

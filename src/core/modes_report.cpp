@@ -79,7 +79,7 @@ ModesReport spatialReport(const Scene& scene, int count) {
   const sp::InitialState3 init = sp::solveInitialState3(scene, sp::buildTopMotion3(scene.top)->at(0.0).p);
   sp::addFlexJoints(scene, init.kin, *model);
   // The statics' end force stays as a dead load (as the planar modes).
-  if (init.end_force.squaredNorm() > 0.0) model->addTerm(std::make_unique<sp::EndLoad3>(init.end_force));
+  if (init.end_force.squaredNorm() > 0.0) model->addTerm(std::make_unique<sp::EndLoad>(init.end_force));
   // The equilibrium from the statics' state with their hang-off frame; a line twisted by its bending axes:
   // the equilibrium and the modes about it with its spins.
   AlignedVector<Vec3> axes = init.material_axes;

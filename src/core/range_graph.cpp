@@ -39,7 +39,7 @@ SeabedPlane seabedPlane(const Scene& scene) {
   p.exists = scene.seabed.enabled;
   if (!p.exists) return p;
   // The contact force's own plane (gravity along -z in the outputs' frame; a planar scene's y up is z).
-  const spatial::Seabed3 bed(scene.seabed, Vec3(0.0, 0.0, -scene.gravity));
+  const spatial::Seabed bed(scene.seabed, Vec3(0.0, 0.0, -scene.gravity));
   p.normal = bed.normal();
   p.offset = bed.penetration(Vec3::Zero());  // penetration(x) = offset - n·x
   return p;

@@ -81,7 +81,7 @@ SeaMarkers::SeaMarkers(const riser_sim::Scene& scene, const std::string& frame, 
     msg.markers.push_back(m);
   }
   if (scene.seabed.enabled && scene.seabed.slope != 0.0) {
-    const riser_sim::spatial::Seabed3 bed(scene.seabed, gravity.norm() > 0.0 ? gravity : Vec3(0.0, 0.0, -1.0));
+    const riser_sim::spatial::Seabed bed(scene.seabed, gravity.norm() > 0.0 ? gravity : Vec3(0.0, 0.0, -1.0));
     normal_ = bed.normal();
     offset_ = bed.penetration(Vec3::Zero());  // n·(level up) - n·0
     tilt_ = Eigen::Quaterniond::FromTwoVectors(Vec3::UnitZ(), normal_);

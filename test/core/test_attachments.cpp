@@ -404,7 +404,7 @@ TEST(Attachments, PlanarAndSpatialAgree) {
   riser_sim::Run planar = buildRun(loadSceneText(pinnedScene(20, att), "test"));
   spatial::SpatialRun space(loadSceneText(pinnedScene(20, att, "spatial"), "test"));
   const auto* a2 = dynamic_cast<const Attachments*>(planar.model->findTerm("attachments"));
-  const auto* a3 = dynamic_cast<const spatial::Attachments3*>(attachmentsTerm3(space.model()));
+  const auto* a3 = dynamic_cast<const spatial::Attachments*>(attachmentsTerm3(space.model()));
   ASSERT_TRUE(a2 && a3);
   for (int k = 0; k < 2; ++k) {
     const Vec2 p2 = a2->position(planar.initial.kin, k);

@@ -49,8 +49,8 @@ std::shared_ptr<SpatialModel> wetModel(int segments, double surface, bool fk) {
   s.props.outer_diameter = 0.3;
   auto m = spatial_test::spatialModel(s, Vec3(0.0, 0.0, -s.g));
   const Water3 w(water(surface), m->gravity());
-  m->addTerm(std::make_unique<AddedMassTerm>(w, kCaNormal, kCaAxial));
-  if (fk) m->addTerm(std::make_unique<FroudeKrylov3>(w, 1.0 + kCaNormal, 1.0 + kCaAxial));
+  m->addTerm(std::make_unique<AddedMass>(w, kCaNormal, kCaAxial));
+  if (fk) m->addTerm(std::make_unique<FroudeKrylov>(w, 1.0 + kCaNormal, 1.0 + kCaAxial));
   return m;
 }
 
@@ -60,7 +60,7 @@ std::shared_ptr<SpatialModel> wetModel(int segments, double surface, bool fk) {
 TEST(SpatialAddedMass, BlockAndVelocityTermAgainstTheirDefinition) {
   auto m = wetModel(5, -4.0, false);
   const Water3 w(water(-4.0), m->gravity());
-  const AddedMassTerm term(w, kCaNormal, kCaAxial);
+  const AddedMass term(w, kCaNormal, kCaAxial);
   const double rhoA = w.spec().density * m->line().line().externalArea();
   std::mt19937 rng(11);
   const NaturalFormulation f(*m, 50.0);
@@ -200,7 +200,7 @@ TEST(SpatialAddedMass, ModesUnderWater) {
   still.surface = 100.0;
   auto dry = spatial_test::spatialModel(s, Vec3(0.0, 0.0, -s.g));
   auto wet = spatial_test::spatialModel(s, Vec3(0.0, 0.0, -s.g));
-  wet->addTerm(std::make_unique<AddedMassTerm>(Water3(still, wet->gravity()), kCaNormal, kCaAxial));
+  wet->addTerm(std::make_unique<AddedMass>(Water3(still, wet->gravity()), kCaNormal, kCaAxial));
   const std::vector<Vec3> down(dry->bodies(), Vec3(0.0, 0.0, -1.0));
   const Kinematics3 eq =
       spatialEquilibrium(*dry, rigidChain(dry->line(), Vec3::Zero(), down, Vec3::Zero(), Vec3::Zero()));

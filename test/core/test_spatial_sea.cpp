@@ -57,9 +57,9 @@ WaterSpec movingWater() {
 TEST(SpatialSea, TermsAgainstTheirEnergyAndPower) {
   auto m = spatial_test::spatialModel(termLine(), Vec3(1.2, -0.7, -9.5));
   const Water3 water(movingWater(), m->gravity());
-  const Buoyancy3 lift(water);
-  const MorisonDrag3 drag(water, 0.3, 1.1);
-  const FroudeKrylov3 fk(water, 1.8, 1.3);
+  const Buoyancy lift(water);
+  const MorisonDrag drag(water, 0.3, 1.1);
+  const FroudeKrylov fk(water, 1.8, 1.3);
   spatial_test::checkGradient(lift, *m);
   for (const SpatialForceTerm* t :
        {static_cast<const SpatialForceTerm*>(&lift), static_cast<const SpatialForceTerm*>(&drag),
@@ -81,7 +81,7 @@ TEST(SpatialSea, TermsAgainstTheirEnergyAndPower) {
 TEST(SpatialSea, DragDampingMatrixAgainstDifferences) {
   auto m = spatial_test::spatialModel(termLine(), Vec3(0.0, 0.0, -9.81));
   const Water3 water(movingWater(), m->gravity());
-  const MorisonDrag3 drag(water, 0.3, 1.1);
+  const MorisonDrag drag(water, 0.3, 1.1);
   std::mt19937 rng(3);
   double worst = 0.0;
   for (int trial = 0; trial < 3; ++trial) {

@@ -1,11 +1,11 @@
-// The attachments' forces on the planar line (attachment.h, the law in attachment_load.h): buoyancy, drag,
+// The attachments' forces on the planar line (attachment.h, the law in physics/point_body.h): buoyancy, drag,
 // Froude-Krylov, seabed contact at each attachment's point, and its added mass in the rfe's mass block
 // (M_i += m_a Pᵀ P, P = ∂v/∂q'_i of the point; h_i += m_a Pᵀ (2κΔ'φ' n - s φ'² e)). The weight is Gravity's.
 // Energy: U = Σ (ρ_w g W + ½ C_n δ²); power() = Σ (F - F_conservative)·v.
 #pragma once
 #include <vector>
 
-#include "riser_sim/attachment_load.h"
+#include "riser_sim/physics/point_body.h"
 #include "riser_sim/force_term.h"
 #include "riser_sim/water.h"
 

@@ -1,5 +1,7 @@
 #include "riser_sim/forces/buoyancy.h"
 
+#include "riser_sim/physics/buoyancy.h"
+
 namespace riser_sim {
 
 WetPart wetPart(const Model& model, const BodyKinematics& b, int i, int part, double surface) {
@@ -15,7 +17,7 @@ WetPart wetPart(const Model& model, const BodyKinematics& b, int i, int part, do
 
 // ρ_w g A_w of part p of rfe i (its section's displaced area) [N/m].
 double Buoyancy::liftPerLength(const Model& model, int i, int p) const {
-  return water_.density * model.partSection(i, p).props.externalArea() * model.gravity();
+  return physics::liftPerLength(water_.density, model.partSection(i, p).props.externalArea(), model.gravity());
 }
 
 void Buoyancy::addForces(const Model& model, const TermData*, const Kinematics& kin, double, VecX& Q) const {
@@ -23,7 +25,8 @@ void Buoyancy::addForces(const Model& model, const TermData*, const Kinematics& 
     for (int p = 0; p < 2; ++p) {
       const double f = liftPerLength(model, i, p);
       const WetPart w = wetPart(model, kin[i], i, p, water_.surface);
-      if (w.length > 0.0) Q.segment<4>(4 * i) += pointForce(kin[i], w.s0, w.kappa, Vec2(0.0, f * w.length));
+      if (w.length > 0.0)
+        Q.segment<4>(4 * i) += pointForce(kin[i], w.s0, w.kappa, physics::buoyancyForce<2>(f, w.length, Vec2::UnitY()));
     }
 }
 
@@ -33,7 +36,7 @@ double Buoyancy::potentialEnergy(const Model& model, const TermData*, const Kine
     for (int p = 0; p < 2; ++p) {
       const double f = liftPerLength(model, i, p);
       const WetPart w = wetPart(model, kin[i], i, p, water_.surface);
-      v -= f * w.length * (kin[i].point(w.s0, w.kappa).y() - water_.surface);
+      v += physics::buoyancyPotential(f, w.length, kin[i].point(w.s0, w.kappa).y() - water_.surface);
     }
   return v;
 }
@@ -52,7 +55,8 @@ bool Buoyancy::addStiffness(const Model& model, const TermData*, const Kinematic
       const double f = liftPerLength(model, i, p);
       const WetPart w = wetPart(model, kin[i], i, p, water_.surface);
       if (w.length > 0.0)
-        addPointStiffness(kin[i], w.s0, w.kappa, Vec2(0.0, f * w.length), zero, zero, S.K_diag[i], S.C_diag[i]);
+        addPointStiffness(kin[i], w.s0, w.kappa, physics::buoyancyForce<2>(f, w.length, Vec2::UnitY()), zero, zero,
+                          S.K_diag[i], S.C_diag[i]);
     }
   return true;
 }

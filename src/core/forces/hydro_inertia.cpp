@@ -1,6 +1,7 @@
 #include "riser_sim/forces/hydro_inertia.h"
 
 #include "riser_sim/forces/buoyancy.h"
+#include "riser_sim/physics/buoyancy.h"
 
 namespace riser_sim {
 
@@ -60,7 +61,7 @@ double HydroInertia::sweep(const Model& model, const Kinematics& kin, double t, 
       if (water_.moving()) {
         Vec2 vw, aw;
         water_.at(b.point(w.s0, w.kappa), t, vw, aw);
-        const Vec2 F = rhoA * w.length * (cm * b.nrm().dot(aw) * b.nrm() + (1.0 + ca_t) * b.e().dot(aw) * b.e());
+        const Vec2 F = physics::froudeKrylov<2>(rhoA, w.length, aw, b.e(), cm, 1.0 + ca_t);
         if (Q) Q->segment<4>(4 * i) += pointForce(b, w.s0, w.kappa, F);
         pw += F.dot(v);
       }

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "riser_sim/forces/buoyancy.h"
+#include "riser_sim/physics/morison_drag.h"
 
 namespace riser_sim {
 
@@ -19,11 +20,9 @@ Vec2 MorisonDrag::force(const Model& model, const BodyKinematics& b, int i, int 
     water_.at(b.point(w.s0, w.kappa), t, vw, aw);
     rel -= vw;
   }
-  const double vt = b.e().dot(rel), vn = b.nrm().dot(rel);
   const LineSection& sec = model.partSection(i, p);
-  const double k = -0.5 * water_.spec().density * sec.dragDiameter() * w.length;
   const double cd_t = orLine(sec.hydro.drag_tangential, cd_t_), cd_n = orLine(sec.hydro.drag_normal, cd_n_);
-  return k * (cd_t * std::abs(vt) * vt * b.e() + cd_n * std::abs(vn) * vn * b.nrm());
+  return physics::morisonDrag<2>(rel, b.e(), water_.spec().density, sec.dragDiameter(), w.length, cd_t, cd_n);
 }
 
 void MorisonDrag::addForces(const Model& model, const TermData*, const Kinematics& kin, double t, VecX& Q) const {
@@ -53,13 +52,10 @@ bool MorisonDrag::addStiffness(const Model& model, const TermData*, const Kinema
         water_.at(b.point(w.s0, w.kappa), t, vw, aw);
         rel -= vw;
       }
-      const Vec2 e = b.e(), n = b.nrm();
-      const double vt = e.dot(rel), vn = n.dot(rel);
       const LineSection& sec = model.partSection(i, p);
-      const double k = 0.5 * water_.spec().density * sec.dragDiameter() * w.length;  // -∂F/∂V' > 0
       const double cd_t = orLine(sec.hydro.drag_tangential, cd_t_), cd_n = orLine(sec.hydro.drag_normal, cd_n_);
       const Mat2 Cp =
-          (2.0 * k * cd_t * std::abs(vt)) * e * e.transpose() + (2.0 * k * cd_n * std::abs(vn)) * n * n.transpose();
+          physics::morisonDragDamping<2>(rel, b.e(), water_.spec().density, sec.dragDiameter(), w.length, cd_t, cd_n);
       addPointStiffness(b, w.s0, w.kappa, Vec2::Zero(), zero, Cp, S.K_diag[i], S.C_diag[i]);
     }
   return true;

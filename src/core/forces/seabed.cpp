@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "riser_sim/physics/seabed_contact.h"
+
 namespace riser_sim {
 
 void Seabed::point(const Model& model, const Kinematics& kin, int j, int& body, double& s0, Vec2& p, Vec2& v) const {
@@ -21,8 +23,8 @@ const double* Seabed::anchors(const TermData* data) {
 Vec2 Seabed::force(const double* anchor, int j, const Vec2& p, const Vec2& v, bool damping) const {
   const double pen = spec_.level - p.y();
   if (pen <= 0.0) return Vec2::Zero();
-  double fy = spec_.stiffness_normal * pen - (damping ? spec_.damping_normal * v.y() : 0.0);
-  fy = std::max(fy, 0.0);
+  const double fy =
+      physics::contactNormalForce(spec_.stiffness_normal, pen, damping ? spec_.damping_normal * v.y() : 0.0);
   double fx = damping ? -spec_.damping_tangential * v.x() : 0.0;
   if (anchor && std::isfinite(anchor[j])) fx -= spec_.stiffness_tangential * (p.x() - anchor[j]);
   return Vec2(fx, fy);
@@ -51,7 +53,7 @@ double Seabed::potentialEnergy(const Model& model, const TermData* data, const K
   double e = 0.0;
   forEachContact(model, kin, [&](int j, int, double, const Vec2& p, const Vec2&) {
     const double pen = spec_.level - p.y();
-    e += 0.5 * spec_.stiffness_normal * pen * pen;
+    e += physics::contactSpringEnergy(spec_.stiffness_normal, pen);
     if (anchor && std::isfinite(anchor[j])) e += 0.5 * spec_.stiffness_tangential * std::pow(p.x() - anchor[j], 2);
   });
   return e;

@@ -83,7 +83,7 @@ void checkStable(const Scene& scene, const InitialState3& init, bool held_end) {
   if (scene.bottom == BottomBoundary::kPinned)
     model->setBottom(BottomBoundary::kPinned, init.kin.back().end());
   else if (init.end_force.squaredNorm() > 0.0)
-    model->addTerm(std::make_unique<EndLoad3>(init.end_force));
+    model->addTerm(std::make_unique<EndLoad>(init.end_force));
   SpatialModalOptions o;
   o.hang_off = init.hang_off;
   const LinearStability s =
@@ -113,7 +113,7 @@ double restAcceleration(const Scene& scene, const Kinematics3& kin, const Vec3& 
   std::shared_ptr<SpatialModel> model = buildSpatialModel(stillWater(scene));
   if (scene.bottom == BottomBoundary::kPinned) model->setBottom(BottomBoundary::kPinned, kin.back().end());
   if (end_force.squaredNorm() > 0.0 && scene.bottom != BottomBoundary::kPinned)
-    model->addTerm(std::make_unique<EndLoad3>(end_force));
+    model->addTerm(std::make_unique<EndLoad>(end_force));
   const NaturalFormulation f(*model, scene.solver.stabilization);
   auto data = f.makeData();
   const int nq = f.positionSize();  // the velocities' offset (torsion adds θ to q)
@@ -217,7 +217,7 @@ InitialState3 straightStart(const Scene& scene, const StaticsPlane& plane, const
   init.plane_direction = Vec3(plane.u.x(), plane.u.y(), 0.0);
   init.kin = fromPlanar(straightLine(planar, top, scene.initial.angle), plane.R, plane.origin);
   if (scene.seabed.enabled) {
-    const Seabed3 bed(scene.seabed, Vec3(0.0, 0.0, -scene.gravity));
+    const Seabed bed(scene.seabed, Vec3(0.0, 0.0, -scene.gravity));
     const double sink = restingSinkAllowance(scene.seabed, planar.totalMass() * planar.gravity());
     for (size_t i = 0; i < init.kin.size(); ++i) {
       const Vec3 end = init.kin[i].end();

@@ -108,12 +108,12 @@ Relaxed3 relaxToRest(const Scene& scene, const Kinematics3& guess_in, const Vec3
   std::shared_ptr<SpatialModel> model = buildSpatialModel(dragless);
   const HydroSpec& hs = still.hydro;
   if (still.water.enabled && hs.enabled && (hs.drag_normal > 0.0 || hs.drag_tangential > 0.0))
-    model->addTerm(std::make_unique<MorisonDrag3>(Water3(still.water, model->gravity()), hs.drag_tangential,
-                                                  hs.drag_normal, true));
+    model->addTerm(
+        std::make_unique<MorisonDrag>(Water3(still.water, model->gravity()), hs.drag_tangential, hs.drag_normal, true));
   if (scene.bottom == BottomBoundary::kPinned)
     model->setBottom(BottomBoundary::kPinned, guess.back().end());
   else if (end_force.squaredNorm() > 0.0)
-    model->addTerm(std::make_unique<EndLoad3>(end_force));
+    model->addTerm(std::make_unique<EndLoad>(end_force));
   // The slowest mode of a hanging line is about its pendulum, ω1 ~ sqrt(g_wet / L) (g_wet: gravity less the
   // buoyancy of the whole line; the current and the pins stiffen it). α = 2 ω1 damps it critically and every
   // faster mode at α/2; a mode slower than the estimate would creep (at ω²/α), so ω1 errs low.

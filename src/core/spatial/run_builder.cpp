@@ -5,6 +5,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "riser_sim/force_registry.h"
 #include "riser_sim/spatial/force_term.h"
 #include "riser_sim/spatial/forces/attachments.h"
 #include "riser_sim/spatial/forces/axial_spring.h"
@@ -123,31 +124,8 @@ std::shared_ptr<SpatialModel> buildSpatialModel(const Scene& scene) {
   auto model = std::make_shared<SpatialModel>(lineSections(scene), scene.stiffeners, scene.options, scene.end_mass,
                                               Vec3(0.0, 0.0, -scene.gravity));
   model->setBottom(scene.bottom, scene.bottom_point3);
-  // Only the terms the scene needs (as the planar buildModel).
-  if (scene.gravity != 0.0) model->addTerm(std::make_unique<Gravity>());
-  if (scene.options.axial_flexibility) model->addTerm(std::make_unique<AxialSpring>());
-  if (scene.options.bending && model->line().hasBending()) model->addTerm(std::make_unique<BendingSpring>());
-  if (scene.water.enabled) {  // the sea's terms, as the planar buildModel builds them
-    const Water3 water(scene.water, model->gravity());
-    if (scene.gravity != 0.0) model->addTerm(std::make_unique<Buoyancy3>(water));
-    const HydroSpec& h = scene.hydro;
-    bool section_drag = false;
-    for (const LineSection& s : scene.sections)
-      section_drag = section_drag || s.hydro.drag_normal > 0.0 || s.hydro.drag_tangential > 0.0;
-    if (h.enabled && (h.drag_normal > 0.0 || h.drag_tangential > 0.0 || section_drag))
-      model->addTerm(std::make_unique<MorisonDrag3>(water, h.drag_tangential, h.drag_normal));
-    if (h.enabled && water.moving())
-      model->addTerm(std::make_unique<FroudeKrylov3>(water, h.inertia_coefficient, 1.0 + h.axial_added_mass));
-    const bool section_mass = sectionsAddMass(scene);
-    if (h.enabled && (h.inertia_coefficient != 1.0 || h.axial_added_mass != 0.0 || section_mass))
-      model->addTerm(
-          std::make_unique<AddedMassTerm>(water, h.inertia_coefficient - 1.0, h.axial_added_mass, section_mass));
-  }
-  if (scene.seabed.enabled) model->addTerm(std::make_unique<Seabed3>(scene.seabed, model->gravity()));
-  if (!scene.attachments.empty()) {  // as the planar buildModel
-    addAttachmentMasses(model->mutableLine(), scene.attachments);
-    model->addTerm(std::make_unique<Attachments3>(*model, scene.attachments, scene.water, scene.seabed));
-  }
+  // Only the terms the scene needs: the registry's rows (as the planar buildModel).
+  addSpatialTerms(scene, *model);
   if (scene.torsion.enabled) {
     const TorsionSpec& t = scene.torsion;
     model->setTorsion(TorsionProperties{t.stiffness, t.polar_inertia, t.damping, t.end_polar_inertia, t.free_top,
@@ -219,7 +197,7 @@ SpatialRun::SpatialRun(const Scene& scene, RunInputs3 inputs)
   }
   // The statics' end force stays on as a constant end load (hold), so the start is an exact equilibrium.
   if (scene.initial.type == InitialKind::kDisplaced && scene.initial.end_force == EndForceKind::kHold)
-    model_->addTerm(std::make_unique<EndLoad3>(initial_.end_force));
+    model_->addTerm(std::make_unique<EndLoad>(initial_.end_force));
   IntegratorOptions io;
   io.tolerance = scene.solver.tolerance;
   io.jacobian_interval = scene.solver.jacobian_interval;

@@ -1,7 +1,7 @@
 // Added mass in 3D (Morison inertia, paper eq. 13 with the axial part): on each submerged part, lumped at its
 // centroid as the planar HydroInertia, the force -(C_a,n P + C_a,t N) ρ_w A_w a_c dξ, C_a,n = C_M - 1 across
 // the rfe and C_a,t (hydrodynamics.axial_added_mass) along it. It enters the mass matrix (added_mass.h); the
-// Froude-Krylov part is FroudeKrylov3. Energy: ½ m_w v_cᵀ T v_c is kinetic; power() is ½ v_cᵀ T' v_c, the
+// Froude-Krylov part is FroudeKrylov. Energy: ½ m_w v_cᵀ T v_c is kinetic; power() is ½ v_cᵀ T' v_c, the
 // part of the force's power that T turning with e leaves over.
 #pragma once
 #include "riser_sim/line_sections.h"
@@ -11,11 +11,11 @@
 namespace riser_sim {
 namespace spatial {
 
-class AddedMassTerm : public SpatialForceTerm {
+class AddedMass : public SpatialForceTerm {
  public:
   // A line section's own C_M, C_a,t (line_sections.h) replace them on its parts; section_added_mass: some
   // section has added mass of its own.
-  AddedMassTerm(const Water3& water, double ca_normal, double ca_axial, bool section_added_mass = false)
+  AddedMass(const Water3& water, double ca_normal, double ca_axial, bool section_added_mass = false)
       : water_(water), ca_n_(ca_normal), ca_t_(ca_axial), section_added_mass_(section_added_mass) {}
   std::string name() const override { return "added_mass"; }
   void addForces(const SpatialModel&, const Kinematics3&, double, VecX&) const override {}

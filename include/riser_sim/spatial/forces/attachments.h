@@ -1,11 +1,11 @@
-// The attachments' forces on the 3D line (attachment.h, the law in attachment_load.h, as the planar
+// The attachments' forces on the 3D line (attachment.h, the law in physics/point_body.h, as the planar
 // Attachments): buoyancy, drag, Froude-Krylov and seabed contact (the scene's plane, level or sloped) at each
 // attachment's point, and its isotropic added mass m_a as added-mass moments of its rfe (added_mass.h).
 // Energy: U = Σ (ρ_w g W + ½ C_n δ²), kinetic ½ m_a |v|²; power() = Σ (F - F_conservative)·v.
 #pragma once
 #include <vector>
 
-#include "riser_sim/attachment_load.h"
+#include "riser_sim/physics/point_body.h"
 #include "riser_sim/spatial/force_term.h"
 #include "riser_sim/spatial/forces/seabed.h"
 #include "riser_sim/spatial/water.h"
@@ -13,11 +13,11 @@
 namespace riser_sim {
 namespace spatial {
 
-class Attachments3 : public SpatialForceTerm {
+class Attachments : public SpatialForceTerm {
  public:
   // Throws std::invalid_argument naming attachments[k] when one is off the line.
-  Attachments3(const SpatialModel& model, const std::vector<AttachmentSpec>& specs, const WaterSpec& water,
-               const SeabedSpec& seabed);
+  Attachments(const SpatialModel& model, const std::vector<AttachmentSpec>& specs, const WaterSpec& water,
+              const SeabedSpec& seabed);
   std::string name() const override { return "attachments"; }
   void addForces(const SpatialModel& model, const Kinematics3& kin, double t, VecX& Q) const override;
   double addForcesAndPower(const SpatialModel& model, const Kinematics3& kin, double t, VecX& Q) const override;
@@ -47,7 +47,7 @@ class Attachments3 : public SpatialForceTerm {
   AttachmentWater water_;
   Water3 sea_;
   SeabedSpec seabed_;
-  Seabed3 plane_;
+  Seabed plane_;
   bool has_added_mass_ = false;
 };
 

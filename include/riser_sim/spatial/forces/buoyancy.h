@@ -8,9 +8,9 @@
 namespace riser_sim {
 namespace spatial {
 
-class Buoyancy3 : public SpatialForceTerm {
+class Buoyancy : public SpatialForceTerm {
  public:
-  explicit Buoyancy3(const Water3& water) : water_(water) {}
+  explicit Buoyancy(const Water3& water) : water_(water) {}
   std::string name() const override { return "buoyancy"; }
   void addForces(const SpatialModel& model, const Kinematics3& kin, double t, VecX& Q) const override;
   double potentialEnergy(const SpatialModel& model, const Kinematics3& kin, double t) const override;

@@ -6,9 +6,9 @@
 namespace riser_sim {
 namespace spatial {
 
-class EndLoad3 : public SpatialForceTerm {
+class EndLoad : public SpatialForceTerm {
  public:
-  explicit EndLoad3(const Vec3& force) : force_(force) {}
+  explicit EndLoad(const Vec3& force) : force_(force) {}
   std::string name() const override { return "end_load"; }
   void addForces(const SpatialModel& model, const Kinematics3& kin, double t, VecX& Q) const override;
   double potentialEnergy(const SpatialModel& model, const Kinematics3& kin, double t) const override;

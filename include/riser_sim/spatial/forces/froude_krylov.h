@@ -1,6 +1,6 @@
 // Froude-Krylov force in 3D (the planar HydroInertia's applied part, paper eq. 13 with the axial part):
 // dF = [C_M ρ_w A_w a_w,η + (1 + C_a,t) ρ_w A_w a_w,ξ] dξ on each submerged part's centroid, a_w,ξ = (e·a_w) e
-// the water's acceleration along the rfe and a_w,η = a_w - a_w,ξ across it. The added mass is AddedMassTerm.
+// the water's acceleration along the rfe and a_w,η = a_w - a_w,ξ across it. The added mass is AddedMass.
 // Built only where the water moves (waves, an accelerating current).
 #pragma once
 #include "riser_sim/spatial/force_term.h"
@@ -9,10 +9,10 @@
 namespace riser_sim {
 namespace spatial {
 
-class FroudeKrylov3 : public SpatialForceTerm {
+class FroudeKrylov : public SpatialForceTerm {
  public:
   // cm_normal C_M, cm_axial 1 + C_a,t.
-  FroudeKrylov3(const Water3& water, double cm_normal, double cm_axial)
+  FroudeKrylov(const Water3& water, double cm_normal, double cm_axial)
       : water_(water), cm_n_(cm_normal), cm_t_(cm_axial) {}
   std::string name() const override { return "froude_krylov"; }
   void addForces(const SpatialModel& model, const Kinematics3& kin, double t, VecX& Q) const override;

@@ -9,11 +9,11 @@
 namespace riser_sim {
 namespace spatial {
 
-class MorisonDrag3 : public SpatialForceTerm {
+class MorisonDrag : public SpatialForceTerm {
  public:
   // line_at_rest: the force on the line held still in the water (V' = -V_water), whatever its velocity: the
   // static load, for the 3D relaxation (relaxation.h), where the drag's damping would only slow it down.
-  MorisonDrag3(const Water3& water, double drag_tangential, double drag_normal, bool line_at_rest = false)
+  MorisonDrag(const Water3& water, double drag_tangential, double drag_normal, bool line_at_rest = false)
       : water_(water), cd_t_(drag_tangential), cd_n_(drag_normal), at_rest_(line_at_rest) {}
   std::string name() const override { return "morison_drag"; }
   void addForces(const SpatialModel& model, const Kinematics3& kin, double t, VecX& Q) const override;

@@ -14,9 +14,9 @@
 namespace riser_sim {
 namespace spatial {
 
-class Seabed3 : public SpatialForceTerm {
+class Seabed : public SpatialForceTerm {
  public:
-  Seabed3(const SeabedSpec& spec, const Vec3& gravity);
+  Seabed(const SeabedSpec& spec, const Vec3& gravity);
   std::string name() const override { return "seabed"; }
   void addForces(const SpatialModel& model, const Kinematics3& kin, double t, VecX& Q) const override;
   double potentialEnergy(const SpatialModel& model, const Kinematics3& kin, double t) const override;

@@ -3,8 +3,7 @@
 namespace riser_sim {
 namespace spatial {
 
-void AddedMassTerm::addInertia(const SpatialModel& model, const Kinematics3& kin,
-                               std::vector<AddedMass3>& per_rfe) const {
+void AddedMass::addInertia(const SpatialModel& model, const Kinematics3& kin, std::vector<AddedMass3>& per_rfe) const {
   for (int i = 0; i < model.bodies(); ++i)
     for (int p = 0; p < 2; ++p) {
       const BodyKinematics3& b = kin[i];
@@ -18,7 +17,7 @@ void AddedMassTerm::addInertia(const SpatialModel& model, const Kinematics3& kin
 }
 
 // energy: Σ ½ m_w v_cᵀ T v_c; else the power ½ v_cᵀ T' v_c = (C_a,t - C_a,n) m_w (n'·v_c)(n·v_c).
-double AddedMassTerm::sweep(const SpatialModel& model, const Kinematics3& kin, bool energy) const {
+double AddedMass::sweep(const SpatialModel& model, const Kinematics3& kin, bool energy) const {
   double sum = 0.0;
   for (int i = 0; i < model.bodies(); ++i)
     for (int p = 0; p < 2; ++p) {
@@ -40,11 +39,11 @@ double AddedMassTerm::sweep(const SpatialModel& model, const Kinematics3& kin, b
   return sum;
 }
 
-double AddedMassTerm::power(const SpatialModel& model, const Kinematics3& kin, double) const {
+double AddedMass::power(const SpatialModel& model, const Kinematics3& kin, double) const {
   return sweep(model, kin, false);
 }
 
-double AddedMassTerm::kineticEnergy(const SpatialModel& model, const Kinematics3& kin) const {
+double AddedMass::kineticEnergy(const SpatialModel& model, const Kinematics3& kin) const {
   return sweep(model, kin, true);
 }
 

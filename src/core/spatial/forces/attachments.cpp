@@ -3,8 +3,8 @@
 namespace riser_sim {
 namespace spatial {
 
-Attachments3::Attachments3(const SpatialModel& model, const std::vector<AttachmentSpec>& specs, const WaterSpec& water,
-                           const SeabedSpec& seabed)
+Attachments::Attachments(const SpatialModel& model, const std::vector<AttachmentSpec>& specs, const WaterSpec& water,
+                         const SeabedSpec& seabed)
     : sea_(water.enabled ? water : WaterSpec(), model.gravity()), seabed_(seabed), plane_(seabed, model.gravity()) {
   const double g = model.gravity().norm();
   water_.enabled = water.enabled && g != 0.0;
@@ -20,7 +20,7 @@ Attachments3::Attachments3(const SpatialModel& model, const std::vector<Attachme
   }
 }
 
-AttachmentLoad<Vec3> Attachments3::load(const Body& a, const Kinematics3& kin, double t) const {
+AttachmentLoad<Vec3> Attachments::load(const Body& a, const Kinematics3& kin, double t) const {
   const BodyKinematics3& b = kin[a.at.rfe];
   const Vec3 p = b.point(a.at.s0, a.at.kappa), v = b.velocity(a.at.s0, a.at.kappa);
   Vec3 uw = Vec3::Zero(), aw = Vec3::Zero();
@@ -30,7 +30,7 @@ AttachmentLoad<Vec3> Attachments3::load(const Body& a, const Kinematics3& kin, d
                               contact ? &seabed_ : nullptr, plane_.penetration(p), plane_.normal());
 }
 
-double Attachments3::sweep(const Kinematics3& kin, double t, VecX* Q) const {
+double Attachments::sweep(const Kinematics3& kin, double t, VecX* Q) const {
   double pw = 0.0;
   for (const Body& a : bodies_) {
     const AttachmentLoad<Vec3> L = load(a, kin, t);
@@ -41,27 +41,24 @@ double Attachments3::sweep(const Kinematics3& kin, double t, VecX* Q) const {
   return pw;
 }
 
-void Attachments3::addForces(const SpatialModel&, const Kinematics3& kin, double t, VecX& Q) const {
-  sweep(kin, t, &Q);
-}
+void Attachments::addForces(const SpatialModel&, const Kinematics3& kin, double t, VecX& Q) const { sweep(kin, t, &Q); }
 
-double Attachments3::addForcesAndPower(const SpatialModel&, const Kinematics3& kin, double t, VecX& Q) const {
+double Attachments::addForcesAndPower(const SpatialModel&, const Kinematics3& kin, double t, VecX& Q) const {
   return sweep(kin, t, &Q);
 }
 
-double Attachments3::power(const SpatialModel&, const Kinematics3& kin, double t) const {
+double Attachments::power(const SpatialModel&, const Kinematics3& kin, double t) const {
   return sweep(kin, t, nullptr);
 }
 
-double Attachments3::potentialEnergy(const SpatialModel&, const Kinematics3& kin, double t) const {
+double Attachments::potentialEnergy(const SpatialModel&, const Kinematics3& kin, double t) const {
   double e = 0.0;
   for (const Body& a : bodies_) e += load(a, kin, t).energy;
   return e;
 }
 
 // Q = Jᵀ F, J = [I, κ e, s I]: K = Jᵀ Kp J - ∂Jᵀ/∂q F (the geometric part: Q_Δ = κ e·F, Q_e = s F).
-void Attachments3::addStiffness(const SpatialModel& model, const Kinematics3& kin, double t,
-                                SpatialStiffness& S) const {
+void Attachments::addStiffness(const SpatialModel& model, const Kinematics3& kin, double t, SpatialStiffness& S) const {
   for (const Body& a : bodies_) {
     const AttachmentLoad<Vec3> L = load(a, kin, t);
     const BodyKinematics3& b = kin[a.at.rfe];
@@ -85,7 +82,7 @@ void Attachments3::addStiffness(const SpatialModel& model, const Kinematics3& ki
   }
 }
 
-void Attachments3::addInertia(const SpatialModel&, const Kinematics3& kin, std::vector<AddedMass3>& per_rfe) const {
+void Attachments::addInertia(const SpatialModel&, const Kinematics3& kin, std::vector<AddedMass3>& per_rfe) const {
   for (const Body& a : bodies_) {
     if (!(a.spec.added_mass > 0.0)) continue;
     const double c = a.at.s0 + a.at.kappa * kin[a.at.rfe].delta;
@@ -94,7 +91,7 @@ void Attachments3::addInertia(const SpatialModel&, const Kinematics3& kin, std::
   }
 }
 
-double Attachments3::kineticEnergy(const SpatialModel&, const Kinematics3& kin) const {
+double Attachments::kineticEnergy(const SpatialModel&, const Kinematics3& kin) const {
   double T = 0.0;
   for (const Body& a : bodies_)
     if (a.spec.added_mass > 0.0)
@@ -102,12 +99,12 @@ double Attachments3::kineticEnergy(const SpatialModel&, const Kinematics3& kin) 
   return T;
 }
 
-Vec3 Attachments3::position(const Kinematics3& kin, int k) const {
+Vec3 Attachments::position(const Kinematics3& kin, int k) const {
   const Body& a = bodies_[k];
   return kin[a.at.rfe].point(a.at.s0, a.at.kappa);
 }
 
-Vec3 Attachments3::force(const SpatialModel& model, const Kinematics3& kin, double t, int k) const {
+Vec3 Attachments::force(const SpatialModel& model, const Kinematics3& kin, double t, int k) const {
   return load(bodies_[k], kin, t).total + bodies_[k].spec.mass * model.gravity();
 }
 

@@ -1,9 +1,11 @@
 #include "riser_sim/spatial/forces/froude_krylov.h"
 
+#include "riser_sim/physics/buoyancy.h"
+
 namespace riser_sim {
 namespace spatial {
 
-double FroudeKrylov3::sweep(const SpatialModel& model, const Kinematics3& kin, double t, VecX* Q) const {
+double FroudeKrylov::sweep(const SpatialModel& model, const Kinematics3& kin, double t, VecX* Q) const {
   if (!water_.moving()) return 0.0;
   double pw = 0.0;
   for (int i = 0; i < model.bodies(); ++i)
@@ -17,23 +19,22 @@ double FroudeKrylov3::sweep(const SpatialModel& model, const Kinematics3& kin, d
       const double rhoA = water_.spec().density * sec.props.externalArea();
       const double cm_n = orLine(sec.hydro.inertia_coefficient, cm_n_);
       const double cm_t = 1.0 + orLine(sec.hydro.axial_added_mass, cm_t_ - 1.0);
-      const Vec3 along = b.e.dot(aw) * b.e;
-      const Vec3 F = (rhoA * w.length) * (cm_n * (aw - along) + cm_t * along);
+      const Vec3 F = physics::froudeKrylov<3>(rhoA, w.length, aw, b.e, cm_n, cm_t);
       if (Q) addPointForce(b, w.s0, w.kappa, F, Q->data() + kDofPerBody3 * i);
       pw += F.dot(b.velocity(w.s0, w.kappa));
     }
   return pw;
 }
 
-void FroudeKrylov3::addForces(const SpatialModel& model, const Kinematics3& kin, double t, VecX& Q) const {
+void FroudeKrylov::addForces(const SpatialModel& model, const Kinematics3& kin, double t, VecX& Q) const {
   sweep(model, kin, t, &Q);
 }
 
-double FroudeKrylov3::addForcesAndPower(const SpatialModel& model, const Kinematics3& kin, double t, VecX& Q) const {
+double FroudeKrylov::addForcesAndPower(const SpatialModel& model, const Kinematics3& kin, double t, VecX& Q) const {
   return sweep(model, kin, t, &Q);
 }
 
-double FroudeKrylov3::power(const SpatialModel& model, const Kinematics3& kin, double t) const {
+double FroudeKrylov::power(const SpatialModel& model, const Kinematics3& kin, double t) const {
   return sweep(model, kin, t, nullptr);
 }
 

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "riser_sim/physics/seabed_contact.h"
+
 namespace riser_sim {
 namespace spatial {
 
@@ -12,7 +14,7 @@ Vec3 upOf(const Vec3& gravity) { return gravity.norm() > 0.0 ? Vec3(-gravity.nor
 
 }  // namespace
 
-Seabed3::Seabed3(const SeabedSpec& spec, const Vec3& gravity) : spec_(spec), n_(upOf(gravity)), offset_(spec.level) {
+Seabed::Seabed(const SeabedSpec& spec, const Vec3& gravity) : spec_(spec), n_(upOf(gravity)), offset_(spec.level) {
   if (spec.slope == 0.0) return;  // level: n = up, the arithmetic of the level plane
   const Vec3 up = n_;
   // The heading's horizontal direction (normal to up; with gravity along -z, (cos, sin, 0)).
@@ -23,7 +25,7 @@ Seabed3::Seabed3(const SeabedSpec& spec, const Vec3& gravity) : spec_(spec), n_(
   offset_ = spec.level * n_.dot(up);
 }
 
-Seabed3::Contact Seabed3::contact(const SpatialModel& model, const Kinematics3& kin, int j) const {
+Seabed::Contact Seabed::contact(const SpatialModel& model, const Kinematics3& kin, int j) const {
   const int n1 = model.bodies();
   Contact c;
   c.body = j < n1 ? j : n1 - 1;
@@ -34,27 +36,23 @@ Seabed3::Contact Seabed3::contact(const SpatialModel& model, const Kinematics3& 
   return c;
 }
 
-Vec3 Seabed3::force(const Contact& c, const Vec3& e, bool conservative) const {
+Vec3 Seabed::force(const Contact& c, const Vec3& e, bool conservative) const {
   const double pen = penetration(c.p);
   if (conservative) return (spec_.stiffness_normal * pen) * n_;
   const double vn = n_.dot(c.v);
-  const double fn = std::max(spec_.stiffness_normal * pen - spec_.damping_normal * vn, 0.0);
+  const double fn = physics::contactNormalForce(spec_.stiffness_normal, pen, spec_.damping_normal * vn);
   const Vec3 vh = c.v - vn * n_;
   Vec3 F = fn * n_ - spec_.damping_tangential * vh;
   if (fn > 0.0 && (spec_.friction_axial > 0.0 || spec_.friction_lateral > 0.0)) {
-    Vec3 a = e - n_.dot(e) * n_;
-    const double an = a.norm();
-    a = an > 1e-12 ? Vec3(a / an) : Vec3(n_.unitOrthogonal());  // an upright rfe: any direction
-    const Vec3 l = n_.cross(a);
-    const double va = vh.dot(a), vl = vh.dot(l);
-    const double vs = spec_.friction_velocity;
-    F -= (fn / std::sqrt(va * va + vl * vl + vs * vs)) *
-         (spec_.friction_axial * va * a + spec_.friction_lateral * vl * l);
+    Vec3 a, l;
+    physics::frictionAxes(e, n_, a, l);
+    F += physics::smoothedFriction<3>(fn, vh, a, l, spec_.friction_axial, spec_.friction_lateral,
+                                      spec_.friction_velocity);
   }
   return F;
 }
 
-double Seabed3::sweep(const SpatialModel& model, const Kinematics3& kin, VecX* Q) const {
+double Seabed::sweep(const SpatialModel& model, const Kinematics3& kin, VecX* Q) const {
   double pw = 0.0;
   for (int j = 0; j <= model.bodies(); ++j) {
     const Contact c = contact(model, kin, j);
@@ -66,28 +64,28 @@ double Seabed3::sweep(const SpatialModel& model, const Kinematics3& kin, VecX* Q
   return pw;
 }
 
-void Seabed3::addForces(const SpatialModel& model, const Kinematics3& kin, double, VecX& Q) const {
+void Seabed::addForces(const SpatialModel& model, const Kinematics3& kin, double, VecX& Q) const {
   sweep(model, kin, &Q);
 }
 
-double Seabed3::addForcesAndPower(const SpatialModel& model, const Kinematics3& kin, double, VecX& Q) const {
+double Seabed::addForcesAndPower(const SpatialModel& model, const Kinematics3& kin, double, VecX& Q) const {
   return sweep(model, kin, &Q);
 }
 
-double Seabed3::power(const SpatialModel& model, const Kinematics3& kin, double) const {
+double Seabed::power(const SpatialModel& model, const Kinematics3& kin, double) const {
   return sweep(model, kin, nullptr);
 }
 
-double Seabed3::potentialEnergy(const SpatialModel& model, const Kinematics3& kin, double) const {
+double Seabed::potentialEnergy(const SpatialModel& model, const Kinematics3& kin, double) const {
   double v = 0.0;
   for (int j = 0; j <= model.bodies(); ++j) {
     const double pen = penetration(contact(model, kin, j).p);
-    if (pen > 0.0) v += 0.5 * spec_.stiffness_normal * pen * pen;
+    if (pen > 0.0) v += physics::contactSpringEnergy(spec_.stiffness_normal, pen);
   }
   return v;
 }
 
-int Seabed3::contacts(const SpatialModel& model, const Kinematics3& kin) const {
+int Seabed::contacts(const SpatialModel& model, const Kinematics3& kin) const {
   int n = 0;
   for (int j = 0; j <= model.bodies(); ++j) n += penetration(contact(model, kin, j).p) > 0.0;
   return n;
@@ -97,7 +95,7 @@ int Seabed3::contacts(const SpatialModel& model, const Kinematics3& kin) const {
 // g = (μ_a v_a a + μ_l v_l l)/s, s = sqrt(v_a² + v_l² + v_s²), F_f = -F_n g gives -∂F_f/∂v_h =
 // F_n (D - D v_p v_pᵀ / s²)/s on the plane (D = μ_a a aᵀ + μ_l l lᵀ, v_p = v_h), and through F_n = C_n p - c_n v_n
 // the terms -c_n g nᵀ (rates) and -C_n g nᵀ (position). The turning of a with e is left out.
-void Seabed3::addStiffness(const SpatialModel& model, const Kinematics3& kin, double, SpatialStiffness& S) const {
+void Seabed::addStiffness(const SpatialModel& model, const Kinematics3& kin, double, SpatialStiffness& S) const {
   const Mat3 UU = n_ * n_.transpose(), P = Mat3::Identity() - UU;
   const bool friction = spec_.friction_axial > 0.0 || spec_.friction_lateral > 0.0;
   for (int j = 0; j <= model.bodies(); ++j) {
@@ -105,15 +103,14 @@ void Seabed3::addStiffness(const SpatialModel& model, const Kinematics3& kin, do
     const double pen = penetration(c.p);
     if (!(pen > 0.0)) continue;
     const double vn = n_.dot(c.v);
-    const double fn = std::max(spec_.stiffness_normal * pen - spec_.damping_normal * vn, 0.0);
+    const double fn = physics::contactNormalForce(spec_.stiffness_normal, pen, spec_.damping_normal * vn);
     Mat3 K = spec_.stiffness_normal * UU;
     Mat3 C = spec_.damping_normal * UU + spec_.damping_tangential * P;
     if (friction && fn > 0.0) {
       const Vec3& e = kin[c.body].e;
-      Vec3 a = e - n_.dot(e) * n_;
-      const double an = a.norm();
-      a = an > 1e-12 ? Vec3(a / an) : Vec3(n_.unitOrthogonal());
-      const Vec3 l = n_.cross(a), vh = c.v - vn * n_;
+      Vec3 a, l;
+      physics::frictionAxes(e, n_, a, l);
+      const Vec3 vh = c.v - vn * n_;
       const double vs = spec_.friction_velocity, s2 = vh.squaredNorm() + vs * vs, s = std::sqrt(s2);
       const Mat3 D = spec_.friction_axial * a * a.transpose() + spec_.friction_lateral * l * l.transpose();
       const Vec3 Dv = D * vh, g = Dv / s;

@@ -1,10 +1,11 @@
-// The force law of one attachment (attachment.h), for either engine (V = Vec2 planar, Vec3 in 3D): at its
-// centre p moving at v, with the height h of p above the still surface, the water's velocity u_w and
-// acceleration a_w at p and the seabed's penetration δ = n·(plane - p) along its unit normal n:
+// The force law of one point body, an attachment (attachment.h), for either engine (V = Vec2 planar, Vec3 in 3D): at
+// its centre p moving at v, with the height h of p above the still surface, the water's velocity u_w and acceleration
+// a_w at p and the seabed's penetration δ = n·(plane - p) along its unit normal n:
 // - buoyancy ρ_w g V_s(h) up, V_s of a sphere of the attachment's volume (SubmergedSphere), U = ρ_w g W;
 // - drag f ½ ρ_w C_d A |u| u, u = u_w - v, f = V_s / V the wetted fraction (1 below the surface without volume);
 // - Froude-Krylov and the water's acceleration on the added mass, f (ρ_w V + m_a) a_w;
-// - seabed contact (per point, as the line's contact points): F_n = max(C_n δ - c_n n·v, 0) n, U = ½ C_n δ²,
+// - seabed contact (per point, as the line's contact points, physics/seabed_contact.h): F_n = max(C_n δ - c_n n·v, 0)
+// n, U = ½ C_n δ²,
 //   and the tangential damper -c_t (v - (n·v) n).
 // The weight is the Gravity term's (the mass is a part of its rfe); the added mass m_a is in the mass matrix.
 #pragma once
@@ -13,6 +14,7 @@
 
 #include "riser_sim/attachment.h"
 #include "riser_sim/forces/seabed.h"
+#include "riser_sim/physics/seabed_contact.h"
 
 namespace riser_sim {
 
@@ -53,9 +55,9 @@ AttachmentLoad<V> attachmentLoad(const AttachmentSpec& a, double radius, const A
   }
   if (seabed && penetration > 0.0) {
     const double vn = normal.dot(v);
-    const double fn = std::max(seabed->stiffness_normal * penetration - seabed->damping_normal * vn, 0.0);
+    const double fn = physics::contactNormalForce(seabed->stiffness_normal, penetration, seabed->damping_normal * vn);
     L.conservative += (seabed->stiffness_normal * penetration) * normal;
-    L.energy += 0.5 * seabed->stiffness_normal * penetration * penetration;
+    L.energy += physics::contactSpringEnergy(seabed->stiffness_normal, penetration);
     L.total += fn * normal - seabed->damping_tangential * (v - vn * normal) -
                (seabed->stiffness_normal * penetration) * normal;
     if (fn > 0.0) L.k_normal = seabed->stiffness_normal, L.c_normal = seabed->damping_normal;

@@ -1,0 +1,30 @@
+// The force terms a scene switches on, for both engines: one table whose rows name a term, say whether the
+// scene wants it and add it to the planar Model and to the spatial::SpatialModel. buildModel (scene.h) and
+// buildSpatialModel (spatial/run_builder.h) walk it in order, so both engines hold their terms in the table's order.
+#pragma once
+#include <string>
+#include <vector>
+
+namespace riser_sim {
+
+struct Scene;
+class Model;
+namespace spatial {
+class SpatialModel;
+}
+
+struct ForceTermRow {
+  const char* name;                                  // the term's name() (planar and spatial alike)
+  bool (*wanted)(const Scene& scene);                // whether the scene switches the term on
+  void (*planar)(const Scene& scene, Model& model);  // adds the planar term(s); null: none in that engine
+  void (*spatial)(const Scene& scene, spatial::SpatialModel& model);  // adds the 3D term(s); null: none
+};
+
+// The rows in the order the terms enter the models.
+const std::vector<ForceTermRow>& forceTermRegistry();
+
+// Adds every wanted row's terms to the model.
+void addPlanarTerms(const Scene& scene, Model& model);
+void addSpatialTerms(const Scene& scene, spatial::SpatialModel& model);
+
+}  // namespace riser_sim
