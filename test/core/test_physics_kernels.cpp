@@ -21,6 +21,7 @@ namespace riser_sim {
 namespace {
 
 using physics::VecD;
+using Vec3 = Eigen::Vector3d;
 
 constexpr double kRho = 1025.0, kD = 0.5, kL = 2.0, kCn = 1.2, kCt = 0.1;
 
@@ -68,10 +69,10 @@ TEST(PhysicsKernels, MorisonDragDampingIsTheSlopeOfTheForce) {
 
 TEST(PhysicsKernels, BuoyancyIsArchimedes) {
   const double g = 9.81, A = M_PI / 4.0 * kD * kD;
-  // ρ g V of the displaced water, V = π/4 D² l = 0.3926990817 m^3: 3948.6714 N.
+  // ρ g V of the displaced water, V = π/4 D² l = 0.3926990817 m^3: 1025·9.81·0.3926990817 = 3948.6874 N.
   const double f = physics::liftPerLength(kRho, A, g);
   const Vec3 F = physics::buoyancyForce<3>(f, kL, Vec3(0.0, 0.0, 1.0));
-  EXPECT_NEAR(F.z(), 3948.6714, 1e-4);
+  EXPECT_NEAR(F.z(), 3948.6874, 1e-4);
   EXPECT_EQ(F.x(), 0.0);
   EXPECT_EQ(physics::buoyancyForce<2>(f, kL, Vec2(0.0, 1.0)).y(), F.z());
   // The lift is the potential's slope: -dV/dh = ρ g A l (V linear in h: exact up to rounding).
