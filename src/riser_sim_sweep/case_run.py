@@ -60,6 +60,7 @@ def run_case(task):
         with open(scene, "w") as f:
             f.write(task["scene_text"])
         csv_path = os.path.join(tmp, "series.csv")
+        range_path = os.path.join(tmp, "range.csv")
         cmd = [_cli_path(task["cli"]), "--scene", scene] + list(task["set_args"])
         if task.get("check"):
             cmd += ["--duration", "0", "--summary", "--quiet"] + (["--csv", csv_path] if keep.needs_csv() else [])
@@ -67,7 +68,7 @@ def run_case(task):
         else:
             if task.get("duration") is not None:
                 cmd += ["--duration", repr(float(task["duration"]))]
-            cmd += keep.cli_args(csv_path)
+            cmd += keep.cli_args(csv_path, range_path)
         out_path, err_path = os.path.join(tmp, "stdout"), os.path.join(tmp, "stderr")
         t0 = time.monotonic()
         with open(out_path, "wb") as out, open(err_path, "wb") as err:
@@ -104,17 +105,26 @@ def run_case(task):
                 status = "failed"  # the initial statics: no run, no summary
             reason = "" if status in ("ok", "warning") else (summary.get("reason") or _last_error(stderr)
                                                               or "exit code %d" % rc)
+        range_text = None
+        if os.path.isfile(range_path):
+            with open(range_path) as f:
+                range_text = f.read()
         values, series = ({}, None)
         if status in ("ok", "warning", "diverged") and not task.get("check"):
             try:
                 values, series = keep.extract(summary, csv_text)
             except Exception as e:  # noqa: a CSV the CLI cut short
                 status, reason = "failed", "reading the time series: %s" % e
+            try:
+                values.update(keep.extract_range(range_text))
+            except Exception as e:  # noqa
+                status, reason = "failed", "reading the range graph: %s" % e
         header = csv_text.split("\n", 1)[0].strip().split(",") if csv_text else []
         return {
             "case_id": task["case_id"], "status": status, "reason": reason, "warning": summary.get("warning", ""),
             "exit_code": rc, "wall_s": wall, "cpu_s": usage.ru_utime + usage.ru_stime,
             "run_wall_s": summary.get("wall_s"), "rtf": summary.get("rtf"), "values": values, "series": series,
+            "range_graph": range_text,
             "summary": summary, "csv_header": header, "stderr_tail": stderr[-2000:], "command": cmd,
             "worker": "%s:%d" % (socket.gethostname(), os.getpid()),
         }

@@ -1,5 +1,5 @@
 """The results folder: sweep.json (what the sweep is: its fingerprint), results.csv (one row per finished
-case, appended and flushed as each finishes) and cases/<case_id>.json (+ .csv with the kept series).
+case, appended and flushed as each finishes) and cases/<case_id>.json (+ .csv with the kept series, _range.csv with the range graph).
 
 A row is written in one write() after its case file, with SIGINT held off (main.py), so the table is whole
 after Ctrl-C; a torn last line (the process killed while writing) is cut on the next open. A folder whose
@@ -95,7 +95,7 @@ class ResultsFolder:
         if case.case_id in self.done:
             return False
         record = {"case": case.index, "case_id": case.case_id, "overrides": case.overrides}
-        record.update({k: v for k, v in result.items() if k != "series"})
+        record.update({k: v for k, v in result.items() if k not in ("series", "range_graph")})
         tmp = os.path.join(self.cases_dir, case.case_id + ".json.tmp")
         with open(tmp, "w") as f:
             json.dump(record, f, indent=1, sort_keys=True, default=str)
@@ -103,6 +103,9 @@ class ResultsFolder:
         if result.get("series"):
             with open(os.path.join(self.cases_dir, case.case_id + ".csv"), "w") as f:
                 f.write(result["series"])
+        if result.get("range_graph"):
+            with open(os.path.join(self.cases_dir, case.case_id + "_range.csv"), "w") as f:
+                f.write(result["range_graph"])
         row = {"case": case.index, "case_id": case.case_id}
         row.update({k: _cell(case.overrides.get(k)) for k in self.override_cols})
         for k in FIXED_TAIL:
