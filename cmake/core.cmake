@@ -42,6 +42,7 @@ add_library(riser_sim_core
   src/core/modes_report.cpp
   src/core/linear_stability.cpp
   src/core/scene.cpp
+  src/core/initial_velocity.cpp
   src/core/run_builder.cpp
   src/core/line_run.cpp
   src/core/range_graph.cpp

@@ -66,6 +66,12 @@ struct InitialSpec {
   // displaced: "release" drops the statics' horizontal end force at t = 0 (the end is let go);
   // "hold" keeps it as a constant end load (EndLoad), so the initial state is an exact equilibrium.
   EndForceKind end_force = EndForceKind::kRelease;
+  // initial.velocity (initial_velocity.h): a rigid motion of the whole line given to the start, after the
+  // statics or the straight line: a rotation about the vertical through the top (+z, counter-clockwise seen
+  // from above) and a uniform translation. has_velocity false: the start is at rest (no velocity code runs).
+  bool has_velocity = false;
+  double rotation = 0.0;                                  // initial.velocity.rotation [rad/s]
+  Eigen::Vector3d translation = Eigen::Vector3d::Zero();  // initial.velocity.translation [m/s], z up
 };
 
 // line.torsion (space: spatial only): off when absent (the spin about the line's axis is then no degree of freedom).

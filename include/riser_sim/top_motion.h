@@ -31,6 +31,17 @@ class FixedMotion : public TopMotion {
   Vec2 p_;
 };
 
+// p(t) = start + v t: a holder moving at a constant velocity (a fixed top carried along by initial.velocity).
+class ConstantVelocityMotion : public TopMotion {
+ public:
+  ConstantVelocityMotion(const Vec2& start, const Vec2& v) : p_(start), v_(v) {}
+  std::string name() const override { return "constant_velocity"; }
+  PointMotion at(double t) const override { return PointMotion{p_ + v_ * t, v_, Vec2::Zero()}; }
+
+ private:
+  Vec2 p_, v_;
+};
+
 // p(t) = center + amplitude * cos(2π t / period + phase), per axis (paper eq. 27: x_0 = 10 cos(2πt/27)).
 class SinusoidMotion : public TopMotion {
  public:

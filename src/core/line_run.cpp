@@ -46,6 +46,21 @@ Vec3 inSpace(const Vec2& p) { return Vec3(p.x(), 0.0, p.y()); }
 // 3D -> the planar scene's plane (world y dropped).
 Vec2 inPlane(const Vec3& p) { return Vec2(p.x(), p.z()); }
 
+// initial.velocity with holders driven from outside: their feeds start at rest, so a translation (live top) or any
+// rigid motion (live bottom) would contradict them (initial_velocity.h).
+void checkLiveHolders(const Scene& scene, const LineRunInputs& inputs) {
+  const InitialSpec& v = scene.initial;
+  if (!v.has_velocity) return;
+  if (inputs.top && !v.translation.isZero())
+    throw std::invalid_argument(
+        "initial.velocity.translation: the top is driven from outside (its feed starts at rest at t = 0); a "
+        "translation would pull the line off the hang-off");
+  if (inputs.bottom && (!v.translation.isZero() || v.rotation != 0.0))
+    throw std::invalid_argument(
+        "initial.velocity: the pinned bottom is driven from outside (its feed starts at rest at t = 0); a rigid "
+        "motion of the line would pull it off the anchor");
+}
+
 // Every per-rfe and per-joint output sized for nb rfes.
 void sizeOutputs(RunOutputs& o, int nb, bool planar) {
   o.springs.assign(nb, Vec3::Zero());
@@ -153,6 +168,7 @@ class PlanarLineRun : public LineRun {
   // The run of the scene; a live top: an ExternalMotion from its start, the scene's top fixed there.
   Run build(const Scene& scene, const LineRunInputs& inputs) {
     if (inputs.bottom) throw std::invalid_argument("bottom.motion: a bottom driven from outside needs space: spatial");
+    checkLiveHolders(scene, inputs);
     held_ = scene;
     RunInputs in;
     in.statics_progress = inputs.statics_progress;
@@ -294,6 +310,7 @@ class SpatialLineRun : public LineRun {
   // The run of the scene; live holders: ExternalMotion3s from their starts (with the attitude: flex joints
   // turn with the vessel and the ROV), the scene's top fixed at its start.
   spatial::SpatialRun build(const Scene& scene, const LineRunInputs& inputs) {
+    checkLiveHolders(scene, inputs);
     held_ = scene;
     spatial::RunInputs3 in;
     in.statics_progress = inputs.statics_progress;

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "riser_sim/forces/end_load.h"
+#include "riser_sim/initial_velocity.h"
 
 namespace riser_sim {
 
@@ -54,7 +55,7 @@ Run buildRun(const Scene& scene, RunInputs inputs) {
         "not the planar builder");
   Run run;
   run.model = buildModel(scene);
-  if (!inputs.motion) inputs.motion = buildTopMotion(scene.top);
+  if (!inputs.motion) inputs.motion = runTopMotion(scene);  // a fixed top carried by initial.velocity moves
   const Vec2 top = inputs.top ? *inputs.top : inputs.motion->at(0.0).p;
   run.initial = solveInitialState(scene, *run.model, top, false, inputs.statics_progress);
   // The statics' end force stays on as a constant end load, so the start is an exact equilibrium.
@@ -62,7 +63,12 @@ Run buildRun(const Scene& scene, RunInputs inputs) {
     run.model->addTerm(std::make_unique<EndLoad>(run.initial.end_force));
   run.sim = std::make_unique<Simulator>(run.model, std::move(inputs.motion), scene.solver);
   // A pinned bottom that the statics did not place is held where the initial state puts it.
-  run.sim->setInitialState(run.initial.kin, 0.0);
+  // initial.velocity: the rigid motion's velocities on the start (run.initial.kin stays at rest, for the modes).
+  run.sim->setInitialState(withInitialVelocity(scene.initial, run.initial.kin), 0.0);
+  if (scene.initial.has_velocity) {
+    run.initial.equilibrium = false;
+    run.initial.about += initialVelocityAbout(scene.initial);
+  }
   // Values within the loader's limits can still combine into forces beyond double range (an extreme
   // sinusoid, stabilisation or drag): such a run never starts, so nothing non-finite is published.
   if (!run.sim->state().allFinite() || !allFinite(run.sim->outputs()))

@@ -31,8 +31,6 @@ void parseAttachments(const Section& root, Scene& s) {
   const YAML::Node list = root.at("attachments");
   const std::string path = root.key("attachments");
   if (!list.IsSequence()) throw SceneError(path, "expected a list of attachments (maps), got " + describe(list));
-  double lift = 0.0, largest = -INFINITY;
-  std::string largest_key;
   for (size_t k = 0; k < list.size(); ++k) {
     const std::string key = path + "[" + std::to_string(k) + "]";
     const Section a(list[k], key,
@@ -68,13 +66,22 @@ void parseAttachments(const Section& root, Scene& s) {
       if (a.has(k2) && a.number(k2) > 0.0 && !s.water.enabled)
         throw SceneError(a.key(k2), "needs environment.water (the attachment must be in water)");
     if (spec.seabed_contact && !s.seabed.enabled) throw SceneError(a.key("seabed_contact"), "needs a seabed section");
-    const double net = (s.water.density * spec.volume - spec.mass) * s.gravity;
-    if (s.water.enabled) lift += s.water.density * spec.volume * s.gravity;  // their weights: wetWeight
-    if (net > largest) largest = net, largest_key = key;
     s.attachments.push_back(spec);
   }
+}
+
+void checkAttachmentsFloat(const Scene& s) {
   // A free end: the buoys must not lift the whole line (statics would have nothing to hang it from).
-  if (s.bottom == BottomBoundary::kPinned || !s.water.enabled || !(s.gravity > 0.0) || !(lift > 0.0)) return;
+  if (s.attachments.empty() || s.bottom == BottomBoundary::kPinned || !s.water.enabled || !(s.gravity > 0.0)) return;
+  double lift = 0.0, largest = -INFINITY;
+  size_t largest_k = 0;
+  for (size_t k = 0; k < s.attachments.size(); ++k) {
+    const AttachmentSpec& a = s.attachments[k];
+    lift += s.water.density * a.volume * s.gravity;  // their weights: wetWeight
+    const double net = (s.water.density * a.volume - a.mass) * s.gravity;
+    if (net > largest) largest = net, largest_k = k;
+  }
+  if (!(lift > 0.0)) return;
   double wet = 0.0;
   try {
     wet = wetWeight(s);
@@ -82,11 +89,13 @@ void parseAttachments(const Section& root, Scene& s) {
     return;  // a line the later checks refuse, naming its key
   }
   if (lift >= wet)
-    throw SceneError(largest_key + ".volume", "the attachments' buoyancy " + formatNumber(lift) +
-                                                  " N is at least the weight in water of the line with them " +
-                                                  formatNumber(wet) +
-                                                  " N: the buoys would float the whole line to "
-                                                  "the surface");
+    throw SceneError("attachments[" + std::to_string(largest_k) + "].volume",
+                     "the attachments' buoyancy " + formatNumber(lift) +
+                         " N is at least the weight in water of the line with them " + formatNumber(wet) +
+                         " N (its buoyant sections' lift included): the buoys ('" + s.attachments[largest_k].name +
+                         "' lifts most, net " + formatNumber(largest) +
+                         " N) would float the whole line to the surface with the top held; the statics find no "
+                         "hanging shape");
 }
 
 }  // namespace scene_detail

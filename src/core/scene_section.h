@@ -205,6 +205,10 @@ void parseSeabed(const Section& root, Scene& s);
 void parseInternalFluid(const Section& root, Scene& s);
 // The attachments (scene_attachments.cpp): after the line, the sea and the seabed.
 void parseAttachments(const Section& root, Scene& s);
+// Throws SceneError naming the attachment that lifts most (attachments[k].volume) when, with a free end, the
+// attachments' buoyancy is at least the weight in water of the line with them (its buoyant sections included:
+// after finishLineSections).
+void checkAttachmentsFloat(const Scene& s);
 
 // line.sections and line.bend_stiffener (scene_line_sections.cpp): read at the end of the line block;
 // finishLineSections smears buoyancy modules once the hydrodynamics block is read.

@@ -13,6 +13,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "riser_sim/initial_velocity.h"
 #include "riser_sim/integrator.h"
 #include "riser_sim/scene_check.h"
 #include "riser_sim/spatial/run_builder.h"
@@ -195,8 +196,8 @@ void parseLine(const Section& root, Scene& s) {
 
 void parseInitial(const Section& root, Scene& s) {
   const bool planar = s.space == SpaceKind::kPlanar;
-  const Section initial =
-      root.section("initial", {"type", "end_dx", "end_offset", "angle", "heading", "tolerance", "end_force"});
+  const Section initial = root.section(
+      "initial", {"type", "end_dx", "end_offset", "angle", "heading", "tolerance", "end_force", "velocity"});
   s.initial = InitialSpec();
   s.initial.type = initial.choice("type", InitialKind::kHanging);
   const bool displaced = s.initial.type == InitialKind::kDisplaced;
@@ -227,6 +228,12 @@ void parseInitial(const Section& root, Scene& s) {
   s.initial.tolerance = initial.number("tolerance", 1e-9);
   requirePositive(initial.key("tolerance"), s.initial.tolerance);
   s.initial.end_force = initial.choice("end_force", EndForceKind::kRelease);
+  if (initial.has("velocity")) {  // initial_velocity.h; checked against the holders in checkCombination
+    const Section velocity = initial.section("velocity", {"rotation", "translation"});
+    s.initial.has_velocity = true;
+    s.initial.rotation = velocity.number("rotation", 0.0);
+    s.initial.translation = velocity.vec3("translation", planar, Eigen::Vector3d::Zero());
+  }
 }
 
 void parseSolver(const Section& root, Scene& s) {
@@ -299,6 +306,7 @@ void checkCombination(const Scene& s) {
   if (s.initial.type == InitialKind::kDisplaced && !(std::abs(s.initial.end_dx) < s.length))
     throw SceneError("initial.end_dx", "must be smaller than line.length (" + formatNumber(s.length) +
                                            " m) in magnitude, got " + formatNumber(s.initial.end_dx));
+  checkInitialVelocity(s);
   // The solver values and what the scene's engine supports: the core's one check (the node calls it too).
   if (const auto error = checkScene(s)) throw SceneError(error->key, error->message);
   if (pinned && !s.options.axial_flexibility) {
@@ -344,6 +352,7 @@ Scene parseScene(const YAML::Node& node) {
   s.space = root.choice("space", SpaceKind::kPlanar);  // first: it decides what a vector may be
   for (const auto& entry : kSections) entry.parse(root, s);
   finishLineSections(s);
+  checkAttachmentsFloat(s);  // with the buoyancy modules smeared
   checkCombination(s);
   return s;
 }

@@ -454,3 +454,37 @@ attachments: [{arc_length: 90.0, mass: 10.0}, {name: big, arc_length: 100.0, mas
     EXPECT_NE(std::string(e.what()).find("float the whole line"), std::string::npos) << e.what();
   }
 }
+
+// The float check counts the line's buoyant sections (their modules smeared): a 100 m free-ended line, its lower half
+// carrying modules (0.05 m³ and 10 kg every 2 m: net -2.8 kg/m in water against the pipe's +17.8 kg/m), weighs
+// 7.36 kN in water, 17.5 kN without the modules; a 1 m³, 100 kg buoy lifts 10.06 kN against 7.36 + 0.98 kN:
+// refused, naming it. Lighter (0.5 m³, lifting 5.03 kN): accepted.
+TEST(Attachments, BuoyFloatingASectionedLineIsRefused) {
+  const auto scene = [](double volume) {
+    return R"(
+line:
+  length: 100.0
+  mass_per_length: 50.0
+  outer_diameter: 0.2
+  EA: 1.0e7
+  EI: 0.0
+  sections:
+    - {length: 50.0, elements: 5}
+    - length: 50.0
+      elements: 5
+      buoyancy_modules: {outer_diameter: 0.5, length: 0.5, pitch: 2.0, mass: 10.0, volume: 0.05, drag_normal: 1.0}
+environment: {water: {density: 1025.0, surface: 10.0}}
+hydrodynamics: {drag_normal: 1.0}
+attachments: [{name: float, arc_length: 100.0, mass: 100.0, volume: )" +
+           std::to_string(volume) + "}]\n";
+  };
+  try {
+    loadSceneText(scene(1.0), "test");
+    ADD_FAILURE() << "a buoy floating the sectioned line was accepted";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(e.key(), "attachments[0].volume");
+    EXPECT_NE(std::string(e.what()).find("'float'"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("float the whole line"), std::string::npos) << e.what();
+  }
+  EXPECT_NO_THROW(loadSceneText(scene(0.5), "test"));
+}

@@ -44,6 +44,16 @@ class FixedMotion3 : public TopMotion3 {
   Vec3 p_;
 };
 
+// p(t) = start + v t (ConstantVelocityMotion in 3D).
+class ConstantVelocityMotion3 : public TopMotion3 {
+ public:
+  ConstantVelocityMotion3(const Vec3& start, const Vec3& v) : p_(start), v_(v) {}
+  PointMotion3 at(double t) const override { return PointMotion3{p_ + v_ * t, v_, Vec3::Zero()}; }
+
+ private:
+  Vec3 p_, v_;
+};
+
 // A 2D top motion mapped into 3D: (x, y)_2D -> R (x, 0, y) + offset (see fromPlanar).
 class PlanarMotion3 : public TopMotion3 {
  public:

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "riser_sim/force_registry.h"
+#include "riser_sim/initial_velocity.h"
 #include "riser_sim/spatial/force_term.h"
 #include "riser_sim/spatial/forces/attachments.h"
 #include "riser_sim/spatial/forces/axial_spring.h"
@@ -145,7 +146,7 @@ SpatialRun::SpatialRun(const Scene& scene, RunInputs3 inputs)
   if (scene.space != SpaceKind::kSpatial) throw std::invalid_argument("space: SpatialRun needs space: spatial");
   if (const auto issue = unsupported(scene)) throw std::invalid_argument(issue->key + ": " + issue->message);
   model_ = buildSpatialModel(scene);
-  std::shared_ptr<const TopMotion3> motion = inputs.motion ? std::move(inputs.motion) : buildTopMotion3(scene.top);
+  std::shared_ptr<const TopMotion3> motion = inputs.motion ? std::move(inputs.motion) : runTopMotion3(scene);
   const Vec3 top = inputs.top ? *inputs.top : motion->at(0.0).p;
   // The statics end at the bottom's position at t = 0 (bottom.motion's, which may differ from bottom.position).
   Scene at0 = scene;
@@ -206,9 +207,11 @@ SpatialRun::SpatialRun(const Scene& scene, RunInputs3 inputs)
   io.rho_inf = scene.solver.rho_inf;
   io.newton_tolerance = scene.solver.newton_tolerance;
   sim_ = std::make_unique<SpatialSimulator>(model_, motion, scene.solver.integrator, io, scene.solver.stabilization);
-  sim_->reset(initial_.kin, 0.0, initial_.hang_off);
+  sim_->reset(withInitialVelocity3(scene.initial, top, initial_.kin), 0.0, initial_.hang_off);  // initial.velocity
   // The spins of an equilibrium twisted by the bending axes.
   if (!initial_.material_axes.empty()) sim_->setMaterialAxes(initial_.material_axes);
+  setInitialSpinRates(scene.initial, *sim_);
+  if (scene.initial.has_velocity) initial_.equilibrium = false, initial_.about += initialVelocityAbout(scene.initial);
   sim_->estimateStability();
   const int nb = model_->bodies();
   out_.points.resize(nb + 1);
