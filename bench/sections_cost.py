@@ -108,7 +108,7 @@ def fpso_table(cli, repeat, table, rows):
     table.append("| setting | simulated [s] | process wall [s] | RTF: process, wall | process, CPU | stepping, wall | "
                  "stepping, CPU | Newton/step |")
     table.append("|---|---|---|---|---|---|---|---|")
-    table.append("| n = %s, %s, dt %g s | %g | %.2f | **%.1f** | %.1f | %.1f | %.1f | %.2f |"
+    table.append("| n = %s, %s, dt %g s | %g | %.2f | %.1f | %.1f | %.1f | %.1f | %.2f |"
                  % (s["n"], s["integrator"], s["dt"], s["sim_s"], med["wall"], med["process"], med["process_cpu"],
                     med["stepping"], med["stepping_cpu"], s["newton_iterations"] / s["steps"]))
     table.append("")
