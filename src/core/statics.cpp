@@ -246,11 +246,11 @@ std::string currentLimit(const Model& model, const StaticsProblem& p, const Stat
 
 // A continuation in loads (scale(s): the attachments' loads, StaticTerms::scaleAttachments, or the buoyancy,
 // scaleBuoyancy): from none (solved by `start`) up to the scene's in steps (from the last state: Newton stays on
-// the path) halved when Newton fails; the end is checked as any solution (its stability included). failure:
-// empty on success.
+// the path) halved when Newton fails; with `check`, the end is checked as any solution (its stability included).
+// failure: empty on success.
 template <class Start, class Scale>
 Attempt rampLoads(const Model& model, const StaticsProblem& problem, StaticTerms& terms, StaticResidual& F, double t,
-                  Budget& budget, Start&& start, Scale&& scale, const std::string& what) {
+                  Budget& budget, Start&& start, Scale&& scale, const std::string& what, bool check) {
   StaticsProblem loose = problem;
   loose.tolerance = std::max(problem.tolerance, 1e-6);
   scale(0.0);
@@ -280,7 +280,7 @@ Attempt rampLoads(const Model& model, const StaticsProblem& problem, StaticTerms
     o << "(without them: " << none_failures << ")";
   } else if (s < 1.0) {
     o << "(the stable equilibria end at " << s << " of their loads)";
-  } else {
+  } else if (check) {
     F.toKinematics(c.x, kin);
     const EquilibriumCheck ch = checkEquilibrium(model, problem, kin, F.endForce(c.x), t);
     if (!ch.ok)
@@ -352,6 +352,28 @@ StaticsResult solveStatics(const Model& model, const StaticsProblem& problem, do
     }
     return a;
   };
+  // Continuations in the loads that shape a line in still water (buoys and clumps can pull Newton onto a folded
+  // balance; a lazy wave's buoyant section from the catenary guess onto an upturned one): the line without them,
+  // then their loads ramped up along the path of equilibria. `check`: the end is checked as any solution.
+  const auto loadRamps = [&](const StaticsProblem& prob, bool check, std::string& failures) {
+    Attempt a;
+    a.failure = "no load to ramp";
+    const auto start = [&](const StaticsProblem& p, std::string& f) { return attempts(p, false, f); };
+    if (terms.hasAttachments() && !budget.out) {
+      a = rampLoads(
+          model, prob, terms, F, t, budget, start, [&](double s) { terms.scaleAttachments(s); },
+          "the attachments' loads", check);
+      if (a.failure.empty()) return a;
+      failures += "; with the attachments' loads ramped up from none " + a.failure;
+    }
+    if (terms.hasBuoyantSection() && !budget.out) {
+      a = rampLoads(
+          model, prob, terms, F, t, budget, start, [&](double s) { terms.scaleBuoyancy(s); }, "the buoyancy", check);
+      if (a.failure.empty()) return a;
+      failures += "; with the buoyancy ramped up from none " + a.failure;
+    }
+    return a;
+  };
   std::string failures;
   Attempt a = attempts(problem, true, failures);
   if (!a.failure.empty() && problem.continuation && terms.hasCurrent() && !budget.out) {
@@ -362,6 +384,10 @@ StaticsResult solveStatics(const Model& model, const StaticsProblem& problem, do
     terms.scaleCurrent(0.0);
     std::string still_failures;
     Attempt c = attempts(loose, false, still_failures);
+    if (!c.converged && !budget.out) {  // the still-water shape through its own load ramps
+      const Attempt r = loadRamps(loose, false, still_failures);
+      if (r.failure.empty()) c = r;
+    }
     // Each state on the path must stay stable (the line would leave an unstable one): a step that lands on an
     // unstable state is halved like one Newton fails on, so the path ends where it folds or loses stability.
     double s = 0.0, step = 0.25;  // the drag's fraction of the scene's
@@ -413,29 +439,9 @@ StaticsResult solveStatics(const Model& model, const StaticsProblem& problem, do
     else
       failures += "; with the current ramped up from still water " + c.failure;
   }
-  if (!a.failure.empty() && problem.continuation && terms.hasAttachments() && !budget.out) {
-    // Continuation in the attachments (buoys and clumps can pull Newton onto a folded balance): the line
-    // without their loads, then the loads ramped up along the path of stable equilibria.
-    const Attempt c = rampLoads(
-        model, problem, terms, F, t, budget,
-        [&](const StaticsProblem& p, std::string& f) { return attempts(p, false, f); },
-        [&](double s) { terms.scaleAttachments(s); }, "the attachments' loads");
-    if (c.failure.empty())
-      a = c;
-    else
-      failures += "; with the attachments' loads ramped up from none " + c.failure;
-  }
-  if (!a.failure.empty() && problem.continuation && terms.hasBuoyantSection() && !budget.out) {
-    // Continuation in the buoyancy (a lazy wave's buoyant section pulls Newton from the catenary guess onto an
-    // upturned balance): the line without lift, heavy everywhere, then the lift ramped up to the water's.
-    const Attempt c = rampLoads(
-        model, problem, terms, F, t, budget,
-        [&](const StaticsProblem& p, std::string& f) { return attempts(p, false, f); },
-        [&](double s) { terms.scaleBuoyancy(s); }, "the buoyancy");
-    if (c.failure.empty())
-      a = c;
-    else
-      failures += "; with the buoyancy ramped up from none " + c.failure;
+  if (!a.failure.empty() && problem.continuation && !budget.out) {
+    const Attempt c = loadRamps(problem, true, failures);
+    if (c.failure.empty()) a = c;
   }
   res.converged = a.failure.empty();
   res.iterations = a.iterations;

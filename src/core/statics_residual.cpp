@@ -34,6 +34,7 @@ StaticTerms::StaticTerms(const Model& model, double t) : model_(model), t_(t) {
 void StaticTerms::scaleCurrent(double factor) {
   current_factor_ = factor;
   for (size_t k = 0; k < original_.size(); ++k) {
+    if (int(k) == attachments_) continue;
     std::unique_ptr<ForceTerm> scaled = model_.terms()[k]->steadyTerm(t_, factor);
     if (!scaled) continue;
     if (factor == 1.0) {
@@ -43,17 +44,28 @@ void StaticTerms::scaleCurrent(double factor) {
     owned_.push_back(std::move(scaled));
     terms_[k] = owned_.back().get();
   }
+  composeAttachments();
 }
 
 void StaticTerms::scaleAttachments(double factor) {
+  attachments_factor_ = factor;
+  composeAttachments();
+}
+
+// The attachments in the current x current_factor_, their loads x attachments_factor_ (the two continuations
+// compose: a still-water start ramps the attachments with the current off).
+void StaticTerms::composeAttachments() {
   if (attachments_ < 0) return;
-  const auto* a = static_cast<const Attachments*>(original_[attachments_]);
-  if (factor == 1.0) {
-    terms_[attachments_] = original_[attachments_];
-    return;
+  const ForceTerm* in_current = original_[attachments_];
+  if (current_factor_ != 1.0) {
+    owned_.push_back(model_.terms()[attachments_]->steadyTerm(t_, current_factor_));
+    in_current = owned_.back().get();
   }
-  owned_.push_back(a->scaled(factor));
-  terms_[attachments_] = owned_.back().get();
+  if (attachments_factor_ != 1.0) {
+    owned_.push_back(static_cast<const Attachments*>(in_current)->scaled(attachments_factor_));
+    in_current = owned_.back().get();
+  }
+  terms_[attachments_] = in_current;
 }
 
 void StaticTerms::scaleBuoyancy(double factor) {

@@ -33,10 +33,12 @@ class StaticTerms {
   double currentFactor() const { return current_factor_; }  // some term sees a non-zero steady current
 
  private:
+  void composeAttachments();
   const Model& model_;
   double t_;
   bool has_current_ = false;
   double current_factor_ = 1.0;
+  double attachments_factor_ = 1.0;
   int attachments_ = -1;  // index of the attachments' term
   int buoyancy_ = -1;     // index of the buoyancy's term
   std::vector<std::unique_ptr<ForceTerm>> owned_;
