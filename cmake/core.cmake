@@ -46,6 +46,7 @@ add_library(riser_sim_core
   src/core/run_builder.cpp
   src/core/line_run.cpp
   src/core/range_graph.cpp
+  src/core/section_extremes.cpp
   src/core/spatial/rfe_frames.cpp
   src/core/spatial/joint_bending.cpp
   src/core/scene_sections.cpp

@@ -130,10 +130,13 @@ int main(int argc, char** argv) {
   // The range graph, fed every step: with --range-graph, and with --summary (its extremes' keys).
   std::unique_ptr<RangeGraph> range;
   const bool want_range = !opt.range_graph.empty() || opt.summary;
+  // A sectioned line's summary: per-section extremes and the wave's bends (section_extremes.h).
+  std::unique_ptr<SectionExtremes> sections;
   std::string diverged;
   try {
+    if (opt.summary && !scene.sections.empty()) sections = std::make_unique<SectionExtremes>(scene, run->outputs());
     diverged = stepRun(*run, total_steps, every, csv, opt.probe_rfes, last, time, want_range ? &range : nullptr,
-                       seabedPlane(scene));
+                       seabedPlane(scene), sections.get());
   } catch (const std::exception& e) {
     return fail(kExitInternal, e.what());
   }
@@ -198,6 +201,7 @@ int main(int argc, char** argv) {
           .add("curvature_max_s", range->curvatureMaxS());
       if (range->hasSeabed())
         j.add("touchdown_s_min", range->touchdownMin()).add("touchdown_s_max", range->touchdownMax());
+      if (sections) addSectionKeys(j, *sections, *range);
     }
     j.add("max_constraint_error", run->maxConstraintError())
         .add("energy_drift", last.energy_drift)

@@ -178,5 +178,18 @@ JsonLine& JsonLine::add(const std::string& key, const std::string& v) {
   return *this;
 }
 
+void addSectionKeys(JsonLine& j, const SectionExtremes& sections, const RangeGraph& range) {
+  const std::vector<SectionExtremes::PerSection> per = sections.sections(range);
+  for (size_t k = 0; k < per.size(); ++k) {
+    const std::string key = "section" + std::to_string(k);
+    j.add(key + "_tension_max", per[k].tension_max)
+        .add(key + "_tension_max_s", per[k].tension_max_s)
+        .add(key + "_curvature_max", per[k].curvature_max)
+        .add(key + "_curvature_max_s", per[k].curvature_max_s);
+  }
+  const SectionExtremes::Wave w = sections.wave();
+  if (w.found) j.add("sag_z", w.sag_z).add("sag_s", w.sag_s).add("hog_z", w.hog_z).add("hog_s", w.hog_s);
+}
+
 }  // namespace cli
 }  // namespace riser_sim

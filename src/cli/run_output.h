@@ -7,6 +7,7 @@
 #include "output_file.h"
 #include "riser_sim/line_run.h"
 #include "riser_sim/range_graph.h"
+#include "riser_sim/section_extremes.h"
 
 namespace riser_sim {
 namespace cli {
@@ -99,6 +100,10 @@ class JsonLine {
 };
 
 std::string jsonString(const std::string& s);
+
+// The summary's keys of a sectioned line (over the run): per section k sectionK_tension_max, sectionK_tension_max_s,
+// sectionK_curvature_max, sectionK_curvature_max_s; a wave configuration's sag_z, sag_s, hog_z, hog_s.
+void addSectionKeys(JsonLine& j, const SectionExtremes& sections, const RangeGraph& range);
 
 }  // namespace cli
 }  // namespace riser_sim

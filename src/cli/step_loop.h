@@ -1,6 +1,6 @@
 // The stepping of a CLI run: whole steps to total_steps, a CSV row every `every` steps, the range graph (if
-// any) fed every step; only the stepping is timed (the outputs and the writing are excluded from wall_s /
-// cpu_s).
+// any) and the section extremes fed every step; only the stepping is timed (the outputs and the writing are excluded
+// from wall_s / cpu_s).
 #pragma once
 #include <algorithm>
 #include <chrono>
@@ -11,6 +11,7 @@
 #include "output_file.h"
 #include "riser_sim/line_run.h"
 #include "riser_sim/range_graph.h"
+#include "riser_sim/section_extremes.h"
 #include "run_output.h"
 
 namespace riser_sim {
@@ -24,10 +25,11 @@ struct SteppingTime {
 // last: the initial outputs, then the last ones taken (copied into its storage: no allocation per row).
 // Returns why the run stopped early ("" when it reached total_steps or the CSV stopped accepting rows:
 // csv.ok() says which). total_steps 0: the initial row alone. range: built from the initial outputs here and
-// fed every step (nullptr: no range graph).
+// fed every step (nullptr: no range graph); sections (made from the initial outputs by the caller): fed with it.
 inline std::string stepRun(LineRun& run, long total_steps, long every, OutputFile& csv,
                            const std::vector<int>& probe_rfes, RunOutputs& last, SteppingTime& time,
-                           std::unique_ptr<RangeGraph>* range = nullptr, const SeabedPlane& seabed = {}) {
+                           std::unique_ptr<RangeGraph>* range = nullptr, const SeabedPlane& seabed = {},
+                           SectionExtremes* sections = nullptr) {
   const bool bottom = run.bottomMoves(), torsion = run.hasTorsion();
   last = run.outputs();
   if (!allFinite(last)) return "initial state has non-finite outputs";
@@ -53,6 +55,7 @@ inline std::string stepRun(LineRun& run, long total_steps, long every, OutputFil
           break;
         }
         graph->add(o);
+        if (sections) sections->add(o);
       }
     }
     if (!stopped.empty()) break;
@@ -67,6 +70,7 @@ inline std::string stepRun(LineRun& run, long total_steps, long every, OutputFil
     }
     last = o;
     if (graph) graph->add(o);
+    if (graph && sections) sections->add(o);
     if (csv.isOpen()) writeCsvRow(csv.get(), last, probe_rfes, bottom, torsion);
   }
   time.wall_s = std::chrono::duration<double>(wall).count();
