@@ -9,15 +9,20 @@ namespace riser_sim {
 
 struct Scene;
 class Model;
+class WaterKinematics;
 namespace spatial {
 class SpatialModel;
-}
+class Water3;
+}  // namespace spatial
 
+// A row adds its term(s) to a model (null: none in that engine). `water`: the model's one sea, built once by
+// add*Terms (null without water); the terms copy it, so they share its wave samples (the waves are paid once
+// per point and time, not once per term).
 struct ForceTermRow {
-  const char* name;                                  // the term's name() (planar and spatial alike)
-  bool (*wanted)(const Scene& scene);                // whether the scene switches the term on
-  void (*planar)(const Scene& scene, Model& model);  // adds the planar term(s); null: none in that engine
-  void (*spatial)(const Scene& scene, spatial::SpatialModel& model);  // adds the 3D term(s); null: none
+  const char* name;                    // the term's name() (planar and spatial alike)
+  bool (*wanted)(const Scene& scene);  // whether the scene switches the term on
+  void (*planar)(const Scene& scene, const WaterKinematics* water, Model& model);
+  void (*spatial)(const Scene& scene, const spatial::Water3* water, spatial::SpatialModel& model);
 };
 
 // The rows in the order the terms enter the models.

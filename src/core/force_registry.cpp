@@ -1,6 +1,7 @@
 #include "riser_sim/force_registry.h"
 
 #include <memory>
+#include <optional>
 
 #include "riser_sim/forces/attachments.h"
 #include "riser_sim/forces/axial_spring.h"
@@ -28,6 +29,7 @@ namespace riser_sim {
 namespace {
 
 using spatial::SpatialModel;
+using spatial::Water3;
 
 bool sectionsDrag(const Scene& scene) {
   for (const LineSection& s : scene.sections)
@@ -52,46 +54,42 @@ bool addsMass(const Scene& s) {
 
 const std::vector<ForceTermRow> kRows = {
     {"gravity", [](const Scene& s) { return s.gravity != 0.0; },
-     [](const Scene&, Model& m) { m.addTerm(std::make_unique<Gravity>()); },
-     [](const Scene&, SpatialModel& m) { m.addTerm(std::make_unique<spatial::Gravity>()); }},
+     [](const Scene&, const WaterKinematics*, Model& m) { m.addTerm(std::make_unique<Gravity>()); },
+     [](const Scene&, const Water3*, SpatialModel& m) { m.addTerm(std::make_unique<spatial::Gravity>()); }},
     {"axial_spring", [](const Scene& s) { return s.options.axial_flexibility; },
-     [](const Scene&, Model& m) { m.addTerm(std::make_unique<AxialSpring>()); },
-     [](const Scene&, SpatialModel& m) { m.addTerm(std::make_unique<spatial::AxialSpring>()); }},
+     [](const Scene&, const WaterKinematics*, Model& m) { m.addTerm(std::make_unique<AxialSpring>()); },
+     [](const Scene&, const Water3*, SpatialModel& m) { m.addTerm(std::make_unique<spatial::AxialSpring>()); }},
     // Each engine asks its own line whether any section bends.
     {"bending_spring", [](const Scene& s) { return s.options.bending; },
-     [](const Scene& s, Model& m) {
+     [](const Scene& s, const WaterKinematics*, Model& m) {
        if (s.line.EI > 0.0 || s.line.bending_damping > 0.0 || sectionsBend(s))
          m.addTerm(std::make_unique<BendingSpring>());
      },
-     [](const Scene&, SpatialModel& m) {
+     [](const Scene&, const Water3*, SpatialModel& m) {
        if (m.line().hasBending()) m.addTerm(std::make_unique<spatial::BendingSpring>());
      }},
     {"buoyancy", [](const Scene& s) { return wantsSea(s) && s.gravity != 0.0; },
-     [](const Scene& s, Model& m) { m.addTerm(std::make_unique<Buoyancy>(s.water)); },
-     [](const Scene& s, SpatialModel& m) {
-       m.addTerm(std::make_unique<spatial::Buoyancy>(spatial::Water3(s.water, m.gravity())));
-     }},
+     [](const Scene& s, const WaterKinematics*, Model& m) { m.addTerm(std::make_unique<Buoyancy>(s.water)); },
+     [](const Scene&, const Water3* w, SpatialModel& m) { m.addTerm(std::make_unique<spatial::Buoyancy>(*w)); }},
     {"morison_drag", wantsDrag,
-     [](const Scene& s, Model& m) {
-       m.addTerm(std::make_unique<MorisonDrag>(WaterKinematics(s.water, s.gravity), s.hydro.drag_tangential,
-                                               s.hydro.drag_normal));
+     [](const Scene& s, const WaterKinematics* w, Model& m) {
+       m.addTerm(std::make_unique<MorisonDrag>(*w, s.hydro.drag_tangential, s.hydro.drag_normal));
      },
-     [](const Scene& s, SpatialModel& m) {
-       m.addTerm(std::make_unique<spatial::MorisonDrag>(spatial::Water3(s.water, m.gravity()), s.hydro.drag_tangential,
-                                                        s.hydro.drag_normal));
+     [](const Scene& s, const Water3* w, SpatialModel& m) {
+       m.addTerm(std::make_unique<spatial::MorisonDrag>(*w, s.hydro.drag_tangential, s.hydro.drag_normal));
      }},
     // Planar: one term (added mass and Froude-Krylov); 3D: the Froude-Krylov force where the water moves, then
     // the added mass.
     {"hydro_inertia", wantsHydro,
-     [](const Scene& s, Model& m) {
-       const WaterKinematics water(s.water, s.gravity);
+     [](const Scene& s, const WaterKinematics* w, Model& m) {
+       const WaterKinematics& water = *w;
        const HydroSpec& h = s.hydro;
        if (addsMass(s) || water.moving())
          m.addTerm(
              std::make_unique<HydroInertia>(water, h.inertia_coefficient, h.axial_added_mass, sectionsAddMass(s)));
      },
-     [](const Scene& s, SpatialModel& m) {
-       const spatial::Water3 water(s.water, m.gravity());
+     [](const Scene& s, const Water3* w, SpatialModel& m) {
+       const Water3& water = *w;
        const HydroSpec& h = s.hydro;
        if (water.moving())
          m.addTerm(std::make_unique<spatial::FroudeKrylov>(water, h.inertia_coefficient, 1.0 + h.axial_added_mass));
@@ -100,15 +98,17 @@ const std::vector<ForceTermRow> kRows = {
                                                         sectionsAddMass(s)));
      }},
     {"seabed", [](const Scene& s) { return s.seabed.enabled; },
-     [](const Scene& s, Model& m) { m.addTerm(std::make_unique<Seabed>(s.seabed)); },
-     [](const Scene& s, SpatialModel& m) { m.addTerm(std::make_unique<spatial::Seabed>(s.seabed, m.gravity())); }},
+     [](const Scene& s, const WaterKinematics*, Model& m) { m.addTerm(std::make_unique<Seabed>(s.seabed)); },
+     [](const Scene& s, const Water3*, SpatialModel& m) {
+       m.addTerm(std::make_unique<spatial::Seabed>(s.seabed, m.gravity()));
+     }},
     // Their masses are parts of their rfes; the rest is their term.
     {"attachments", [](const Scene& s) { return !s.attachments.empty(); },
-     [](const Scene& s, Model& m) {
+     [](const Scene& s, const WaterKinematics*, Model& m) {
        addAttachmentMasses(m, s.attachments);
        m.addTerm(std::make_unique<Attachments>(m, s.attachments, s.water, s.seabed, s.gravity));
      },
-     [](const Scene& s, SpatialModel& m) {
+     [](const Scene& s, const Water3*, SpatialModel& m) {
        addAttachmentMasses(m.mutableLine(), s.attachments);
        m.addTerm(std::make_unique<spatial::Attachments>(m, s.attachments, s.water, s.seabed));
      }},
@@ -118,7 +118,7 @@ const std::vector<ForceTermRow> kRows = {
        const InternalFlowSpec& f = s.internal_fluid;
        return f.density > 0.0 && (f.velocity != 0.0 || f.acceleration != 0.0);
      },
-     [](const Scene& s, Model& m) {
+     [](const Scene& s, const WaterKinematics*, Model& m) {
        const InternalFlowSpec& f = s.internal_fluid;
        if (f.model == FlowModelKind::kPaper)
          m.addTerm(std::make_unique<InternalFlow>(f, s.line.internalArea()));
@@ -133,13 +133,17 @@ const std::vector<ForceTermRow> kRows = {
 const std::vector<ForceTermRow>& forceTermRegistry() { return kRows; }
 
 void addPlanarTerms(const Scene& scene, Model& model) {
+  std::optional<WaterKinematics> water;
+  if (scene.water.enabled) water.emplace(scene.water, scene.gravity);
   for (const ForceTermRow& row : kRows)
-    if (row.planar && row.wanted(scene)) row.planar(scene, model);
+    if (row.planar && row.wanted(scene)) row.planar(scene, water ? &*water : nullptr, model);
 }
 
 void addSpatialTerms(const Scene& scene, spatial::SpatialModel& model) {
+  std::optional<Water3> water;
+  if (scene.water.enabled) water.emplace(scene.water, model.gravity());
   for (const ForceTermRow& row : kRows)
-    if (row.spatial && row.wanted(scene)) row.spatial(scene, model);
+    if (row.spatial && row.wanted(scene)) row.spatial(scene, water ? &*water : nullptr, model);
 }
 
 }  // namespace riser_sim
