@@ -35,6 +35,8 @@ class RangeGraph {
   RangeGraph(const RunOutputs& first, const SeabedPlane& seabed);
   // One more sample: the same line (sizes checked in debug builds only). Allocates nothing.
   void add(const RunOutputs& o);
+  // Starts over with `first` as the only sample (the line of the construction). Allocates nothing.
+  void restart(const RunOutputs& first);
 
   long samples() const { return samples_; }
   bool hasSeabed() const { return seabed_.exists; }

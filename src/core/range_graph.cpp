@@ -97,6 +97,19 @@ void RangeGraph::add(const RunOutputs& o) {
   }
 }
 
+void RangeGraph::restart(const RunOutputs& first) {
+  samples_ = 0;
+  td_samples_ = 0;
+  td_min_ = td_max_ = kNaN;
+  std::copy(first.axial_force.begin(), first.axial_force.end(), tension_.min.begin());
+  std::copy(first.axial_force.begin(), first.axial_force.end(), tension_.max.begin());
+  std::copy(first.bending_moment.begin(), first.bending_moment.end(), moment_.min.begin());
+  std::copy(first.bending_moment.begin(), first.bending_moment.end(), moment_.max.begin());
+  std::copy(first.curvature.begin(), first.curvature.end(), curvature_.min.begin());
+  std::copy(first.curvature.begin(), first.curvature.end(), curvature_.max.begin());
+  add(first);  // the clearance starts from its first sample there
+}
+
 double RangeGraph::tensionMaxS() const { return argMax(tension_.max, s_); }
 
 double RangeGraph::curvatureMax() const {

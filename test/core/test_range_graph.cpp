@@ -149,7 +149,7 @@ TEST(RangeGraph, CatenaryCurvatureIsTheElasticCatenarys) {
   }
 }
 
-TEST(RangeGraph, AddAllocatesNothing) {
+TEST(RangeGraph, AddAndRestartAllocateNothing) {
   for (const std::string file : {"lazy_wave_riser.yaml", "spatial_swing.yaml"}) {
     SCOPED_TRACE(file);
     const Scene sc = scene(file);
@@ -161,6 +161,22 @@ TEST(RangeGraph, AddAllocatesNothing) {
     for (int k = 0; k < 20; ++k) g.add(o);
     EXPECT_EQ(g_allocations.load() - before, 0);
     EXPECT_EQ(g.samples(), 21);
+    // restart(o): the graph of o alone, as a new one built from o; it allocates nothing either.
+    ASSERT_TRUE(run->step());
+    const RunOutputs& o2 = run->outputs();
+    const long before_restart = g_allocations.load();
+    g.restart(o2);
+    EXPECT_EQ(g_allocations.load() - before_restart, 0);
+    const RangeGraph fresh(o2, seabedPlane(sc));
+    EXPECT_EQ(g.samples(), 1);
+    for (const auto& [a, b] :
+         {std::make_pair(&g.tension(), &fresh.tension()), std::make_pair(&g.moment(), &fresh.moment()),
+          std::make_pair(&g.curvature(), &fresh.curvature()), std::make_pair(&g.clearance(), &fresh.clearance())}) {
+      EXPECT_EQ(a->min, b->min);
+      EXPECT_EQ(a->max, b->max);
+    }
+    EXPECT_EQ(g.touchdownSamples(), fresh.touchdownSamples());
+    if (fresh.touchdownSamples() > 0) EXPECT_EQ(g.touchdownMax(), fresh.touchdownMax());
   }
 }
 
