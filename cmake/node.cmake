@@ -7,6 +7,10 @@ add_library(riser_sim_ros
   src/node/line_messages.cpp
   src/node/line_markers.cpp
   src/node/sea_markers.cpp
+  src/node/section_layout.cpp
+  src/node/section_markers.cpp
+  src/node/attachment_markers.cpp
+  src/node/range_window.cpp
   src/node/node_run.cpp
   src/node/timing_stats.cpp
   src/node/modes_service.cpp
@@ -74,6 +78,9 @@ if(CATKIN_ENABLE_TESTING)
   # The 3D outputs through the node's run (NodeRun: ~state, markers, frames), no master either.
   catkin_add_gtest(test_node_helpers3 test/ros/test_node_helpers3.cpp)
   riser_sim_ros_test(test_node_helpers3)
+  # RangeWindow (~range_graph's rolling window), no master either.
+  catkin_add_gtest(test_range_window test/ros/test_range_window.cpp)
+  riser_sim_ros_test(test_range_window)
   # rosrun finds the programs once and quietly (the workspace is not inside the package tree).
   catkin_add_gtest(test_rosrun test/ros/test_rosrun.cpp)
   riser_sim_ros_test(test_rosrun)

@@ -13,6 +13,8 @@
 #include "riser_sim/LineState.h"
 #include "riser_sim/Tension.h"
 #include "riser_sim/line_run.h"
+#include "riser_sim/scene.h"
+#include "riser_sim_ros/section_layout.h"
 
 namespace riser_sim_ros {
 
@@ -22,8 +24,10 @@ class LineMessages {
   // and with bottom_body the bottom wrench in bottom_frame (a driven bottom: the ROV's).
   LineMessages(int nb, const std::string& fixed_frame, const std::string& tf_prefix, bool body_frame = false,
                const std::string& vessel_frame = "", bool bottom_body = false, const std::string& bottom_frame = "");
+  // ~state's per-run fields: the section of each rfe and the attachments' names (sizes their points, forces).
+  void setLayout(const SectionLayout& layout, const riser_sim::Scene& scene);
   void fillTension(const riser_sim::RunOutputs& out, const ros::Time& stamp);
-  // Points, angles (planar), elongations and per joint the curvature and bending moment.
+  // Points, angles (planar), elongations, per joint the curvature and bending moment, the attachments.
   void fillState(const riser_sim::RunOutputs& out, const ros::Time& stamp);
   // Force and moment the line exerts on the hang-off, the moment about the hang-off point (0 on a pinned top);
   // `vessel` rotates vessel-frame vectors into fixed_frame.

@@ -53,6 +53,7 @@ struct NodeParams {
   int max_steps_per_cycle = 500;  // cap of solver steps per wake-up
   double max_lag = 0.5;           // backlog (ROS time not yet simulated) dropped beyond this [s]
   MarkerParams markers;
+  double range_window = 60.0;               // ~range_graph/window: the rolling window of ~range_graph [s]
   riser_sim::ExternalMotionOptions motion;  // ~motion/*: smoothing of the vessel samples
 };
 

@@ -1,7 +1,7 @@
 // The run the node steps: the core's LineRun (either engine, riser_sim/line_run.h) with its top, and a driven
 // bottom, fed live from the vessel's (the ROV's) pose samples, and its outputs turned into the node's messages
-// (LineMessages, LineMarkers and, in 3D, SeaMarkers), sized once and filled in place. The node and its topics
-// see only this.
+// (LineMessages, LineMarkers with SectionMarkers, AttachmentMarkers and, in 3D, SeaMarkers; RangeWindow), sized
+// once and filled in place. The node and its topics see only this.
 #pragma once
 #include <memory>
 #include <string>
@@ -14,13 +14,18 @@
 #include <visualization_msgs/MarkerArray.h>
 
 #include "riser_sim/LineState.h"
+#include "riser_sim/RangeEnvelope.h"
 #include "riser_sim/Tension.h"
 #include "riser_sim/line_run.h"
 #include "riser_sim/scene.h"
+#include "riser_sim_ros/attachment_markers.h"
 #include "riser_sim_ros/line_markers.h"
 #include "riser_sim_ros/line_messages.h"
 #include "riser_sim_ros/node_params.h"
+#include "riser_sim_ros/range_window.h"
 #include "riser_sim_ros/sea_markers.h"
+#include "riser_sim_ros/section_layout.h"
+#include "riser_sim_ros/section_markers.h"
 #include "riser_sim_ros/vessel_input.h"
 
 namespace riser_sim_ros {
@@ -50,9 +55,13 @@ class NodeRun {
   // A sample stamped t_sample [s of sim time], applied now. False when the motion refused it.
   bool addSample(double t_sample, const VesselSample& s);
   bool addBottomSample(double t_sample, const VesselSample& s);
-  void shiftSampleTimes(double dt) { run_->shiftSampleTimes(dt); }
+  void shiftSampleTimes(double dt) {  // dropped backlog: the samples' times and the stamps move on by dt
+    run_->shiftSampleTimes(dt);
+    shifted_ += dt;
+  }
   bool drivenBottom() const { return run_->live(riser_sim::Holder::kBottom); }
-  bool step() { return run_->step(); }  // false once diverged
+  // One solver step (false once diverged); with ~range_graph on, its outputs are a range-graph sample.
+  bool step();
   const std::string& divergenceReason() const { return run_->divergenceReason(); }
   double time() const { return run_->time(); }
   double dt() const { return run_->dt(); }
@@ -71,6 +80,10 @@ class NodeRun {
   const geometry_msgs::WrenchStamped* bottomWrench(const ros::Time& stamp);  // null: no pinned bottom
   const std::vector<geometry_msgs::TransformStamped>& transforms(const ros::Time& stamp);
   const visualization_msgs::MarkerArray& markers(const ros::Time& stamp);
+  // The range graph over its window, stamped (the current time); null when ~range_graph is off or a value is
+  // not finite.
+  const riser_sim::RangeEnvelope* rangeEnvelope(const ros::Time& stamp);
+  void clearRangeGraph();  // its next sample starts a new window
 
  private:
   std::unique_ptr<riser_sim::LineRun> run_;
@@ -80,7 +93,11 @@ class NodeRun {
   bool pinned_;                                                 // a 3D pinned bottom: ~bottom_wrench
   LineMessages msgs_;
   LineMarkers markers_;
-  std::unique_ptr<SeaMarkers> sea_;  // 3D: its markers appended to markers_.msg
+  SectionMarkers sections_;             // appended to markers_.msg
+  AttachmentMarkers attachments_;       // appended to markers_.msg
+  std::unique_ptr<SeaMarkers> sea_;     // 3D: its markers appended to markers_.msg
+  std::unique_ptr<RangeWindow> range_;  // ~rates/range_graph > 0
+  double shifted_ = 0.0;                // the backlog dropped in this run [s] (the stamps are time() plus it)
 };
 
 // The hang-off as the scene's coordinates: "(x 1.000, z -2.000)" planar, "(x, y, z)" in 3D.

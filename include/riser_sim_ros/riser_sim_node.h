@@ -61,6 +61,7 @@ class RiserSimNode {
   void serveReset(const ros::Time& now);
   void fail(const std::string& why);
   bool onReset(std_srvs::Trigger::Request& req, std_srvs::Trigger::Response& res);
+  bool onRangeReset(std_srvs::Trigger::Request& req, std_srvs::Trigger::Response& res);
   double simTime(const ros::Time& t) const { return (t - origin_).toSec() - dropped_; }
   bool spatial() const { return scene_.space == riser_sim::SpaceKind::kSpatial; }
   // A 3D pinned bottom with bottom.motion.type external: driven from ~bottom_pose.
@@ -84,7 +85,8 @@ class RiserSimNode {
   LineTopics topics_;
   std::unique_ptr<NodeDiagnostics> diag_;
   ResetHandshake reset_;
-  ros::ServiceServer reset_srv_;
+  ros::ServiceServer reset_srv_, range_reset_srv_;
+  std::atomic<bool> clear_range_{false};  // ~range_graph/reset asked; the loop clears the window
 
   std::unique_ptr<NodeRun> line_;
   RunView run_;  // mode, reason, line_, last pose: what /diagnostics reports

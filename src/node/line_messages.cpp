@@ -30,6 +30,14 @@ LineMessages::LineMessages(int nb, const std::string& fixed_frame, const std::st
   }
 }
 
+void LineMessages::setLayout(const SectionLayout& layout, const riser_sim::Scene& scene) {
+  state.sections.assign(layout.rfe_section.begin(), layout.rfe_section.end());
+  state.attachment_names.clear();
+  for (const riser_sim::AttachmentSpec& a : scene.attachments) state.attachment_names.push_back(a.name);
+  state.attachment_points.resize(scene.attachments.size());
+  state.attachment_forces.resize(scene.attachments.size());
+}
+
 void LineMessages::fillTension(const riser_sim::RunOutputs& out, const ros::Time& stamp) {
   tension.header.stamp = stamp;
   std::copy(out.axial_force.begin(), out.axial_force.end(), tension.axial_force.begin());
@@ -53,6 +61,11 @@ void LineMessages::fillState(const riser_sim::RunOutputs& out, const ros::Time& 
   std::copy(out.curvature.begin(), out.curvature.end(), state.curvatures.begin());
   for (size_t j = 0; j < out.bending_moment_vector.size(); ++j)
     set(state.bending_moment_vectors[j], out.bending_moment_vector[j]);
+  for (size_t k = 0; k < state.attachment_points.size(); ++k) {
+    const riser_sim::Vec3& p = out.attachment_points[k];
+    state.attachment_points[k].x = p.x(), state.attachment_points[k].y = p.y(), state.attachment_points[k].z = p.z();
+    set(state.attachment_forces[k], out.attachment_forces[k]);
+  }
 }
 
 void LineMessages::fillTopWrench(const riser_sim::RunOutputs& out, const Eigen::Quaterniond& vessel,

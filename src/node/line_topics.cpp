@@ -7,8 +7,8 @@
 namespace riser_sim_ros {
 
 const std::vector<TopicRate>& dataTopicRates() {
-  static const std::vector<TopicRate> rates = {
-      {"tension", 20.0}, {"state", 10.0}, {"wrench", 20.0, "tension"}, {"tf", 20.0}, {"markers", 10.0}};
+  static const std::vector<TopicRate> rates = {{"tension", 20.0}, {"state", 10.0},   {"wrench", 20.0, "tension"},
+                                               {"tf", 20.0},      {"markers", 10.0}, {"range_graph", 1.0}};
   return rates;
 }
 
@@ -31,6 +31,12 @@ LineTopics::LineTopics(ros::NodeHandle& pnh, const NodeParams& params, bool bott
     if (markers.getNumSubscribers() == 0) return;  // large: built only for a listener
     markers.publish(run.markers(t));
   });
+  if (params.rates.at("range_graph") > 0.0) {
+    auto range = pnh.advertise<riser_sim::RangeEnvelope>("range_graph", 2);
+    add("range_graph", [range](NodeRun& run, const ros::Time& t) {
+      if (const riser_sim::RangeEnvelope* m = run.rangeEnvelope(t)) range.publish(*m);
+    });
+  }
 }
 
 void LineTopics::add(const std::string& name, Send send) {

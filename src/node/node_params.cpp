@@ -251,6 +251,9 @@ NodeParams loadNodeParams(const ros::NodeHandle& pnh, const std::string& node_na
   p.markers.text_height = r.number("markers/text_height", p.markers.text_height);
   nonNegative("markers/text_height", p.markers.text_height, " (0 = automatic)");
 
+  p.range_window = r.number("range_graph/window", p.range_window);
+  positive("range_graph/window", p.range_window);
+
   riser_sim::ExternalMotionOptions& m = p.motion;
   m.fit_window = r.number("motion/fit_window", m.fit_window);
   m.fit_max_samples = r.integer("motion/fit_max_samples", m.fit_max_samples);

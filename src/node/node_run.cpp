@@ -16,6 +16,17 @@ std::unique_ptr<riser_sim::LineRun> build(const riser_sim::Scene& scene, const V
   return riser_sim::buildLineRun(scene, in);
 }
 
+// The markers' sizes as LineMarkers takes them from ~markers (0: automatic).
+double lineWidth(const riser_sim::Scene& scene, const MarkerParams& m) {
+  return m.line_width > 0.0 ? m.line_width : scene.length / 150.0;
+}
+double nodeScale(const riser_sim::Scene& scene, const MarkerParams& m) {
+  return m.node_scale > 0.0 ? m.node_scale : 2.5 * lineWidth(scene, m);
+}
+double textHeight(const riser_sim::Scene& scene, const MarkerParams& m) {
+  return m.text_height > 0.0 ? m.text_height : scene.length / 25.0;
+}
+
 bool isPinned3(const riser_sim::Scene& scene) {
   return scene.space == riser_sim::SpaceKind::kSpatial && scene.bottom == riser_sim::BottomBoundary::kPinned;
 }
@@ -36,8 +47,31 @@ NodeRun::NodeRun(const riser_sim::Scene& scene, const VesselSample& s, double t,
       msgs_(scene.elements + 1, params.fixed_frame, params.tf_prefix, params.wrench_frame == "body",
             params.vessel_frame, bottom && params.wrench_frame == "body", params.bottom_frame),
       markers_(scene.length, scene.elements + 1, scene.end_mass > 0.0, params.fixed_frame, params.markers,
-               surfacesOf(scene)) {
+               surfacesOf(scene)),
+      sections_(sectionLayout(scene), 4.0 * lineWidth(scene, params.markers), params.fixed_frame, markers_.msg),
+      attachments_(scene, 2.0 * nodeScale(scene, params.markers), lineWidth(scene, params.markers),
+                   textHeight(scene, params.markers), params.fixed_frame, markers_.msg) {
   if (spatial()) sea_ = std::make_unique<SeaMarkers>(scene, params.fixed_frame, markers_.msg);
+  msgs_.setLayout(sectionLayout(scene), scene);
+  const auto rate = params.rates.find("range_graph");
+  if (rate != params.rates.end() && rate->second > 0.0)
+    range_ = std::make_unique<RangeWindow>(run_->outputs(), riser_sim::seabedPlane(scene), params.range_window,
+                                           params.fixed_frame);
+}
+
+bool NodeRun::step() {
+  if (!run_->step()) return false;
+  if (range_) range_->add(run_->outputs(), shifted_);
+  return true;
+}
+
+const riser_sim::RangeEnvelope* NodeRun::rangeEnvelope(const ros::Time& stamp) {
+  if (!range_ || !range_->fill(stamp)) return nullptr;
+  return &range_->msg;
+}
+
+void NodeRun::clearRangeGraph() {
+  if (range_) range_->clear();
 }
 
 void NodeRun::restartMotion(double t, const VesselSample& s) {
@@ -125,6 +159,8 @@ const std::vector<geometry_msgs::TransformStamped>& NodeRun::transforms(const ro
 
 const visualization_msgs::MarkerArray& NodeRun::markers(const ros::Time& stamp) {
   markers_.fill(*out_, stamp);
+  sections_.fill(*out_, markers_.msg);
+  attachments_.fill(*out_, markers_.msg);
   if (sea_) sea_->fill(*out_, markers_.msg);
   return markers_.msg;
 }

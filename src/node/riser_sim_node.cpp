@@ -47,6 +47,8 @@ RiserSimNode::RiserSimNode(ros::NodeHandle nh, ros::NodeHandle pnh)
                                             bottom_input_.get());
   diag_->setPublishPeriod(topics_.referencePeriod());
   reset_srv_ = pnh_.advertiseService("reset", &RiserSimNode::onReset, this);
+  if (params_.rates.at("range_graph") > 0.0)
+    range_reset_srv_ = pnh_.advertiseService("range_graph/reset", &RiserSimNode::onRangeReset, this);
   modes_ = std::make_unique<ModesServer>(pnh_, name_, params_.fixed_frame, input_->source());
 
   ROS_INFO(
@@ -139,6 +141,7 @@ void RiserSimNode::cycle() {
           ROS_WARN("%s: no valid vessel pose for %.1f s (~pose_timeout %.1f s): holding the last one", name_.c_str(),
                    (now - run_.last_pose).toSec(), params_.pose_timeout);
       }
+      if (clear_range_.exchange(false)) line_->clearRangeGraph();
       integrate(now);
       if (run_.mode == RunMode::kRunning && topics_.due(now)) {
         const WallClock::time_point t0 = WallClock::now();
@@ -285,6 +288,13 @@ void RiserSimNode::fail(const std::string& why) {
 
 bool RiserSimNode::onReset(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& res) {
   res.success = reset_.request(res.message);
+  return true;
+}
+
+bool RiserSimNode::onRangeReset(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& res) {
+  clear_range_ = true;
+  res.success = true;
+  res.message = "the range graph's window restarts at the next solver step";
   return true;
 }
 

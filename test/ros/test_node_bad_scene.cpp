@@ -61,7 +61,7 @@ TEST(NodeBadScene, NodeParameterErrorsNameTheParameter) {
 TEST(NodeBadScene, UnknownParametersAreFatal) {
   expectFatal("misspelt_rate",
               "~rates/tensoin: unknown parameter (did you mean 'tension'?); accepted under "
-              "~rates/: tension, state, wrench, tf, markers, diagnostics");
+              "~rates/: tension, state, wrench, tf, markers, range_graph, diagnostics");
   expectFatal("misspelt_loop_rate", "~loop_rat: unknown parameter (did you mean 'loop_rate'?)");
 }
 
