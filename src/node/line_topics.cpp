@@ -8,7 +8,7 @@ namespace riser_sim_ros {
 
 const std::vector<TopicRate>& dataTopicRates() {
   static const std::vector<TopicRate> rates = {{"tension", 20.0}, {"state", 10.0},   {"wrench", 20.0, "tension"},
-                                               {"tf", 20.0},      {"markers", 10.0}, {"range_graph", 1.0}};
+                                               {"tf", 20.0},      {"markers", 10.0}, {"range_graph", 0.0}};
   return rates;
 }
 

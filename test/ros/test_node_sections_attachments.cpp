@@ -73,14 +73,15 @@ Eigen::Vector3d alongLine(const riser_sim::LineState& st, const std::vector<doub
 struct Inputs {
   ros::NodeHandle nh;
   // Lazy wave: the hang-off at the scene's (0, -10) m until the node runs (its statics start from there),
-  // then heaving 2 m over 4 s from heave_from on (the tension moves through the window).
+  // then heaving 1 m over 6 s from heave_from on (slow enough that the line stays taut: a
+  // slack line snaps, and its tension spikes between two published samples) (the tension moves through the window).
   std::atomic<double> heave_from{NAN};  // [s] on the publisher's clock
   const double top_x = YAML::LoadFile(g_lazy)["top"]["position"][0].as<double>();
   const double top_z = YAML::LoadFile(g_lazy)["top"]["position"][1].as<double>();
   PosePublisher lazy{nh, "/lazy_wave/vessel/pose", 20.0, [this](double t, geometry_msgs::Pose& p) {
                        const double t0 = heave_from.load();
                        p.position.x = top_x, p.position.z = top_z;
-                       p.position.z += t >= t0 ? 2.0 * std::sin(2.0 * M_PI * (t - t0) / 4.0) : 0.0;
+                       p.position.z += t >= t0 ? std::sin(2.0 * M_PI * (t - t0) / 6.0) : 0.0;
                      }};
   void startHeave() {
     if (std::isnan(heave_from.load())) heave_from = (ros::Time::now() - lazy.startTime()).toSec();
@@ -151,16 +152,18 @@ TEST(NodeSectionsAttachments, LazyWaveSectionsInMarkersAndState) {
 
 // ~range_graph's envelopes over its window against ~tension's values stamped inside that window. Every
 // published ~tension is a state the range graph sampled (it samples every solver step; ~tension goes out
-// after the steps of a cycle), so max_window >= max_published exactly (1e-9 relative: the same doubles);
-// the envelope can exceed the published maximum only between two published samples, by at most the largest
-// change between consecutive ones (the tension is smooth at the 20 Hz of ~tension: the heave's period is 4 s).
+// after the steps of a cycle), so max_window >= max_published exactly (1e-9 relative: the same doubles).
+// ~tension goes out at 500 Hz, the step rate of the 2 ms scene, so the steps it misses are those of the loop's
+// cycles that ran more than one; the envelope exceeds the published maximum only at such a step, by at most
+// the largest change between consecutive published values (which holds the step-to-step force noise of the
+// inextensible line too); likewise the minima.
 TEST(NodeSectionsAttachments, RangeGraphMatchesThePublishedTensionOverItsWindow) {
   ros::NodeHandle nh;
-  Recorder<riser_sim::Tension> tension(nh, "/lazy_wave/riser_sim/tension");
+  Recorder<riser_sim::Tension> tension(nh, "/lazy_wave/riser_sim/tension");  // queue 100: ~0.2 s
   Recorder<riser_sim::RangeEnvelope> range(nh, "/lazy_wave/riser_sim/range_graph");
   ASSERT_TRUE(tension.waitCount(1, 180.0));
   g_inputs->startHeave();
-  // After the first recorded ~tension and 1 s after the heave began (its sudden start, 3 m/s at once, jerks
+  // After the first recorded ~tension and 1 s after the heave began (its sudden start, 1 m/s at once, jerks
   // the line: a tension spike between two 20 Hz samples that the bound below does not cover).
   const ros::Time first = std::max(tension.all().front().header.stamp,
                                    g_inputs->lazy.startTime() + ros::Duration(g_inputs->heave_from.load() + 1.0));
@@ -200,9 +203,9 @@ TEST(NodeSectionsAttachments, RangeGraphMatchesThePublishedTensionOverItsWindow)
     prev = &t;
     ASSERT_EQ(t.arc_length, g.arc_length);
   }
-  ASSERT_GE(inside, 60);  // 20 Hz over >= 3.6 s
-  // The heave's acceleration 2 m (2π/4 s)² = 4.9 m/s² moves the top tension by a good part of the weight.
-  EXPECT_GT(top_max - top_min, 200.0) << "the heave moves the top tension (else the test could not fail)";
+  ASSERT_GE(inside, 60);  // 500 Hz over >= 3.55 s, fewer if the node fell behind
+  // The heave's acceleration 1 m (2π/6 s)² = 1.1 m/s² moves the top tension by ~10 % of the weight (~2 kN).
+  EXPECT_GT(top_max - top_min, 100.0) << "the heave moves the top tension (else the test could not fail)";
   const double tol = 1e-9 * top_max;
   EXPECT_GE(g.top_tension_max, top_max - tol);
   EXPECT_LE(g.top_tension_max, top_max + d_top + tol);
