@@ -76,8 +76,16 @@ struct Inputs {
   // then heaving 1 m over 6 s from heave_from on (slow enough that the line stays taut: a
   // slack line snaps, and its tension spikes between two published samples) (the tension moves through the window).
   std::atomic<double> heave_from{NAN};  // [s] on the publisher's clock
-  const double top_x = YAML::LoadFile(g_lazy)["top"]["position"][0].as<double>();
-  const double top_z = YAML::LoadFile(g_lazy)["top"]["position"][1].as<double>();
+  // The scene's top at t = 0: top.position, plus amplitude cos(phase) of a sinusoid (scene_keys.md).
+  static double topAt0(int axis) {
+    const YAML::Node top = YAML::LoadFile(g_lazy)["top"];
+    double p = top["position"][axis].as<double>();
+    const YAML::Node m = top["motion"];
+    if (m && m["type"] && m["type"].as<std::string>() == "sinusoid")
+      p += m["amplitude"][axis].as<double>() * std::cos(m["phase"] ? m["phase"].as<double>() : 0.0);
+    return p;
+  }
+  const double top_x = topAt0(0), top_z = topAt0(1);
   PosePublisher lazy{nh, "/lazy_wave/vessel/pose", 20.0, [this](double t, geometry_msgs::Pose& p) {
                        const double t0 = heave_from.load();
                        p.position.x = top_x, p.position.z = top_z;
@@ -153,10 +161,10 @@ TEST(NodeSectionsAttachments, LazyWaveSectionsInMarkersAndState) {
 // ~range_graph's envelopes over its window against ~tension's values stamped inside that window. Every
 // published ~tension is a state the range graph sampled (it samples every solver step; ~tension goes out
 // after the steps of a cycle), so max_window >= max_published exactly (1e-9 relative: the same doubles).
-// ~tension goes out at 500 Hz, the step rate of the 2 ms scene, so the steps it misses are those of the loop's
-// cycles that ran more than one; the envelope exceeds the published maximum only at such a step, by at most
-// the largest change between consecutive published values (which holds the step-to-step force noise of the
-// inextensible line too); likewise the minima.
+// ~tension goes out at the scene's step rate (the launch's tension_rate), so the steps it misses are those of the
+// loop's cycles that ran more than one; the envelope exceeds the published maximum only at such a step, by at most the
+// largest change between consecutive published values (which holds the step-to-step force noise of the inextensible
+// line too); likewise the minima.
 TEST(NodeSectionsAttachments, RangeGraphMatchesThePublishedTensionOverItsWindow) {
   ros::NodeHandle nh;
   Recorder<riser_sim::Tension> tension(nh, "/lazy_wave/riser_sim/tension");  // queue 100: ~0.2 s
@@ -203,7 +211,8 @@ TEST(NodeSectionsAttachments, RangeGraphMatchesThePublishedTensionOverItsWindow)
     prev = &t;
     ASSERT_EQ(t.arc_length, g.arc_length);
   }
-  ASSERT_GE(inside, 60);  // 500 Hz over >= 3.55 s, fewer if the node fell behind
+  // >= 3.55 s at the step rate: hundreds; a loaded machine makes the node drop backlog (stamps jump ahead).
+  ASSERT_GE(inside, 10);
   // The heave's acceleration 1 m (2π/6 s)² = 1.1 m/s² moves the top tension by ~10 % of the weight (~2 kN).
   EXPECT_GT(top_max - top_min, 100.0) << "the heave moves the top tension (else the test could not fail)";
   const double tol = 1e-9 * top_max;
