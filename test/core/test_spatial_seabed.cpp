@@ -38,7 +38,7 @@ TEST(SpatialSeabed, AgainstItsEnergyAndPower) {
   spec.friction_axial = 0.4;
   spec.friction_lateral = 0.9;
   spec.friction_velocity = 0.05;
-  const Seabed bed(spec, m->gravity());
+  const spatial::Seabed bed(spec, m->gravity());
   spatial_test::checkGradient(bed, *m);
   spatial_test::checkPower(bed, *m);
   // The check has teeth: points are in contact on those states.
@@ -66,7 +66,7 @@ TEST(SpatialSeabed, RateJacobianAgainstDifferences) {
   spec.friction_axial = 0.4;
   spec.friction_lateral = 0.9;
   spec.friction_velocity = 0.05;
-  const Seabed bed(spec, m->gravity());
+  const spatial::Seabed bed(spec, m->gravity());
   const NaturalFormulation f(*m, 50.0);
   std::mt19937 rng(5);
   double worst = 0.0;
@@ -95,7 +95,7 @@ TEST(SpatialSeabed, FrictionAlongAndAcrossTheLine) {
   spec.friction_axial = 0.3;
   spec.friction_lateral = 0.9;
   spec.friction_velocity = 0.02;
-  const Seabed bed(spec, m->gravity());
+  const spatial::Seabed bed(spec, m->gravity());
   const Vec3 dir = Vec3(std::cos(0.4), std::sin(0.4), 0.0);  // the line's heading
   for (const bool across : {false, true}) {
     const double v = 0.3;

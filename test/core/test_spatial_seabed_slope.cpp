@@ -63,7 +63,7 @@ TEST(SpatialSeabedSlope, LawOnTheIncline) {
   auto m = spatial_test::spatialModel(ls, Vec3(0.0, 0.0, -9.81));
   SeabedSpec spec = slopeSpec(theta, psi);
   spec.damping_normal = spec.damping_tangential = 0.0;
-  const Seabed bed(spec, m->gravity());
+  const spatial::Seabed bed(spec, m->gravity());
   const Vec3 n = normalOf(theta, psi);
   EXPECT_LE((bed.normal() - n).norm(), 1e-15);
   // Penetration: the height below the plane z_b = level + tan θ (x cos ψ + y sin ψ), times cos θ.
@@ -93,7 +93,7 @@ TEST(SpatialSeabedSlope, LawOnTheIncline) {
   }
   // Against its energy and power on random states (tilted gravity: the heading projected normal to up).
   auto mt = spatial_test::spatialModel(ls, Vec3(1.2, -0.7, -9.5));
-  const Seabed tilted(slopeSpec(theta, psi), mt->gravity());
+  const spatial::Seabed tilted(slopeSpec(theta, psi), mt->gravity());
   spatial_test::checkGradient(tilted, *mt);
   spatial_test::checkPower(tilted, *mt);
   std::mt19937 rng(7);
@@ -113,7 +113,7 @@ TEST(SpatialSeabedSlope, SlopeZeroIsTheLevelSeabed) {
   level.level = 4.0;
   SeabedSpec zero = level;
   zero.slope_heading = 1.3;  // no effect at slope 0
-  const Seabed a(level, m->gravity()), b(zero, m->gravity());
+  const spatial::Seabed a(level, m->gravity()), b(zero, m->gravity());
   std::mt19937 rng(3);
   const NaturalFormulation f(*m, 50.0);
   for (int trial = 0; trial < 5; ++trial) {
@@ -250,7 +250,7 @@ TEST(SpatialSeabedSlope, HangingOntoTheSlopeStartsAtRest) {
   EXPECT_TRUE(init.equilibrium);
   EXPECT_LE(init.max_acceleration, init.acceleration_bound);
   EXPECT_NE(init.about.find("sloped seabed"), std::string::npos) << init.about;
-  const Seabed bed(s.seabed, Vec3(0.0, 0.0, -9.81));
+  const spatial::Seabed bed(s.seabed, Vec3(0.0, 0.0, -9.81));
   const AlignedVector<Vec3> p0 = run.outputs().points;
   int on = 0;
   for (const Vec3& p : p0) on += bed.penetration(p) > 0.0;
@@ -307,7 +307,7 @@ seabed: {level: -50.0, stiffness_normal: 1.0e5, slope: 5.0}
   EXPECT_LE(init.max_acceleration, init.acceleration_bound);
   const LineOutputs3& o = run.outputs();
   EXPECT_LE((o.points.back().head<2>() - Vec2(20.0, 0.0)).norm(), 1e-9);
-  const Seabed bed(displaced.seabed, Vec3(0.0, 0.0, -9.81));
+  const spatial::Seabed bed(displaced.seabed, Vec3(0.0, 0.0, -9.81));
   EXPECT_GT(bed.penetration(o.points.back()), 0.0);  // the end rests on the slope
   const double M = 80.0 * 60.0;
   const Vec3 sum = -o.top_force + init.end_force + M * Vec3(0.0, 0.0, -9.81), n = bed.normal();
@@ -355,7 +355,7 @@ solver: {integrator: midpoint, dt: 0.01}
     const InitialState3& init = run.initial();
     EXPECT_TRUE(init.equilibrium) << where;
     EXPECT_LE(init.max_acceleration, init.acceleration_bound) << where;
-    const Seabed bed(s.seabed, Vec3(0.0, 0.0, -g));
+    const spatial::Seabed bed(s.seabed, Vec3(0.0, 0.0, -g));
     const LineOutputs3& o = run.outputs();
     int on = 0;
     double deepest = 0.0, bow = 0.0;
