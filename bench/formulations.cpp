@@ -23,7 +23,7 @@
 #include <string>
 #include <vector>
 
-#include "riser_sim/scene.h"
+#include "riser_sim/scene/scene.h"
 #include "markdown_table.h"
 #include "validation_util.h"
 

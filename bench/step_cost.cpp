@@ -13,7 +13,7 @@
 //
 // 3D against 2D (spatialRows, also alone with --spatial): the same planar line (100 m, axial and bending
 // springs with damping, an end mass, released 20 degrees off the vertical under a swaying top) stepped by
-// the planar Simulator and by the 3D SpatialSimulator (the line in the x-z plane), n = 10, 100, 300, 1000:
+// the planar Simulator and by the 3D Simulator3 (the line in the x-z plane), n = 10, 100, 300, 1000:
 // rk4 (2D absolute) at half the planar rk4 limit, and implicit midpoint with structured solves (2D
 // recursive) at h = 1e-3 s. The two are interleaved in blocks of steps (thread CPU time), medians over
 // the blocks, the ratio's spread over repeats; growth exponents over n = 100..1000. The 3D steps are then timed
@@ -39,12 +39,12 @@
 #include <string>
 #include <vector>
 
-#include "riser_sim/forces/axial_spring.h"
-#include "riser_sim/forces/bending_spring.h"
-#include "riser_sim/forces/gravity.h"
-#include "riser_sim/scene.h"
-#include "riser_sim/scene_yaml.h"
-#include "riser_sim/simulator.h"
+#include "riser_sim/planar/forces/axial_spring.h"
+#include "riser_sim/planar/forces/bending_spring.h"
+#include "riser_sim/planar/forces/gravity.h"
+#include "riser_sim/scene/scene.h"
+#include "riser_sim/scene/scene_yaml.h"
+#include "riser_sim/planar/simulator.h"
 #include "riser_sim/spatial/forces/axial_spring.h"
 #include "riser_sim/spatial/forces/bending_spring.h"
 #include "riser_sim/spatial/forces/gravity.h"
@@ -227,7 +227,7 @@ double median(std::vector<double> v) {
   return v[v.size() / 2];
 }
 
-// One (n, integrator): planar Simulator and SpatialSimulator on the same line, blocks of steps interleaved.
+// One (n, integrator): planar Simulator and Simulator3 on the same line, blocks of steps interleaved.
 Pair3 timePair(int n, bool implicit, double target) {
   Pair3 r;
   const Line3 l = line3();
@@ -235,8 +235,7 @@ Pair3 timePair(int n, bool implicit, double target) {
   m2->addTerm(std::make_unique<Gravity>());
   m2->addTerm(std::make_unique<AxialSpring>());
   m2->addTerm(std::make_unique<BendingSpring>());
-  auto m3 =
-      std::make_shared<spatial::SpatialModel>(l.length, n, l.props, l.options, l.end_mass, spatial::Vec3(0, 0, -l.g));
+  auto m3 = std::make_shared<spatial::Model3>(l.length, n, l.props, l.options, l.end_mass, spatial::Vec3(0, 0, -l.g));
   m3->addTerm(std::make_unique<spatial::Gravity>());
   m3->addTerm(std::make_unique<spatial::AxialSpring>());
   m3->addTerm(std::make_unique<spatial::BendingSpring>());
@@ -257,7 +256,7 @@ Pair3 timePair(int n, bool implicit, double target) {
     sim2.setInitialState(kin0, 0.0);
     IntegratorOptions o;
     o.jacobian = JacobianKind::kStructured;
-    spatial::SpatialSimulator sim3(m3, std::make_unique<spatial::PlanarMotion3>(sway()), st.integrator, o);
+    spatial::Simulator3 sim3(m3, std::make_unique<spatial::PlanarMotion3>(sway()), st.integrator, o);
     sim3.reset(spatial::fromPlanar(kin0), 0.0);
     // Warm-up, then the block length from the cost of one step of each.
     double c0 = threadCpu();
@@ -293,7 +292,7 @@ Pair3 timePair(int n, bool implicit, double target) {
     // The same 3D steps from the start again with nothing between the blocks: the interleaving keeps the
     // ratio robust to the machine's load drifting, but each block then starts with the planar run's data in
     // the caches, which at n = 1000 (3D data ~3.5 MB, beyond the 2 MB L2) costs the 3D step 5-15 %.
-    spatial::SpatialSimulator alone(m3, std::make_unique<spatial::PlanarMotion3>(sway()), st.integrator, o);
+    spatial::Simulator3 alone(m3, std::make_unique<spatial::PlanarMotion3>(sway()), st.integrator, o);
     alone.reset(spatial::fromPlanar(kin0), 0.0);
     for (int k = 0; k < 3; ++k)
       if (!alone.step(st.dt)) throw std::runtime_error("3D alone: step failed");

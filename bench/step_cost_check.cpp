@@ -13,9 +13,9 @@
 #include <stdexcept>
 
 #include "markdown_table.h"
-#include "riser_sim/choices.h"
-#include "riser_sim/line_run.h"
-#include "riser_sim/scene_yaml.h"
+#include "riser_sim/scene/choices.h"
+#include "riser_sim/run/line_run.h"
+#include "riser_sim/scene/scene_yaml.h"
 
 namespace riser_sim {
 namespace bench {

@@ -21,7 +21,7 @@
 #include <string>
 #include <vector>
 
-#include "riser_sim/integrator.h"
+#include "riser_sim/integrators/integrator.h"
 #include "tradeoff_run.h"
 #include "tradeoff_spatial.h"
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "riser_sim/scene_yaml.h"
+#include "riser_sim/scene/scene_yaml.h"
 #include "validation_util.h"
 
 namespace tradeoff {

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "riser_sim/scene.h"
+#include "riser_sim/scene/scene.h"
 #include "tradeoff_history.h"
 
 namespace tradeoff {

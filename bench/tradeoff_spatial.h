@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "riser_sim/scene_yaml.h"
+#include "riser_sim/scene/scene_yaml.h"
 #include "riser_sim/spatial/run_builder.h"
 
 namespace tradeoff {
@@ -34,7 +34,7 @@ constexpr double kRefStep = 5e-4;                          // [s] rk4's referenc
 constexpr double kTarget1cm = 0.01, kTarget1cmCpu = 0.02;  // [m], [s]
 constexpr double kTarget1mm = 0.001, kTarget1mmCpu = 0.1;  // [m], [s]
 
-struct Run3 {
+struct TradeRun3 {
   std::string status = "ok", reason;
   riser_sim::spatial::Vec3 end = riser_sim::spatial::Vec3::Zero();  // end point at kDuration [m]
   double cpu = 0.0;                                                 // [s] stepping, median of the repeats
@@ -75,11 +75,11 @@ inline riser_sim::Scene scene3(const std::string& root, int n, const Setting3& s
 }
 
 // One setting at n; repeats (median CPU) when a run takes less than 2 s.
-inline Run3 run3(const std::string& root, int n, const Setting3& s) {
-  Run3 r;
+inline TradeRun3 run3(const std::string& root, int n, const Setting3& s) {
+  TradeRun3 r;
   std::vector<double> cpus;
   for (int rep = 0; rep < 3; ++rep) {
-    riser_sim::spatial::SpatialRun run(scene3(root, n, s));
+    riser_sim::spatial::Run3 run(scene3(root, n, s));
     r.limit = run.stableStepEstimate();
     const long steps = std::max(1L, std::lround(std::ceil(kDuration / run.dt() - 1e-9)));
     const double c0 = threadCpu3();
@@ -134,8 +134,8 @@ inline void sweep3(const std::string& root, const std::string& out_dir, const st
                  "rk4_limit_s,newton_tolerance\n");
   std::printf("\n## spatial_swing (3D): end point at t = %g s vs rk4 at h = %g s (same n)\n", kDuration, kRefStep);
   for (const int n : ns) {
-    const Run3 ref = run3(root, n, {"rk4", kRefStep});
-    const Run3 twice = run3(root, n, {"rk4", 2.0 * kRefStep});
+    const TradeRun3 ref = run3(root, n, {"rk4", kRefStep});
+    const TradeRun3 twice = run3(root, n, {"rk4", 2.0 * kRefStep});
     if (ref.status != "ok" || twice.status != "ok") {
       std::printf("  n = %d: reference run %s: %s\n", n, ref.status.c_str(), (ref.reason + twice.reason).c_str());
       continue;
@@ -148,7 +148,7 @@ inline void sweep3(const std::string& root, const std::string& out_dir, const st
         "  | n | setting | h [s] | status | CPU [s] | end error [m] | 1 cm in 0.02 s | 1 mm in 0.1 s |\n"
         "  |---|---|---|---|---|---|---|---|\n");
     for (const Setting3& s : settings3(ref.limit)) {
-      const Run3 r = run3(root, n, s);
+      const TradeRun3 r = run3(root, n, s);
       const double err = r.status == "ok" ? (r.end - ref.end).norm() : NAN;
       const bool t1 = err <= kTarget1cm && r.cpu <= kTarget1cmCpu, t2 = err <= kTarget1mm && r.cpu <= kTarget1mmCpu;
       std::printf("  | %d | %s | %.4g | %s | %.4f | %.2e | %s | %s |\n", n, s.label().c_str(), s.h, r.status.c_str(),

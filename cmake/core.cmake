@@ -1,63 +1,63 @@
 # ROS-free core: Eigen + yaml-cpp only.
 add_library(riser_sim_core
-  src/core/line_properties.cpp
-  src/core/line_sections.cpp
-  src/core/model.cpp
-  src/core/force_registry.cpp
-  src/core/rfe_inertia.cpp
-  src/core/top_motion.cpp
-  src/core/external_motion.cpp
-  src/core/forces/gravity.cpp
-  src/core/forces/axial_spring.cpp
-  src/core/forces/bending_spring.cpp
-  src/core/forces/buoyancy.cpp
-  src/core/forces/morison_drag.cpp
-  src/core/forces/hydro_inertia.cpp
-  src/core/forces/seabed.cpp
-  src/core/forces/end_load.cpp
-  src/core/attachment.cpp
-  src/core/forces/attachments.cpp
-  src/core/forces/internal_flow.cpp
-  src/core/water.cpp
-  src/core/formulation.cpp
-  src/core/absolute_formulation.cpp
-  src/core/chain_kinematics.cpp
-  src/core/chain_formulation.cpp
-  src/core/chain_shifted_solver.cpp
-  src/core/independent_formulation.cpp
-  src/core/recursive_formulation.cpp
-  src/core/integrator.cpp
-  src/core/dopri5.cpp
-  src/core/implicit_integrators.cpp
-  src/core/simulator.cpp
-  src/core/solver_setup.cpp
-  src/core/scene_check.cpp
-  src/core/stability_estimate.cpp
-  src/core/force_noise.cpp
-  src/core/statics.cpp
-  src/core/statics_residual.cpp
-  src/core/statics_guess.cpp
-  src/core/statics_check.cpp
-  src/core/modal.cpp
-  src/core/modes_report.cpp
-  src/core/linear_stability.cpp
-  src/core/scene.cpp
-  src/core/initial_velocity.cpp
-  src/core/run_builder.cpp
-  src/core/line_run.cpp
-  src/core/range_graph.cpp
-  src/core/section_extremes.cpp
+  src/core/line/line_properties.cpp
+  src/core/line/line_sections.cpp
+  src/core/planar/model.cpp
+  src/core/run/force_registry.cpp
+  src/core/line/rfe_inertia.cpp
+  src/core/motion/top_motion.cpp
+  src/core/motion/external_motion.cpp
+  src/core/planar/forces/gravity.cpp
+  src/core/planar/forces/axial_spring.cpp
+  src/core/planar/forces/bending_spring.cpp
+  src/core/planar/forces/buoyancy.cpp
+  src/core/planar/forces/morison_drag.cpp
+  src/core/planar/forces/hydro_inertia.cpp
+  src/core/planar/forces/seabed.cpp
+  src/core/planar/forces/end_load.cpp
+  src/core/line/attachment.cpp
+  src/core/planar/forces/attachments.cpp
+  src/core/planar/forces/internal_flow.cpp
+  src/core/planar/water.cpp
+  src/core/planar/formulation.cpp
+  src/core/planar/absolute_formulation.cpp
+  src/core/planar/chain_kinematics.cpp
+  src/core/planar/chain_formulation.cpp
+  src/core/planar/chain_shifted_solver.cpp
+  src/core/planar/independent_formulation.cpp
+  src/core/planar/recursive_formulation.cpp
+  src/core/integrators/integrator.cpp
+  src/core/integrators/dopri5.cpp
+  src/core/integrators/implicit_integrators.cpp
+  src/core/planar/simulator.cpp
+  src/core/scene/solver_setup.cpp
+  src/core/scene/scene_check.cpp
+  src/core/run/stability_estimate.cpp
+  src/core/run/force_noise.cpp
+  src/core/planar/statics.cpp
+  src/core/planar/statics_residual.cpp
+  src/core/planar/statics_guess.cpp
+  src/core/planar/statics_check.cpp
+  src/core/planar/modal.cpp
+  src/core/run/modes_report.cpp
+  src/core/run/linear_stability.cpp
+  src/core/scene/scene.cpp
+  src/core/run/initial_velocity.cpp
+  src/core/run/run_builder.cpp
+  src/core/run/line_run.cpp
+  src/core/run/range_graph.cpp
+  src/core/run/section_extremes.cpp
   src/core/spatial/rfe_frames.cpp
   src/core/spatial/joint_bending.cpp
-  src/core/scene_sections.cpp
-  src/core/scene_line_sections.cpp
-  src/core/line_sections_check.cpp
-  src/core/scene_sea_sections.cpp
-  src/core/scene_end_sections.cpp
-  src/core/scene_attachments.cpp
-  src/core/scene_yaml.cpp
+  src/core/scene/scene_sections.cpp
+  src/core/scene/scene_line_sections.cpp
+  src/core/line/line_sections_check.cpp
+  src/core/scene/scene_sea_sections.cpp
+  src/core/scene/scene_end_sections.cpp
+  src/core/scene/scene_attachments.cpp
+  src/core/scene/scene_yaml.cpp
   src/core/spatial/run_builder.cpp
-  src/core/spatial/external_motion3.cpp
+  src/core/spatial/external_motion.cpp
   src/core/spatial/initial_state.cpp
   src/core/spatial/initial_twist.cpp
   src/core/spatial/forces/end_load.cpp
@@ -129,7 +129,7 @@ if(CATKIN_ENABLE_TESTING)
   target_compile_options(riser_sim_test_pch PRIVATE ${RISER_SIM_TEST_OPT})
   target_precompile_headers(riser_sim_test_pch PRIVATE <Eigen/Dense> <gtest/gtest.h> <algorithm> <cmath>
     <cstdio> <functional> <map> <memory> <random> <sstream> <string> <vector>)
-  file(GLOB RISER_SIM_CORE_TESTS ${CMAKE_CURRENT_SOURCE_DIR}/test/core/test_*.cpp)
+  file(GLOB_RECURSE RISER_SIM_CORE_TESTS ${CMAKE_CURRENT_SOURCE_DIR}/test/core/test_*.cpp)
   foreach(test_src ${RISER_SIM_CORE_TESTS})
     get_filename_component(test_name ${test_src} NAME_WE)
     # RISER_SIM_TESTS (a list of test names) builds only those: the sanitizer build (tools/test_sanitize.sh).
@@ -140,6 +140,7 @@ if(CATKIN_ENABLE_TESTING)
     catkin_add_gtest(${test_name} ${test_src} WORKING_DIRECTORY ${CMAKE_CURRENT_SOURCE_DIR})
     target_link_libraries(${test_name} riser_sim_core gtest_main)
     target_compile_definitions(${test_name} PRIVATE RISER_SIM_SOURCE_DIR="${CMAKE_CURRENT_SOURCE_DIR}")
+    target_include_directories(${test_name} PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/test/core)  # test utilities
     target_compile_options(${test_name} PRIVATE ${RISER_SIM_TEST_OPT})
     target_precompile_headers(${test_name} REUSE_FROM riser_sim_test_pch)
   endforeach()

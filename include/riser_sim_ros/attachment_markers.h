@@ -13,8 +13,8 @@
 
 #include <visualization_msgs/MarkerArray.h>
 
-#include "riser_sim/line_run.h"
-#include "riser_sim/scene.h"
+#include "riser_sim/run/line_run.h"
+#include "riser_sim/scene/scene.h"
 
 namespace riser_sim_ros {
 

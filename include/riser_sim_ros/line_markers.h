@@ -8,8 +8,8 @@
 
 #include <visualization_msgs/MarkerArray.h>
 
-#include "riser_sim/line_run.h"
-#include "riser_sim/scene.h"
+#include "riser_sim/run/line_run.h"
+#include "riser_sim/scene/scene.h"
 #include "riser_sim_ros/node_params.h"
 
 namespace riser_sim_ros {

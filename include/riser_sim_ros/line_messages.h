@@ -12,8 +12,8 @@
 
 #include "riser_sim/LineState.h"
 #include "riser_sim/Tension.h"
-#include "riser_sim/line_run.h"
-#include "riser_sim/scene.h"
+#include "riser_sim/run/line_run.h"
+#include "riser_sim/scene/scene.h"
 #include "riser_sim_ros/section_layout.h"
 
 namespace riser_sim_ros {

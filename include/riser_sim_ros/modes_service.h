@@ -9,7 +9,7 @@
 #include <ros/ros.h>
 
 #include "riser_sim/Modes.h"
-#include "riser_sim/scene.h"
+#include "riser_sim/scene/scene.h"
 
 namespace riser_sim_ros {
 

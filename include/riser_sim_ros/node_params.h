@@ -8,7 +8,7 @@
 #include <Eigen/Core>
 #include <ros/node_handle.h>
 
-#include "riser_sim/external_motion.h"
+#include "riser_sim/motion/external_motion.h"
 
 namespace riser_sim_ros {
 

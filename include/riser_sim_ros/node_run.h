@@ -1,4 +1,4 @@
-// The run the node steps: the core's LineRun (either engine, riser_sim/line_run.h) with its top, and a driven
+// The run the node steps: the core's LineRun (either engine, riser_sim/run/line_run.h) with its top, and a driven
 // bottom, fed live from the vessel's (the ROV's) pose samples, and its outputs turned into the node's messages
 // (LineMessages, LineMarkers with SectionMarkers, AttachmentMarkers and, in 3D, SeaMarkers; RangeWindow), sized
 // once and filled in place. The node and its topics see only this.
@@ -16,8 +16,8 @@
 #include "riser_sim/LineState.h"
 #include "riser_sim/RangeEnvelope.h"
 #include "riser_sim/Tension.h"
-#include "riser_sim/line_run.h"
-#include "riser_sim/scene.h"
+#include "riser_sim/run/line_run.h"
+#include "riser_sim/scene/scene.h"
 #include "riser_sim_ros/attachment_markers.h"
 #include "riser_sim_ros/line_markers.h"
 #include "riser_sim_ros/line_messages.h"

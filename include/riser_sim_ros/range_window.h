@@ -1,5 +1,5 @@
 // The range graph of the last `window` seconds of a run, for ~range_graph: the core's RangeGraph
-// (riser_sim/range_graph.h) kept in kBlocks blocks of window / kBlocks seconds of run time each, in a ring
+// (riser_sim/run/range_graph.h) kept in kBlocks blocks of window / kBlocks seconds of run time each, in a ring
 // sized at the start; a sample goes into the block of its time, and a block kBlocks blocks old is restarted
 // from the sample that reuses it. The window is the current block and the kBlocks - 1 before it: it spans
 // (1 - 1/kBlocks) window .. window. Allocates nothing after construction.
@@ -10,8 +10,8 @@
 #include <ros/time.h>
 
 #include "riser_sim/RangeEnvelope.h"
-#include "riser_sim/line_run.h"
-#include "riser_sim/range_graph.h"
+#include "riser_sim/run/line_run.h"
+#include "riser_sim/run/range_graph.h"
 
 namespace riser_sim_ros {
 

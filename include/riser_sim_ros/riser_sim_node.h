@@ -22,7 +22,7 @@
 #include <std_srvs/Trigger.h>
 #include <tf2_ros/buffer.h>
 
-#include "riser_sim/scene.h"
+#include "riser_sim/scene/scene.h"
 #include "riser_sim_ros/line_topics.h"
 #include "riser_sim_ros/modes_service.h"
 #include "riser_sim_ros/node_diagnostics.h"

@@ -2,7 +2,7 @@
 #pragma once
 #include <ros/node_handle.h>
 
-#include "riser_sim/scene.h"
+#include "riser_sim/scene/scene.h"
 
 namespace riser_sim_ros {
 

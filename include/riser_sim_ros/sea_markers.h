@@ -15,10 +15,10 @@
 #include <Eigen/Geometry>
 #include <visualization_msgs/MarkerArray.h>
 
-#include "riser_sim/line_run.h"
-#include "riser_sim/scene.h"
+#include "riser_sim/run/line_run.h"
+#include "riser_sim/scene/scene.h"
 #include "riser_sim/spatial/water.h"
-#include "riser_sim/water.h"
+#include "riser_sim/planar/water.h"
 #include "riser_sim_ros/line_markers.h"
 
 namespace riser_sim_ros {

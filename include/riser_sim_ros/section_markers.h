@@ -9,7 +9,7 @@
 #include <std_msgs/ColorRGBA.h>
 #include <visualization_msgs/MarkerArray.h>
 
-#include "riser_sim/line_run.h"
+#include "riser_sim/run/line_run.h"
 #include "riser_sim_ros/section_layout.h"
 
 namespace riser_sim_ros {

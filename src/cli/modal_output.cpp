@@ -6,7 +6,7 @@
 
 #include "cli_options.h"
 #include "output_file.h"
-#include "riser_sim/modes_report.h"
+#include "riser_sim/run/modes_report.h"
 
 namespace riser_sim {
 namespace cli {

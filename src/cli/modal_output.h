@@ -1,10 +1,10 @@
 // riser_sim_cli --modes K [--modes-csv FILE], either engine: the scene's statics, then the lowest K natural
-// modes about them (riser_sim/modes_report.h): the table on stdout, the mode shapes as CSV (planar: x, y with
+// modes about them (riser_sim/run/modes_report.h): the table on stdout, the mode shapes as CSV (planar: x, y with
 // y up; space: spatial: x, y, z).
 #pragma once
 #include <string>
 
-#include "riser_sim/scene.h"
+#include "riser_sim/scene/scene.h"
 
 namespace riser_sim {
 namespace cli {

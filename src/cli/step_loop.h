@@ -9,9 +9,9 @@
 #include <vector>
 
 #include "output_file.h"
-#include "riser_sim/line_run.h"
-#include "riser_sim/range_graph.h"
-#include "riser_sim/section_extremes.h"
+#include "riser_sim/run/line_run.h"
+#include "riser_sim/run/range_graph.h"
+#include "riser_sim/run/section_extremes.h"
 #include "run_output.h"
 
 namespace riser_sim {

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "riser_sim/attachment.h"
+#include "riser_sim/line/attachment.h"
 
 namespace riser_sim_ros {
 

@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <exception>
 
-#include "riser_sim/modes_report.h"
+#include "riser_sim/run/modes_report.h"
 
 namespace riser_sim_ros {
 

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "riser_sim/simulator.h"
+#include "riser_sim/planar/simulator.h"
 
 namespace riser_sim_ros {
 

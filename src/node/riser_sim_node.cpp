@@ -3,7 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "riser_sim/scene_check.h"
+#include "riser_sim/scene/scene_check.h"
 #include "riser_sim_ros/xmlrpc_yaml.h"
 
 namespace riser_sim_ros {

@@ -2,7 +2,7 @@
 
 #include <stdexcept>
 
-#include "riser_sim/scene_yaml.h"
+#include "riser_sim/scene/scene_yaml.h"
 #include "riser_sim_ros/node_params.h"
 #include "riser_sim_ros/xmlrpc_yaml.h"
 

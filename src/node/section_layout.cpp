@@ -4,7 +4,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "riser_sim/line_sections.h"
+#include "riser_sim/line/line_sections.h"
 
 namespace riser_sim_ros {
 

@@ -1,5 +1,5 @@
 // Checks of a spatial force term against its energy (test_spatial_forces.cpp, test_spatial_sea.cpp), on random
-// states of a SpatialModel:
+// states of a Model3:
 // - conservative parts (velocities zero): Q = -∂V/∂q on the tangent space (the e part projected
 //   orthogonally to e), by central differences of V;
 // - power identity with velocities: Q·q' = -dV/dt + P, dV/dt by central differences along q'.
@@ -17,12 +17,12 @@ namespace riser_sim {
 namespace spatial_test {
 
 using spatial::BodyKinematics3;
+using spatial::ForceTerm3;
 using spatial::kDofPerBody3;
 using spatial::kE;
 using spatial::Kinematics3;
+using spatial::Model3;
 using spatial::NaturalFormulation;
-using spatial::SpatialForceTerm;
-using spatial::SpatialModel;
 using spatial::Vec3;
 
 // Central differences with step ε: truncation ε² V''' / 6 ~ 1e-10 of the force scale, round-off
@@ -33,7 +33,7 @@ inline constexpr double kRelTol = 1e-6;
 
 // Random state near a hanging line: Δ ~ 1e-3 m, directions spread over the sphere around -z, with a
 // straight joint (θ = 0 exactly) between rfes 1 and 2; velocities random, e' tangent.
-inline VecX randomState(const SpatialModel& m, std::mt19937& rng, bool moving) {
+inline VecX randomState(const Model3& m, std::mt19937& rng, bool moving) {
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   Kinematics3 kin(m.bodies());
   Vec3 A(u(rng), u(rng), u(rng));
@@ -57,7 +57,7 @@ inline VecX randomState(const SpatialModel& m, std::mt19937& rng, bool moving) {
   return y;
 }
 
-inline double energy(const SpatialForceTerm& term, const SpatialModel& m, const NaturalFormulation& f, const VecX& y,
+inline double energy(const ForceTerm3& term, const Model3& m, const NaturalFormulation& f, const VecX& y,
                      double t = 0.0) {
   Kinematics3 kin(m.bodies());
   f.kinematics(y, kin);
@@ -65,7 +65,7 @@ inline double energy(const SpatialForceTerm& term, const SpatialModel& m, const 
 }
 
 // Projects the e part of every rfe's generalised vector orthogonally to e.
-inline VecX tangent(const SpatialModel& m, const VecX& y, VecX g) {
+inline VecX tangent(const Model3& m, const VecX& y, VecX g) {
   for (int i = 0; i < m.bodies(); ++i) {
     const Vec3 e = y.segment<3>(kDofPerBody3 * i + kE);
     auto ge = g.segment<3>(kDofPerBody3 * i + kE);
@@ -74,7 +74,7 @@ inline VecX tangent(const SpatialModel& m, const VecX& y, VecX g) {
   return g;
 }
 
-inline void checkGradient(const SpatialForceTerm& term, const SpatialModel& m, double t = 0.0) {
+inline void checkGradient(const ForceTerm3& term, const Model3& m, double t = 0.0) {
   std::mt19937 rng(7);
   NaturalFormulation f(m, 50.0);
   const int nq = m.dofs();
@@ -101,7 +101,7 @@ inline void checkGradient(const SpatialForceTerm& term, const SpatialModel& m, d
 
 // Q·v + dV/dt = P along the motion, dV/dt = ∂V/∂q v + ∂V/∂t (a term whose potential moves with time, e.g. a
 // flex joint on a turning holder, reports ∂V/∂t in its power: the work its holder does).
-inline void checkPower(const SpatialForceTerm& term, const SpatialModel& m, double t = 0.0) {
+inline void checkPower(const ForceTerm3& term, const Model3& m, double t = 0.0) {
   std::mt19937 rng(11);
   NaturalFormulation f(m, 50.0);
   const int nq = m.dofs();
@@ -125,12 +125,12 @@ inline void checkPower(const SpatialForceTerm& term, const SpatialModel& m, doub
 
 // The term's C = -∂Q/∂q' (addStiffness, rate part) against central differences of Q in each rate at state y and
 // time t: max |C - C_fd| over the largest |C_fd| entry.
-inline double rateJacobianError(const SpatialForceTerm& term, const SpatialModel& m, const VecX& y, double t) {
+inline double rateJacobianError(const ForceTerm3& term, const Model3& m, const VecX& y, double t) {
   const NaturalFormulation f(m, 50.0);
   const int nq = m.dofs();
   Kinematics3 kin(m.bodies()), kp(m.bodies()), km(m.bodies());
   f.kinematics(y, kin);
-  spatial::SpatialStiffness S;
+  spatial::Stiffness3 S;
   S.resize(m.bodies());
   term.addStiffness(m, kin, t, S);
   double scale = 0.0, err = 0.0;

@@ -30,7 +30,7 @@ class OscillatingTop : public spatial::TopMotion3 {
 };
 
 // Angular momentum about the z axis through the origin [kg m²/s]: point masses plus director inertia.
-inline double angularMomentumZ(const spatial::SpatialModel& m, const spatial::Kinematics3& kin) {
+inline double angularMomentumZ(const spatial::Model3& m, const spatial::Kinematics3& kin) {
   double lz = 0.0;
   for (int i = 0; i < m.bodies(); ++i) {
     const Rfe& r = m.rfe(i);

@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "riser_sim/run_builder.h"
-#include "riser_sim/scene_yaml.h"
-#include "riser_sim/simulator.h"
+#include "riser_sim/run/run_builder.h"
+#include "riser_sim/scene/scene_yaml.h"
+#include "riser_sim/planar/simulator.h"
 #include "riser_sim/spatial/run_builder.h"
 
 namespace riser_sim {
@@ -77,7 +77,7 @@ environment:
 
 // Largest distance [m] between the joints of the planar run (rotated by R into 3D) and of the 3D run, sampled
 // every 100 steps over `duration` [s]; both step at the same dt. *planar_end0: the planar end's x at t = 0.
-inline double planarVs3D(riser_sim::Run& planar, spatial::SpatialRun& run, const spatial::Mat3& R, double duration,
+inline double planarVs3D(riser_sim::Run& planar, spatial::Run3& run, const spatial::Mat3& R, double duration,
                          double* planar_end0 = nullptr) {
   Kinematics kin2(planar.model->bodies());
   const long steps = std::lround(duration / run.dt());

@@ -1,5 +1,5 @@
 // Scenes and runners shared by the spatial (3D) core's tests: the same line built as a planar Model (2D
-// absolute formulation) and as a SpatialModel, initial states, a bare planar ODE runner.
+// absolute formulation) and as a Model3, initial states, a bare planar ODE runner.
 #pragma once
 #include <algorithm>
 #include <cmath>
@@ -8,12 +8,12 @@
 #include <random>
 #include <vector>
 
-#include "riser_sim/absolute_formulation.h"
-#include "riser_sim/force_term.h"
-#include "riser_sim/forces/axial_spring.h"
-#include "riser_sim/forces/bending_spring.h"
-#include "riser_sim/forces/gravity.h"
-#include "riser_sim/integrator.h"
+#include "riser_sim/planar/absolute_formulation.h"
+#include "riser_sim/planar/force_term.h"
+#include "riser_sim/planar/forces/axial_spring.h"
+#include "riser_sim/planar/forces/bending_spring.h"
+#include "riser_sim/planar/forces/gravity.h"
+#include "riser_sim/integrators/integrator.h"
 #include "riser_sim/spatial/force_term.h"
 #include "riser_sim/spatial/forces/axial_spring.h"
 #include "riser_sim/spatial/forces/bending_spring.h"
@@ -55,8 +55,8 @@ inline std::shared_ptr<Model> planarModel(const LineSpec& s) {
   return m;
 }
 
-inline std::shared_ptr<spatial::SpatialModel> spatialModel(const LineSpec& s, const Vec3& gravity) {
-  auto m = std::make_shared<spatial::SpatialModel>(s.length, s.segments, s.props, s.options, s.end_mass, gravity);
+inline std::shared_ptr<spatial::Model3> spatialModel(const LineSpec& s, const Vec3& gravity) {
+  auto m = std::make_shared<spatial::Model3>(s.length, s.segments, s.props, s.options, s.end_mass, gravity);
   m->addTerm(std::make_unique<spatial::Gravity>());
   if (s.options.axial_flexibility) m->addTerm(std::make_unique<spatial::AxialSpring>());
   if (s.options.bending) m->addTerm(std::make_unique<spatial::BendingSpring>());
@@ -65,7 +65,7 @@ inline std::shared_ptr<spatial::SpatialModel> spatialModel(const LineSpec& s, co
 
 // The twist-only shaft of the torsion tests: a 10 m line of 10 kg/m hanging straight, inextensible, no bending,
 // a 50 kg end; torsion t when t.stiffness > 0 (GJ, polar inertias, top: held, free or spring-held).
-inline std::shared_ptr<spatial::SpatialModel> twistShaft(int n, const spatial::TorsionProperties& t) {
+inline std::shared_ptr<spatial::Model3> twistShaft(int n, const spatial::TorsionProperties& t) {
   LineSpec s;
   s.length = 10.0;
   s.segments = n;
@@ -98,7 +98,7 @@ inline spatial::Kinematics3 randomBentChain(const Model& line, std::mt19937& rng
 }
 
 // Σ over every part of every rfe of (x_p - A_0) × m_p g [N m]: the weight's moment about the hang-off.
-inline Vec3 weightMoment(const spatial::SpatialModel& m, const spatial::Kinematics3& kin) {
+inline Vec3 weightMoment(const spatial::Model3& m, const spatial::Kinematics3& kin) {
   Vec3 M = Vec3::Zero();
   for (int i = 0; i < m.bodies(); ++i)
     for (int p = 0; p < m.rfe(i).num_parts; ++p) {
@@ -220,21 +220,21 @@ inline TurningHolder::Angle ramp(double to, double t0, double t1) {
 // The step-cost bench's line (bench/step_cost.cpp, "3D against 2D"): 100 m, 10 kg/m, EA 1e7 N, EI 1e4 N m²,
 // damping 1e4 N s and 1e2 N m² s, 500 kg end mass; straight, released 20° off the vertical in the x-z plane,
 // under a top swaying 1 m in x over 10 s (benchSway).
-inline std::shared_ptr<spatial::SpatialModel> benchLine(int n) {
+inline std::shared_ptr<spatial::Model3> benchLine(int n) {
   LineProperties p;
   p.mass_per_length = 10.0;
   p.EA = 1e7;
   p.EI = 1e4;
   p.axial_damping = 1e4;
   p.bending_damping = 100.0;
-  auto m = std::make_shared<spatial::SpatialModel>(100.0, n, p, ModelOptions(), 500.0, Vec3(0, 0, -9.81));
+  auto m = std::make_shared<spatial::Model3>(100.0, n, p, ModelOptions(), 500.0, Vec3(0, 0, -9.81));
   m->addTerm(std::make_unique<spatial::Gravity>());
   m->addTerm(std::make_unique<spatial::AxialSpring>());
   m->addTerm(std::make_unique<spatial::BendingSpring>());
   return m;
 }
 
-inline spatial::Kinematics3 benchReleased(const spatial::SpatialModel& m) {
+inline spatial::Kinematics3 benchReleased(const spatial::Model3& m) {
   spatial::Kinematics3 kin(m.bodies());
   const double a = 20.0 * M_PI / 180.0;
   const Vec3 e(std::sin(a), 0.0, -std::cos(a));

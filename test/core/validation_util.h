@@ -8,8 +8,8 @@
 #include <stdexcept>
 #include <vector>
 
-#include "riser_sim/run_builder.h"
-#include "riser_sim/scene.h"
+#include "riser_sim/run/run_builder.h"
+#include "riser_sim/scene/scene.h"
 
 namespace riser_sim {
 namespace validation {

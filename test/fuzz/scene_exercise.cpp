@@ -6,9 +6,9 @@
 #include <regex>
 #include <sstream>
 
-#include "riser_sim/run_builder.h"
-#include "riser_sim/scene.h"
-#include "riser_sim/scene_yaml.h"
+#include "riser_sim/run/run_builder.h"
+#include "riser_sim/scene/scene.h"
+#include "riser_sim/scene/scene_yaml.h"
 #include "riser_sim/spatial/run_builder.h"
 
 namespace riser_sim {
@@ -66,9 +66,9 @@ std::string describeException() {
 // space: spatial: the 3D builder and a few steps, under the same rules.
 Outcome buildSpatial(const Scene& scene) {
   Outcome out;
-  std::unique_ptr<spatial::SpatialRun> run;
+  std::unique_ptr<spatial::Run3> run;
   try {
-    run = std::make_unique<spatial::SpatialRun>(scene);
+    run = std::make_unique<spatial::Run3>(scene);
   } catch (const std::exception& e) {
     out.kind = Outcome::Kind::kBuildRejected;
     out.message = e.what();

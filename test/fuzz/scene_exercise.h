@@ -1,6 +1,6 @@
 // One fuzz input through the whole scene path: text (+ "--set" lines) -> loadSceneText -> buildSimulator
 // -> a few steps. Shared by the libFuzzer target (test/fuzz/fuzz_scene.cpp) and the regression gtest
-// (test/core/test_scene_fuzz_regressions.cpp).
+// (test/core/scene/test_scene_fuzz_regressions.cpp).
 #pragma once
 #include <string>
 #include <vector>

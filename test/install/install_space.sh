@@ -111,7 +111,7 @@ EOF
   cat >"$tmp/src/riser_sim_user/src/scene_elements.cpp" <<'EOF'
 // Prints the number of segments of a scene file, loaded by riser_sim's core.
 #include <cstdio>
-#include "riser_sim/scene_yaml.h"
+#include "riser_sim/scene/scene_yaml.h"
 int main(int argc, char** argv) {
   if (argc < 2) return 2;
   const riser_sim::Scene s = riser_sim::loadSceneFile(argv[1]);

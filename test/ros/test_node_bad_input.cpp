@@ -4,7 +4,7 @@
 #include <atomic>
 
 #include "node_test_util.h"
-#include "riser_sim/force_noise.h"
+#include "riser_sim/run/force_noise.h"
 
 using namespace riser_sim_test;
 

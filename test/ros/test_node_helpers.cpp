@@ -4,8 +4,8 @@
 
 #include <cmath>
 
-#include "riser_sim/force_term.h"
-#include "riser_sim/scene_yaml.h"
+#include "riser_sim/planar/force_term.h"
+#include "riser_sim/scene/scene_yaml.h"
 #include "riser_sim_ros/line_markers.h"
 #include "riser_sim_ros/line_messages.h"
 #include "riser_sim_ros/tf_listener.h"

@@ -5,8 +5,8 @@
 
 #include <cmath>
 
-#include "riser_sim/scene_yaml.h"
-#include "riser_sim/water.h"
+#include "riser_sim/scene/scene_yaml.h"
+#include "riser_sim/planar/water.h"
 #include "riser_sim/spatial/rfe_frames.h"
 #include "riser_sim/spatial/run_builder.h"
 #include "riser_sim_ros/node_run.h"
@@ -203,8 +203,8 @@ top: {position: [0.0, 0.0, 0.0]}
 solver: {dt: 0.001}
 )");
   namespace sp = riser_sim::spatial;
-  sp::SpatialRun run(s);
-  sp::SpatialSimulator& sim = run.simulator();
+  sp::Run3 run(s);
+  sp::Simulator3& sim = run.simulator();
   const int nb = run.model().bodies();
   riser_sim::VecX theta(nb), omega = riser_sim::VecX::Zero(nb), zero = riser_sim::VecX::Zero(nb);
   for (int i = 0; i < nb; ++i) theta[i] = 0.1 * i;

@@ -82,11 +82,10 @@ Riser* find(std::vector<std::unique_ptr<Riser>>& risers, const std::string& stat
 // planar scene is the x-z plane, as the node's.
 std::map<int64_t, Sample> runCli(const Riser& r) {
   const std::string csv = "/tmp/node_matches_cli_" + r.ns + "_" + std::to_string(getpid()) + ".csv";
-  const std::string cmd = std::string(RISER_SIM_CLI_BIN) + " --scene " + r.scene_file +
-                          " --set top.motion.type=fixed" + (r.attitude ? " --set top.motion.attitude=null" : "") +
-                          " --set top.position=" + r.cli_top + " --duration " +
-                          std::to_string(kTicks * kTick) + " --output-dt " + std::to_string(kTick) + " --quiet --csv " +
-                          csv;
+  const std::string cmd = std::string(RISER_SIM_CLI_BIN) + " --scene " + r.scene_file + " --set top.motion.type=fixed" +
+                          (r.attitude ? " --set top.motion.attitude=null" : "") + " --set top.position=" + r.cli_top +
+                          " --duration " + std::to_string(kTicks * kTick) + " --output-dt " + std::to_string(kTick) +
+                          " --quiet --csv " + csv;
   std::map<int64_t, Sample> rows;
   if (std::system(cmd.c_str()) != 0) {
     ADD_FAILURE() << "failed: " << cmd;

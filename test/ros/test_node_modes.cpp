@@ -10,10 +10,10 @@
 #include <Eigen/Core>
 
 #include "node_test_util.h"
-#include "riser_sim/run_builder.h"
+#include "riser_sim/run/run_builder.h"
 #include "riser_sim/Modes.h"
-#include "riser_sim/modal.h"
-#include "riser_sim/scene_yaml.h"
+#include "riser_sim/planar/modal.h"
+#include "riser_sim/scene/scene_yaml.h"
 #include "riser_sim/spatial/run_builder.h"
 
 using namespace riser_sim_test;

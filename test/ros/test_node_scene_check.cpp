@@ -1,7 +1,7 @@
 // node_scene_check.test: the node runs a 3D scene the loader accepts (spatial_swing.yaml with
 // solver.jacobian structured): it starts from the statics at the vessel's pose and publishes tension.
 #include "node_test_util.h"
-#include "riser_sim/scene_yaml.h"
+#include "riser_sim/scene/scene_yaml.h"
 #include "riser_sim/spatial/run_builder.h"
 
 using namespace riser_sim_test;

@@ -260,7 +260,7 @@ TEST(NodeSectionsAttachments, FloatsAndClumpMarkersSitAtTheirArcLength) {
                rho = scene["environment"]["water"]["density"].as<double>();
   const int n = scene["line"]["elements"].as<int>();
   ASSERT_FALSE(scene["line"]["axial_flexibility"].as<bool>()) << "the walk along the line needs it inextensible";
-  std::vector<double> l(n + 1, length / n);  // the rfes' unstretched lengths (riser_sim/model.h)
+  std::vector<double> l(n + 1, length / n);  // the rfes' unstretched lengths (riser_sim/planar/model.h)
   l.front() = l.back() = 0.5 * length / n;
   const YAML::Node att = scene["attachments"];
   ASSERT_EQ(att.size(), 4u);

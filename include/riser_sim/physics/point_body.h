@@ -12,8 +12,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "riser_sim/attachment.h"
-#include "riser_sim/forces/seabed.h"
+#include "riser_sim/line/attachment.h"
+#include "riser_sim/planar/forces/seabed.h"
 #include "riser_sim/physics/seabed_contact.h"
 
 namespace riser_sim {

@@ -16,15 +16,15 @@
 namespace riser_sim {
 namespace spatial {
 
-class SpatialModel;
+class Model3;
 
 // Adds -∂V/∂e_i of the axes' part (frames turned minimally; any |e_i|) to Q's e parts and -∂V/∂(spin_i) to
 // moment[i] [N m], at the spins θ (rfe 0's 0 when the hang-off holds it) in the frames f. Nothing without
-// SpatialModel::hasBendingAxes(). Zero within BendingSpring::kFoldedTol of a fully folded joint, as the spring.
-void addBendingAxesForces(const SpatialModel& model, const Kinematics3& kin, const double* theta, const TwistFrames& f,
+// Model3::hasBendingAxes(). Zero within BendingSpring::kFoldedTol of a fully folded joint, as the spring.
+void addBendingAxesForces(const Model3& model, const Kinematics3& kin, const double* theta, const TwistFrames& f,
                           AlignedVector<Vec3>& m1, VecX& Q, double* moment);
 // Σ_k (σ/4) Σ_j κᵀ P_j κ [J] (the part beyond the isotropic spring's ½ (Ē/d) θ²; may be < 0).
-double bendingAxesEnergy(const SpatialModel& model, const Kinematics3& kin, const double* theta, const TwistFrames& f);
+double bendingAxesEnergy(const Model3& model, const Kinematics3& kin, const double* theta, const TwistFrames& f);
 
 }  // namespace spatial
 }  // namespace riser_sim

@@ -17,8 +17,8 @@
 #include <Eigen/Cholesky>
 #include <memory>
 
-#include "riser_sim/choices.h"
-#include "riser_sim/integrator.h"
+#include "riser_sim/scene/choices.h"
+#include "riser_sim/integrators/integrator.h"
 #include "riser_sim/spatial/model.h"
 #include "riser_sim/spatial/natural_formulation.h"
 #include "riser_sim/spatial/top_motion.h"
@@ -38,7 +38,7 @@ struct SphereCharts {
 
 class IndependentData3 {
  public:
-  IndependentData3(const SpatialModel& model, int coords_per_body, int spins = 0);
+  IndependentData3(const Model3& model, int coords_per_body, int spins = 0);
   double t = 0.0;
   PointMotion3 top;
   Kinematics3 kin;
@@ -68,8 +68,8 @@ class IndependentData3 {
 class IndependentFormulation3 {
  public:
   // stabilization: Baumgarte ω [rad/s] of the pinned end (as NaturalFormulation's, default 50).
-  explicit IndependentFormulation3(const SpatialModel& model, double stabilization = 50.0);
-  const SpatialModel& model() const { return model_; }
+  explicit IndependentFormulation3(const Model3& model, double stabilization = 50.0);
+  const Model3& model() const { return model_; }
   int coordinatesPerBody() const { return k_; }
   int positionSize() const { return k_ * model_.bodies() + nt_; }
   // Torsion on: spin coordinates (rfes firstSpin()..n) and the index of rfe i's φ in θ.
@@ -80,7 +80,7 @@ class IndependentFormulation3 {
 
   // Charts centred on kin's directors (normalised), and y = [θ; θ'] (first 2 positionSize() entries);
   // the joints of kin are assumed closed (positions follow from the top and the directors).
-  // Torsion on: hang_off_ref as in SpatialSimulator::reset.
+  // Torsion on: hang_off_ref as in Simulator3::reset.
   void packState(const Kinematics3& kin, SphereCharts& charts, VecX& y, const HangOff& hang_off = HangOff()) const;
   // Rfe kinematics of y with A_0 moving as top.
   void kinematics(const VecX& y, const SphereCharts& charts, const PointMotion3& top, Kinematics3& kin) const;
@@ -111,7 +111,7 @@ class IndependentFormulation3 {
   double constraintError(const Kinematics3& kin) const;  // pinned end gap [m] (0 free)
 
  private:
-  const SpatialModel& model_;
+  const Model3& model_;
   const double omega_;
   const int k_;   // coordinates per rfe
   const int ku_;  // offset of u inside θ_i (1 with Δ, 0 without)
@@ -129,18 +129,18 @@ class IndependentFormulation3 {
 
 // Runs IndependentFormulation3 with the existing integrators on y = [θ; θ'; W] (W [J]: the work of the top
 // motion and of the non-conservative terms), re-centring the charts between steps (and then telling the
-// integrator the state moved). The same observers as SpatialSimulator.
+// integrator the state moved). The same observers as Simulator3.
 class IndependentSimulator3 : private OdeSystem {
  public:
-  IndependentSimulator3(std::shared_ptr<const SpatialModel> model, std::shared_ptr<const TopMotion3> top,
-                        IntegratorKind kind, const IntegratorOptions& options = {}, double stabilization = 50.0);
+  IndependentSimulator3(std::shared_ptr<const Model3> model, std::shared_ptr<const TopMotion3> top, IntegratorKind kind,
+                        const IntegratorOptions& options = {}, double stabilization = 50.0);
   void reset(const Kinematics3& kin, double t0);        // W = 0; charts centred on kin's directors
   bool step(double h);                                  // one step, then the chart switches
   void setChartThreshold(double u) { threshold_ = u; }  // |u| beyond which a chart moves (default 0.5)
 
   double time() const { return t_; }
   const VecX& state() const { return y_; }
-  const SpatialModel& model() const { return *model_; }
+  const Model3& model() const { return *model_; }
   const IndependentFormulation3& formulation() const { return formulation_; }
   const SphereCharts& charts() const { return charts_; }
   long chartSwitches() const { return charts_.switches; }
@@ -148,7 +148,7 @@ class IndependentSimulator3 : private OdeSystem {
   OdeSystem& system() { return *this; }
 
   void kinematics(Kinematics3& kin) const { formulation_.kinematics(y_, charts_, top_->at(t_), kin); }
-  // Torsion on, after reset(): spin angles and rates per rfe (as SpatialSimulator::setTwist; entry 0 held).
+  // Torsion on, after reset(): spin angles and rates per rfe (as Simulator3::setTwist; entry 0 held).
   void setTwist(const VecX& theta, const VecX& omega);
   void positions(AlignedVector<Vec3>& p) const;  // A_0..A_n and the end E_n [m] (n + 2)
   double kineticEnergy() const;
@@ -161,7 +161,7 @@ class IndependentSimulator3 : private OdeSystem {
  private:
   void rhs(double t, const VecX& y, VecX& dy) override;
 
-  std::shared_ptr<const SpatialModel> model_;
+  std::shared_ptr<const Model3> model_;
   std::shared_ptr<const TopMotion3> top_;
   IndependentFormulation3 formulation_;
   std::unique_ptr<IndependentData3> data_;

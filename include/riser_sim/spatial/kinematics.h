@@ -5,8 +5,8 @@
 #include <Eigen/Geometry>
 #include <vector>
 
-#include "riser_sim/kinematics.h"
-#include "riser_sim/model.h"
+#include "riser_sim/planar/kinematics.h"
+#include "riser_sim/planar/model.h"
 
 namespace riser_sim {
 namespace spatial {

@@ -14,12 +14,12 @@
 #include <vector>
 
 #include "riser_sim/spatial/model.h"
-#include "riser_sim/spatial/statics.h"  // SpatialModalOptions; the equilibria the modes are about
+#include "riser_sim/spatial/statics.h"  // ModalOptions3; the equilibria the modes are about
 
 namespace riser_sim {
 namespace spatial {
 
-struct SpatialMode {
+struct Mode3 {
   double omega2 = 0.0;            // ω² [1/s²]; < 0: unstable in this direction
   double omega = 0.0;             // [rad/s], 0 when ω² <= 0
   double axial_fraction = 0.0;    // share of θᵀ M θ in the Δ coordinates, 0..1
@@ -35,9 +35,9 @@ struct SpatialMode {
   AlignedVector<Vec3> displacement;
 };
 
-struct SpatialModalResult {
+struct ModalResult3 {
   Kinematics3 equilibrium;            // the state the modes are about
-  std::vector<SpatialMode> modes;     // every mode, lowest first
+  std::vector<Mode3> modes;           // every mode, lowest first
   double equilibrium_residual = 0.0;  // max |Q_θ| / (total weight x length): ~0 at equilibrium
   double asymmetry = 0.0;             // ||K - Kᵀ||_F / ||K||_F before symmetrisation
   MatX stiffness, mass;
@@ -47,9 +47,9 @@ struct SpatialModalResult {
 // the anchor's force a dead load). Throws std::runtime_error when the eigen-solve fails.
 // material_axes (torsion on, given and not empty): the equilibrium's spins as each rfe's material axis 1 (a line
 // twisted by bending axes, statics.h); else untwisted.
-SpatialModalResult computeSpatialModes(const SpatialModel& model, const Kinematics3& equilibrium,
-                                       const SpatialModalOptions& options = SpatialModalOptions(),
-                                       const AlignedVector<Vec3>* material_axes = nullptr);
+ModalResult3 computeSpatialModes(const Model3& model, const Kinematics3& equilibrium,
+                                 const ModalOptions3& options = ModalOptions3(),
+                                 const AlignedVector<Vec3>* material_axes = nullptr);
 
 }  // namespace spatial
 }  // namespace riser_sim

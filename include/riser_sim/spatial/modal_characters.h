@@ -14,12 +14,12 @@ constexpr double kPairTolerance = 1e-6;  // relative ω² gap of a degenerate pa
 
 // "torsional" (most of θᵀ M θ in the spins), "axial" (most of the kinetic energy along the line), else
 // "out-of-plane" when most of Σ|d_p|² is along the plane's normal n, "in-plane" otherwise.
-const char* modeCharacter(const SpatialMode& m, const Vec3& n);
+const char* modeCharacter(const Mode3& m, const Vec3& n);
 
 // A degenerate pair (bending, ω² within kPairTolerance) spans a plane of shapes and any M-orthonormal rotation of
 // it is as good: each is rotated (θ and displacements) onto the eigenvectors of the out-of-plane form, least out
 // of the plane first. `modes` lowest first.
-void alignDegeneratePairs(std::vector<SpatialMode>& modes, const Vec3& n);
+void alignDegeneratePairs(std::vector<Mode3>& modes, const Vec3& n);
 
 }  // namespace spatial
 }  // namespace riser_sim

@@ -5,7 +5,7 @@
 #include <memory>
 #include <vector>
 
-#include "riser_sim/model.h"
+#include "riser_sim/planar/model.h"
 #include "riser_sim/spatial/kinematics.h"
 #include "riser_sim/spatial/top_motion.h"
 #include "riser_sim/spatial/torsion.h"
@@ -13,19 +13,19 @@
 namespace riser_sim {
 namespace spatial {
 
-class SpatialForceTerm;
+class ForceTerm3;
 
-class SpatialModel {
+class Model3 {
  public:
   // gravity: acceleration vector [m/s^2], default (0, 0, -9.81)-like; the held planar Model gets |gravity|.
-  SpatialModel(double length, int segments, const LineProperties& props, const ModelOptions& options, double end_mass,
-               const Vec3& gravity);
+  Model3(double length, int segments, const LineProperties& props, const ModelOptions& options, double end_mass,
+         const Vec3& gravity);
   // Sections from the top and bend stiffeners (line_sections.h), as the planar Model.
-  SpatialModel(const std::vector<LineSection>& sections, const std::vector<BendStiffener>& stiffeners,
-               const ModelOptions& options, double end_mass, const Vec3& gravity);
-  ~SpatialModel();
-  SpatialModel(const SpatialModel&) = delete;
-  SpatialModel& operator=(const SpatialModel&) = delete;
+  Model3(const std::vector<LineSection>& sections, const std::vector<BendStiffener>& stiffeners,
+         const ModelOptions& options, double end_mass, const Vec3& gravity);
+  ~Model3();
+  Model3(const Model3&) = delete;
+  Model3& operator=(const Model3&) = delete;
 
   const Model& line() const { return line_; }  // the discretisation (its own terms are not used)
   // A point mass on rfe i (Model::addPointMass): an attachment (attachment.h).
@@ -74,8 +74,8 @@ class SpatialModel {
   double bendingSplit() const { return split_; }      // σ = (EI_1 - EI_2) / (2d) [N m/rad]
   const Vec3& bendingAxis() const { return axis1_; }  // zero without axes
 
-  void addTerm(std::unique_ptr<SpatialForceTerm> term);
-  const std::vector<std::unique_ptr<SpatialForceTerm>>& terms() const { return terms_; }
+  void addTerm(std::unique_ptr<ForceTerm3> term);
+  const std::vector<std::unique_ptr<ForceTerm3>>& terms() const { return terms_; }
 
  private:
   Model line_;
@@ -83,7 +83,7 @@ class SpatialModel {
   BottomBoundary bottom_ = BottomBoundary::kFree;
   Vec3 bottom_point_ = Vec3::Zero();
   std::shared_ptr<const TopMotion3> bottom_motion_;
-  std::vector<std::unique_ptr<SpatialForceTerm>> terms_;
+  std::vector<std::unique_ptr<ForceTerm3>> terms_;
   TorsionProperties torsion_;
   bool has_torsion_ = false;
   bool has_axes_ = false;

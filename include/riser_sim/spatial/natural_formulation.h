@@ -36,10 +36,10 @@ struct Reactions3 {
 class NaturalData {
  public:
   // dense_path: the dense path's per-rfe W, WE too (NaturalFormulation with closed_form false).
-  NaturalData(const SpatialModel& model, bool dense_path);
+  NaturalData(const Model3& model, bool dense_path);
   double t = 0.0;
   PointMotion3 top;
-  PointMotion3 bottom;  // the pinned bottom's anchor at t (SpatialModel::bottomAt)
+  PointMotion3 bottom;  // the pinned bottom's anchor at t (Model3::bottomAt)
   Kinematics3 kin;
   Reactions3 reactions;
   double term_power = 0.0;        // summed non-conservative power of the terms [W]
@@ -85,8 +85,8 @@ class NaturalFormulation {
   // closed_form: per-rfe inverse in closed form (the mass matrix splits exactly into the direction of e,
   // where the unit-length constraint prescribes n·e'', and the plane across it); false: a dense 7x7
   // Cholesky and a Schur step (the general path for terms with inertia later; a cross-check now).
-  NaturalFormulation(const SpatialModel& model, double stabilization, bool closed_form = true);
-  const SpatialModel& model() const { return model_; }
+  NaturalFormulation(const Model3& model, double stabilization, bool closed_form = true);
+  const Model3& model() const { return model_; }
   // y = [q; θ; v; ω; rest]: θ, ω (one per rfe) only with torsion on (torsion.h); θ_0 = ω_0 = 0 (held).
   int positionSize() const { return model_.dofs() + twistDofs(); }
   int twistDofs() const { return model_.hasTorsion() ? model_.bodies() : 0; }
@@ -132,7 +132,7 @@ class NaturalFormulation {
   void closedFormBody(int i, NaturalData& d) const;
   void jointReactions(NaturalData& d) const;  // joint_reactions.cpp
   static void closedFormAcceleration(const NaturalData::Body& c, const Vec7& f, double* udd);
-  const SpatialModel& model_;
+  const Model3& model_;
   const double omega_;
   const bool closed_form_;
 };

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <string>
 
-#include "riser_sim/scene.h"
+#include "riser_sim/scene/scene.h"
 #include "riser_sim/spatial/kinematics.h"
 #include "riser_sim/spatial/torsion.h"
 

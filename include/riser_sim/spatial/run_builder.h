@@ -1,5 +1,5 @@
 // A 3D run from a scene with `space: spatial` (docs/spatial.md, "Running a 3D scene"): the spatial model
-// (only the terms the scene lists), the top motion in 3D, the initial state and a SpatialSimulator,
+// (only the terms the scene lists), the top motion in 3D, the initial state and a Simulator3,
 // watched for divergence and energy balance as the planar Simulator is. What the 3D core cannot run yet
 // is refused naming the section (unsupported()), never dropped.
 //
@@ -14,8 +14,8 @@
 #include <string>
 #include <vector>
 
-#include "riser_sim/force_noise.h"
-#include "riser_sim/scene.h"
+#include "riser_sim/run/force_noise.h"
+#include "riser_sim/scene/scene.h"
 #include "riser_sim/spatial/forces/flex_joint.h"
 #include "riser_sim/spatial/simulator.h"
 
@@ -68,9 +68,9 @@ class VelocityProfileMotion3 : public TopMotion3 {
 // top.motion (or bottom.motion, the same keys) in 3D; external is held at spec.position3 (the CLI has no feed).
 std::unique_ptr<TopMotion3> buildTopMotion3(const TopMotionSpec& spec);
 // The scene's line in 3D: gravity (0, 0, -g), axial and bending terms as the scene lists them, the end
-// mass, the bottom free or pinned at bottom.position (held fixed: SpatialRun adds the bottom's motion and
+// mass, the bottom free or pinned at bottom.position (held fixed: Run3 adds the bottom's motion and
 // the flex joints, whose default axes come from the initial state).
-std::shared_ptr<SpatialModel> buildSpatialModel(const Scene& scene);
+std::shared_ptr<Model3> buildSpatialModel(const Scene& scene);
 
 struct InitialState3 {
   Kinematics3 kin;                // at rest
@@ -86,7 +86,7 @@ struct InitialState3 {
   double max_twist_moment = 0.0;
   double twist_moment_bound = 0.0;
   AlignedVector<Vec3> material_axes;
-  HangOff hang_off;  // then also the hang-off's twist frame the statics held (SpatialSimulator::reset)
+  HangOff hang_off;  // then also the hang-off's twist frame the statics held (Simulator3::reset)
 };
 
 // The initial state (initial_state.cpp). The scene without its waves: what the statics and the equilibrium check see
@@ -120,7 +120,7 @@ struct FlexJoints3 {
   const FlexJoint* bottom = nullptr;
   std::string loaded;
 };
-FlexJoints3 addFlexJoints(const Scene& scene, const Kinematics3& initial, SpatialModel& model,
+FlexJoints3 addFlexJoints(const Scene& scene, const Kinematics3& initial, Model3& model,
                           const std::shared_ptr<const TopMotion3>& top_holder = nullptr,
                           const std::shared_ptr<const TopMotion3>& bottom_holder = nullptr);
 
@@ -154,11 +154,11 @@ struct RunInputs3 {
   StaticsProgress statics_progress;                 // optional: the planar statics report their progress
 };
 
-class SpatialRun {
+class Run3 {
  public:
   // Throws std::invalid_argument("key: ...") for what the 3D core cannot run, std::runtime_error
   // ("initial: ...") when the initial state fails.
-  explicit SpatialRun(const Scene& scene, RunInputs3 inputs = {});
+  explicit Run3(const Scene& scene, RunInputs3 inputs = {});
 
   // One step of solver.dt; false once diverged (divergenceReason() names the cause and solver.dt).
   bool step();
@@ -176,7 +176,7 @@ class SpatialRun {
   double maxBottomMoment() const { return max_moment_[1]; }
   const LineOutputs3& outputs();
 
-  // Stability of the explicit schemes, estimated at the initial state (SpatialSimulator::estimateStability,
+  // Stability of the explicit schemes, estimated at the initial state (Simulator3::estimateStability,
   // docs/spatial.md "Stability"): ω_max [rad/s] and the largest stable step of solver.integrator when it is
   // an explicit fixed-step scheme (rk4's otherwise, for reference) [s].
   double highestFrequency() const { return sim_->highestFrequency(); }
@@ -189,22 +189,22 @@ class SpatialRun {
   const ForceNoiseMonitor& forceNoise() const { return noise_; }
   std::string forceWarning(const ForceNoise& e) const;
 
-  const SpatialModel& model() const { return *model_; }
+  const Model3& model() const { return *model_; }
   const InitialState3& initial() const { return initial_; }
   bool bottomMoves() const { return model_->bottomMoves(); }
   bool hasTorsion() const { return model_->hasTorsion(); }
   const FlexJoint* topFlexJoint() const { return top_joint_; }  // nullptr: pinned (free rotation)
   const FlexJoint* bottomFlexJoint() const { return bottom_joint_; }
-  SpatialSimulator& simulator() { return *sim_; }
+  Simulator3& simulator() { return *sim_; }
 
  private:
   void trackMoments();
   void sampleForces();
-  std::shared_ptr<SpatialModel> model_;
+  std::shared_ptr<Model3> model_;
   InitialState3 initial_;
   const FlexJoint* top_joint_ = nullptr;
   const FlexJoint* bottom_joint_ = nullptr;
-  std::unique_ptr<SpatialSimulator> sim_;
+  std::unique_ptr<Simulator3> sim_;
   IntegratorKind integrator_kind_;
   double rho_inf_;
   ForceNoiseMonitor noise_;

@@ -2,7 +2,7 @@
 // spatial natural formulation (constrained, Baumgarte-stabilised). With x_q = b_q + c x_v the velocity
 // increment solves the KKT system
 //   (M + c C + c² K) x_v + Gᵀ ν = M b_v - c K b_q,     (g + c p + c² r) x_v = g b_v - c r b_q (every row),
-// where M is the 7x7 mass per rfe, K, C the terms' linearisation (SpatialForceTerm::addStiffness) plus the
+// where M is the 7x7 mass per rfe, K, C the terms' linearisation (ForceTerm3::addStiffness) plus the
 // mass matrix's and the velocity terms' dependence on q, v and the geometric stiffness of the constraint
 // forces (the director multiplier on e, the joint force on Δ-e). A constraint row is its Baumgarte law
 // linearised on the increment, g δa + p δv + r δq = 0 (g = ∂c/∂q; for A-type rows p = 2ωg, r = ω²g and the
@@ -34,7 +34,7 @@ namespace spatial {
 
 class ShiftedSolver3 {
  public:
-  ShiftedSolver3(const SpatialModel& model, double stabilization);
+  ShiftedSolver3(const Model3& model, double stabilization);
   // Linearisation at the evaluation d (its kinematics, forces, joint reactions) with its accelerations
   // acc = v' (7 per rfe).
   void setLinearization(const NaturalData& d, const Eigen::Ref<const VecX>& acc);
@@ -99,7 +99,7 @@ class ShiftedSolver3 {
   template <typename In, typename Out>
   void applyPhi(int i, const In& v, Out& out) const;
 
-  const SpatialModel& model_;
+  const Model3& model_;
   const double omega_;
   const int nb_, nq_, nt_, vo_;  // rfes, natural coordinates, twist coordinates, offset of v in y
   const bool axial_;
@@ -107,7 +107,7 @@ class ShiftedSolver3 {
   AlignedVector<Body> body_;  // nb_ + 1 (the last: the pinned end's block)
   AlignedVector<Mat7> M_;     // per rfe: the mass, added mass included
   bool added_ = false;        // the last linearisation had added mass (the solve reads M_)
-  SpatialStiffness S_;
+  Stiffness3 S_;
   AlignedVector<Mat3> turn_;  // followDirectors' R_i
   bool turning_ = false;
   VecX b_turned_;                       // the right side's rates turned back (entries vo_..vo_ + nq_)

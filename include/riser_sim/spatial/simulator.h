@@ -10,8 +10,8 @@
 #include <cmath>
 #include <memory>
 
-#include "riser_sim/choices.h"
-#include "riser_sim/integrator.h"
+#include "riser_sim/scene/choices.h"
+#include "riser_sim/integrators/integrator.h"
 #include "riser_sim/spatial/natural_formulation.h"
 #include "riser_sim/spatial/shifted_solver.h"
 
@@ -19,10 +19,10 @@ namespace riser_sim {
 class OneStageImplicit;  // implicit_integrators.h
 namespace spatial {
 
-class SpatialSimulator : private OdeSystem {
+class Simulator3 : private OdeSystem {
  public:
-  SpatialSimulator(std::shared_ptr<const SpatialModel> model, std::shared_ptr<const TopMotion3> top,
-                   IntegratorKind kind, const IntegratorOptions& options = {}, double stabilization = 50.0);
+  Simulator3(std::shared_ptr<const Model3> model, std::shared_ptr<const TopMotion3> top, IntegratorKind kind,
+             const IntegratorOptions& options = {}, double stabilization = 50.0);
   // Starts from the given rfe kinematics at time t0 [s] (projected; W = 0). Torsion on: hang_off_ref is the
   // hang-off's reference at kin's top rfe (zero: made from the model's bending axis, else any).
   void reset(const Kinematics3& kin, double t0, const HangOff& hang_off = HangOff());
@@ -41,7 +41,7 @@ class SpatialSimulator : private OdeSystem {
 
   double time() const { return t_; }
   const VecX& state() const { return y_; }  // [q; θ; v; ω; W] (θ, ω with torsion on)
-  const SpatialModel& model() const { return *model_; }
+  const Model3& model() const { return *model_; }
   const NaturalFormulation& formulation() const { return formulation_; }
   Integrator& integrator() { return *integrator_; }
   OdeSystem& system() { return *this; }
@@ -73,7 +73,7 @@ class SpatialSimulator : private OdeSystem {
   // forward differences: every term, the twist with torsion on, the flex joints, the end mass and the
   // Baumgarte-held joints count) and the largest stable step of the explicit scheme (rk4 for the others)
   // from the Ritz values of the whole Jacobian, damping included. O(n) per probe, ~140 evaluations:
-  // SpatialRun calls it once at the initial state. stableStepEstimate(): that step times
+  // Run3 calls it once at the initial state. stableStepEstimate(): that step times
   // kStabilityFactor3 (a share kept for the motion raising the tension during the run, measured).
   void estimateStability();
   double highestFrequency() const { return omega_max_; }
@@ -87,7 +87,7 @@ class SpatialSimulator : private OdeSystem {
   void solveShifted(const VecX& b, VecX& x) override;
   bool staleNext() const;
 
-  std::shared_ptr<const SpatialModel> model_;
+  std::shared_ptr<const Model3> model_;
   std::shared_ptr<const TopMotion3> top_;
   NaturalFormulation formulation_;
   std::unique_ptr<NaturalData> data_;

@@ -11,7 +11,7 @@ namespace spatial {
 
 using Mat7 = Eigen::Matrix<double, 7, 7>;
 
-struct SpatialStiffness {
+struct Stiffness3 {
   AlignedVector<Mat7> K_diag, C_diag;
   AlignedVector<Mat3> K_sub, K_sup, C_sub;  // e-e
   void resize(int bodies) {

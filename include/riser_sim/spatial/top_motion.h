@@ -5,7 +5,7 @@
 #include <string>
 
 #include "riser_sim/spatial/kinematics.h"
-#include "riser_sim/top_motion.h"
+#include "riser_sim/motion/top_motion.h"
 
 namespace riser_sim {
 namespace spatial {

@@ -66,19 +66,19 @@ struct TwistData {
   void resize(int bodies);
 };
 
-class SpatialModel;
+class Model3;
 
 // The first rfe whose spin is a degree of freedom: 0 with a free or spring-held top, else 1.
-int firstSpin(const SpatialModel& model);
+int firstSpin(const Model3& model);
 // The twisting moment the hang-off holds about the line's axis [N m]: τ_0 held, k_t m_t spring-held, 0 free.
-double hangOffTwist(const SpatialModel& model, const TwistData& d);
+double hangOffTwist(const Model3& model, const TwistData& d);
 // The top spring's twist m_t at (kin, θ_0), unwrapped against f.top_mref [rad].
 double topSpringTwist(const Kinematics3& kin, double theta0, const TwistFrames& f);
 // Spring and damper constants per joint [N m/rad], [N m s/rad] and polar inertia of rfe i [kg m^2] (0 for
 // i = 0 unless the top is free).
-double twistStiffness(const SpatialModel& model);
-double twistDamping(const SpatialModel& model);
-double polarInertia(const SpatialModel& model, int i);
+double twistStiffness(const Model3& model);
+double twistDamping(const Model3& model);
+double polarInertia(const Model3& model, int i);
 
 // The hang-off's twist frame given rather than made at the top rfe: its axis h (unit) and reference r_h (unit,
 // ⟂ h). A zero axis: made at the top rfe (initTwistFrames). The axis is the homokinetic joint's: rfe 0's frame is
@@ -122,10 +122,10 @@ double topSpinRate(const Kinematics3& kin, const TwistFrames& f);
 // Twist forces at (kin, θ, ω): adds the e part (twist, hang-off, gyroscopic J ω e × e', the bending axes') to Q,
 // (a free top: θ_0, ω_0 are rfe 0's own, no hang-off part)
 // fills d.m, d.mdot, d.tau, d.kb, d.moment; returns the dampers' power [W] (<= 0).
-double addTwistForces(const SpatialModel& model, const Kinematics3& kin, const double* theta, const double* omega,
+double addTwistForces(const Model3& model, const Kinematics3& kin, const double* theta, const double* omega,
                       TwistData& d, VecX& Q);
 // Σ ½ (GJ/d) m_k² (+ the top spring's, + the bending axes' part) [J].
-double twistEnergy(const SpatialModel& model, const Kinematics3& kin, const double* theta, TwistData& d);
+double twistEnergy(const Model3& model, const Kinematics3& kin, const double* theta, TwistData& d);
 
 }  // namespace spatial
 }  // namespace riser_sim

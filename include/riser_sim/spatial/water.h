@@ -4,7 +4,7 @@
 // gravity: the level, the depths and the waves are measured along it.
 #pragma once
 #include "riser_sim/spatial/kinematics.h"
-#include "riser_sim/water.h"
+#include "riser_sim/planar/water.h"
 
 namespace riser_sim {
 namespace spatial {

@@ -41,7 +41,7 @@ void materialAxes(const Kinematics3& kin, const double* theta, const TwistFrames
 
 }  // namespace
 
-void addBendingAxesForces(const SpatialModel& model, const Kinematics3& kin, const double* theta, const TwistFrames& f,
+void addBendingAxesForces(const Model3& model, const Kinematics3& kin, const double* theta, const TwistFrames& f,
                           AlignedVector<Vec3>& m1, VecX& Q, double* moment) {
   if (!model.hasBendingAxes()) return;
   const double sigma = model.bendingSplit();
@@ -66,7 +66,7 @@ void addBendingAxesForces(const SpatialModel& model, const Kinematics3& kin, con
   }
 }
 
-double bendingAxesEnergy(const SpatialModel& model, const Kinematics3& kin, const double* theta, const TwistFrames& f) {
+double bendingAxesEnergy(const Model3& model, const Kinematics3& kin, const double* theta, const TwistFrames& f) {
   if (!model.hasBendingAxes() || model.bendingSplit() == 0.0) return 0.0;
   double v = 0.0;
   Vec3 m1a = materialDirector(f, 0, unit(kin[0].e), theta[0]);

@@ -51,7 +51,7 @@ Mat7 massBlock(const Rfe& r, double delta, const Vec3& e) {
 }  // namespace
 
 // llt sized in place: Eigen's LLT(Index) leaves its info unset, so it must not be copied from.
-IndependentData3::IndependentData3(const SpatialModel& model, int k, int spins)
+IndependentData3::IndependentData3(const Model3& model, int k, int spins)
     : kin(model.bodies()), llt(k * model.bodies() + spins) {
   const int nb = model.bodies(), p = k * nb + spins;
   reactions.joint.assign(nb + 1, Vec3::Zero());
@@ -78,7 +78,7 @@ IndependentData3::IndependentData3(const SpatialModel& model, int k, int spins)
   }
 }
 
-IndependentFormulation3::IndependentFormulation3(const SpatialModel& model, double stabilization)
+IndependentFormulation3::IndependentFormulation3(const Model3& model, double stabilization)
     : model_(model),
       omega_(stabilization),
       k_(model.options().axial_flexibility ? 3 : 2),
@@ -318,9 +318,9 @@ int IndependentFormulation3::recentre(VecX& y, SphereCharts& charts, double thre
 
 // ---------------------------------------------------------------------------------------------
 
-IndependentSimulator3::IndependentSimulator3(std::shared_ptr<const SpatialModel> model,
-                                             std::shared_ptr<const TopMotion3> top, IntegratorKind kind,
-                                             const IntegratorOptions& options, double stabilization)
+IndependentSimulator3::IndependentSimulator3(std::shared_ptr<const Model3> model, std::shared_ptr<const TopMotion3> top,
+                                             IntegratorKind kind, const IntegratorOptions& options,
+                                             double stabilization)
     : model_(std::move(model)),
       top_(std::move(top)),
       formulation_(*model_, stabilization),

@@ -25,12 +25,12 @@ double planarBendingStiffness(const Scene& scene, const Vec3& normal, bool& prin
 }
 
 void twistedEquilibrium(const Scene& scene, bool held_end, const Vec2& xy, InitialState3& init) {
-  const std::shared_ptr<SpatialModel> model = buildSpatialModel(stillWater(scene));
+  const std::shared_ptr<Model3> model = buildSpatialModel(stillWater(scene));
   if (!held_end && scene.bottom != BottomBoundary::kPinned && init.end_force.squaredNorm() > 0.0)
     model->addTerm(std::make_unique<EndLoad>(init.end_force));
   // A line bent between soft axes twists far from its untwisted guess, and Newton from there may land on an
   // unstable equilibrium (the stiff axis bent): ask for a stable one (statics.h).
-  SpatialModalOptions settle;
+  ModalOptions3 settle;
   settle.stable = true;
   // The hang-off's twist frame: line.bending_axis across the guess's top rfe, the joint's axis along it. Held as
   // given by Newton and by the run (its axis is part of the joint's law: torsion.h, HangOff).

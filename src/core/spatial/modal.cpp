@@ -13,13 +13,13 @@ namespace spatial {
 
 using detail::RestLine;
 
-SpatialModalResult computeSpatialModes(const SpatialModel& model, const Kinematics3& equilibrium,
-                                       const SpatialModalOptions& options, const AlignedVector<Vec3>* material_axes) {
+ModalResult3 computeSpatialModes(const Model3& model, const Kinematics3& equilibrium, const ModalOptions3& options,
+                                 const AlignedVector<Vec3>* material_axes) {
   if (!(options.fd_step > 0.0)) throw std::invalid_argument("spatial modal fd_step: must be > 0");
   if (model.bottomMoves()) throw std::invalid_argument("spatial modal: a fixed or free bottom only (not a moving one)");
   RestLine line(model, equilibrium, options.fd_step, material_axes, options.hang_off);
   const VecX theta0 = line.theta();
-  SpatialModalResult res;
+  ModalResult3 res;
   res.equilibrium = line.kinematics(theta0, model);
   res.equilibrium_residual = line.residual(theta0, model);
   // Pinned: the anchor's force as a dead load at the end (its geometric stiffness is the constraint's), the
@@ -45,7 +45,7 @@ SpatialModalResult computeSpatialModes(const SpatialModel& model, const Kinemati
   Eigen::GeneralizedSelfAdjointEigenSolver<MatX> es(0.5 * (Kr + Kr.transpose()), 0.5 * (Mr + Mr.transpose()));
   if (es.info() != Eigen::Success) throw std::runtime_error("spatial modal: the generalised eigen-solve failed");
   for (int m = 0; m < int(Kr.rows()); ++m) {
-    SpatialMode mode;
+    Mode3 mode;
     mode.omega2 = es.eigenvalues()[m];
     mode.omega = mode.omega2 > 0.0 ? std::sqrt(mode.omega2) : 0.0;
     mode.theta = pinned ? VecX(N * es.eigenvectors().col(m)) : VecX(es.eigenvectors().col(m));

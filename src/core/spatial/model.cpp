@@ -1,6 +1,6 @@
 #include "riser_sim/spatial/model.h"
 
-#include "riser_sim/force_term.h"  // the held planar Model destroys its (empty) term list
+#include "riser_sim/planar/force_term.h"  // the held planar Model destroys its (empty) term list
 #include "riser_sim/spatial/force_term.h"
 
 #include <cmath>
@@ -9,12 +9,12 @@
 namespace riser_sim {
 namespace spatial {
 
-SpatialModel::SpatialModel(double length, int segments, const LineProperties& props, const ModelOptions& options,
-                           double end_mass, const Vec3& gravity)
+Model3::Model3(double length, int segments, const LineProperties& props, const ModelOptions& options, double end_mass,
+               const Vec3& gravity)
     : line_(length, segments, props, options, end_mass, gravity.norm()), gravity_(gravity) {}
 
-SpatialModel::SpatialModel(const std::vector<LineSection>& sections, const std::vector<BendStiffener>& stiffeners,
-                           const ModelOptions& options, double end_mass, const Vec3& gravity)
+Model3::Model3(const std::vector<LineSection>& sections, const std::vector<BendStiffener>& stiffeners,
+               const ModelOptions& options, double end_mass, const Vec3& gravity)
     : line_(sections, stiffeners, options, end_mass, gravity.norm()), gravity_(gravity) {}
 
 namespace {
@@ -25,9 +25,9 @@ bool equalSegments(const Model& m) {
 }
 }  // namespace
 
-SpatialModel::~SpatialModel() = default;
+Model3::~Model3() = default;
 
-void SpatialModel::setTorsion(const TorsionProperties& t) {
+void Model3::setTorsion(const TorsionProperties& t) {
   if (!(t.stiffness > 0.0 && t.polar_inertia > 0.0 && t.damping >= 0.0 && t.end_polar_inertia >= 0.0))
     throw std::invalid_argument(
         "spatial torsion: GJ and the polar inertia per length must be > 0, the damping and "
@@ -40,7 +40,7 @@ void SpatialModel::setTorsion(const TorsionProperties& t) {
   has_torsion_ = true;
 }
 
-void SpatialModel::setBendingAxes(double EI1, double EI2, const Vec3& axis1) {
+void Model3::setBendingAxes(double EI1, double EI2, const Vec3& axis1) {
   if (!has_torsion_) throw std::invalid_argument("bending axes: need torsion (the material axes turn with the spin)");
   if (!line_.uniform())
     throw std::invalid_argument("line.EI: a pair [EI_1, EI_2] needs a line without sections or a stiffener");
@@ -55,13 +55,13 @@ void SpatialModel::setBendingAxes(double EI1, double EI2, const Vec3& axis1) {
   axis1_ = axis1.normalized();
 }
 
-void SpatialModel::setBottomMotion(std::shared_ptr<const TopMotion3> motion) {
+void Model3::setBottomMotion(std::shared_ptr<const TopMotion3> motion) {
   bottom_ = BottomBoundary::kPinned;
   bottom_point_ = motion->at(0.0).p;
   bottom_motion_ = std::move(motion);
 }
 
-void SpatialModel::addTerm(std::unique_ptr<SpatialForceTerm> term) { terms_.push_back(std::move(term)); }
+void Model3::addTerm(std::unique_ptr<ForceTerm3> term) { terms_.push_back(std::move(term)); }
 
 }  // namespace spatial
 }  // namespace riser_sim

@@ -14,7 +14,7 @@
 namespace riser_sim {
 namespace spatial {
 
-NaturalData::NaturalData(const SpatialModel& model, bool dense_path) : kin(model.bodies()) {
+NaturalData::NaturalData(const Model3& model, bool dense_path) : kin(model.bodies()) {
   const int nb = model.bodies(), nc = nb + 1;
   reactions.joint.assign(nc, Vec3::Zero());
   Q.setZero(model.dofs());
@@ -35,7 +35,7 @@ NaturalData::NaturalData(const SpatialModel& model, bool dense_path) : kin(model
     if (term->hasInertia()) added.assign(nb, AddedMass3());
 }
 
-NaturalFormulation::NaturalFormulation(const SpatialModel& model, double stabilization, bool closed_form)
+NaturalFormulation::NaturalFormulation(const Model3& model, double stabilization, bool closed_form)
     : model_(model), omega_(stabilization), closed_form_(closed_form) {}
 
 void NaturalFormulation::packState(const Kinematics3& kin, VecX& y) const {

@@ -17,18 +17,18 @@ namespace spatial {
 namespace {
 
 // Q = -α ∂T/∂q' = -α M q': per part, the force -α m_p v_p at its centre and the couple -α J_p e' on e.
-class MassDamping : public SpatialForceTerm {
+class MassDamping : public ForceTerm3 {
  public:
   explicit MassDamping(double alpha) : alpha_(alpha) {}
   std::string name() const override { return "relaxation_damping"; }
-  void addForces(const SpatialModel& model, const Kinematics3& kin, double t, VecX& Q) const override {
+  void addForces(const Model3& model, const Kinematics3& kin, double t, VecX& Q) const override {
     sweep(model, kin, &Q);
   }
-  double potentialEnergy(const SpatialModel&, const Kinematics3&, double) const override { return 0.0; }
-  double power(const SpatialModel& model, const Kinematics3& kin, double) const override {
+  double potentialEnergy(const Model3&, const Kinematics3&, double) const override { return 0.0; }
+  double power(const Model3& model, const Kinematics3& kin, double) const override {
     return sweep(model, kin, nullptr);
   }
-  void addStiffness(const SpatialModel& model, const Kinematics3& kin, double, SpatialStiffness& S) const override {
+  void addStiffness(const Model3& model, const Kinematics3& kin, double, Stiffness3& S) const override {
     for (int i = 0; i < model.bodies(); ++i) {
       const Rfe& r = model.rfe(i);
       for (int p = 0; p < r.num_parts; ++p) {
@@ -41,7 +41,7 @@ class MassDamping : public SpatialForceTerm {
   }
 
  private:
-  double sweep(const SpatialModel& model, const Kinematics3& kin, VecX* Q) const {
+  double sweep(const Model3& model, const Kinematics3& kin, VecX* Q) const {
     double pw = 0.0;
     for (int i = 0; i < model.bodies(); ++i) {
       const Rfe& r = model.rfe(i);
@@ -105,7 +105,7 @@ Relaxed3 relaxToRest(const Scene& scene, const Kinematics3& guess_in, const Vec3
         std::min(dragless.torsion.polar_inertia, dragless.line.mass_per_length * D * D / 8.0);
   // The seabed's friction and tangential damper vanish at rest; they would only slow the creep to it.
   dragless.seabed.friction_axial = dragless.seabed.friction_lateral = dragless.seabed.damping_tangential = 0.0;
-  std::shared_ptr<SpatialModel> model = buildSpatialModel(dragless);
+  std::shared_ptr<Model3> model = buildSpatialModel(dragless);
   const HydroSpec& hs = still.hydro;
   if (still.water.enabled && hs.enabled && (hs.drag_normal > 0.0 || hs.drag_tangential > 0.0))
     model->addTerm(
@@ -128,8 +128,8 @@ Relaxed3 relaxToRest(const Scene& scene, const Kinematics3& guess_in, const Vec3
   io.jacobian = JacobianKind::kStructured;
   io.rho_inf = 0.0;
   io.tolerance = scene.solver.tolerance;
-  SpatialSimulator sim(model, std::make_unique<FixedMotion3>(top), IntegratorKind::kGeneralizedAlpha, io,
-                       scene.solver.stabilization);
+  Simulator3 sim(model, std::make_unique<FixedMotion3>(top), IntegratorKind::kGeneralizedAlpha, io,
+                 scene.solver.stabilization);
   sim.reset(guess, 0.0);
   Relaxed3 out;
   if (model->hasTorsion()) {  // the hang-off's frame the run holds: the check uses the same (torsion.h, HangOff)

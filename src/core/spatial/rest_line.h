@@ -17,8 +17,8 @@ namespace detail {
 class RestLine {
  public:
   // axes (torsion on, when given and not empty): the guess's material axes 1 per rfe, its spins (else untwisted).
-  // hang_off_ref: as SpatialSimulator::reset's.
-  RestLine(const SpatialModel& model, const Kinematics3& kin, double fd_step, const AlignedVector<Vec3>* axes = nullptr,
+  // hang_off_ref: as Simulator3::reset's.
+  RestLine(const Model3& model, const Kinematics3& kin, double fd_step, const AlignedVector<Vec3>* axes = nullptr,
            const HangOff& hang_off = HangOff())
       : f_(model), data_(f_.makeData()), p_(f_.positionSize()), fd_step_(fd_step) {
     top_.p = kin[0].A;
@@ -55,11 +55,11 @@ class RestLine {
     forces(theta);
     return data_->Phi;
   }
-  Vec3 endGap(const VecX& theta, const SpatialModel& model) {
+  Vec3 endGap(const VecX& theta, const Model3& model) {
     return kinematics(theta, model).back().end() - model.bottomPoint();
   }
   // The anchor's force λ on the end that balances Q_θ in least squares (Φᵀ λ = -Q_θ; 0 for a free end).
-  Vec3 anchorForce(const VecX& theta, const SpatialModel& model) {
+  Vec3 anchorForce(const VecX& theta, const Model3& model) {
     if (model.bottom() != BottomBoundary::kPinned) return Vec3::Zero();
     const VecX Q = forces(theta);
     return data_->Phi.transpose().colPivHouseholderQr().solve(-Q);
@@ -70,7 +70,7 @@ class RestLine {
     if (lambda.squaredNorm() > 0.0) Q += data_->Phi.transpose() * lambda;
     return Q;
   }
-  MatX stiffness(const VecX& theta0, const SpatialModel& model, const Vec3& lambda = Vec3::Zero()) {
+  MatX stiffness(const VecX& theta0, const Model3& model, const Vec3& lambda = Vec3::Zero()) {
     MatX K(p_, p_);
     VecX th = theta0, Qp;
     for (int c = 0; c < p_; ++c) {
@@ -84,7 +84,7 @@ class RestLine {
     return K;
   }
   // C = -∂Q_θ/∂θ' at θ' = 0 (drag, damping; the velocity-product terms vanish there): central differences.
-  MatX damping(const VecX& theta0, const SpatialModel& model) {
+  MatX damping(const VecX& theta0, const Model3& model) {
     MatX C(p_, p_);
     y_.head(p_) = theta0;
     for (int c = 0; c < p_; ++c) {
@@ -101,7 +101,7 @@ class RestLine {
   }
   // Max |Q_θ + Φᵀ λ| (λ the anchor's force, pinned) relative to the weight (Δ rows, N) and to weight x length
   // (chart rows, N m).
-  double residual(const VecX& theta, const SpatialModel& model) {
+  double residual(const VecX& theta, const Model3& model) {
     const VecX Q = loaded(theta, anchorForce(theta, model));
     double w = 0.0;
     for (int i = 0; i < model.bodies(); ++i) w += model.rfe(i).mass;
@@ -110,14 +110,14 @@ class RestLine {
     for (int c = 0; c < p_; ++c) r = std::max(r, std::abs(Q[c]) / (isDelta(c) ? w : w * model.line().length()));
     return r;
   }
-  Kinematics3 kinematics(const VecX& theta, const SpatialModel& model) {
+  Kinematics3 kinematics(const VecX& theta, const Model3& model) {
     y_.head(p_) = theta;
     Kinematics3 kin(model.bodies());
     f_.kinematics(y_, charts_, top_, kin);
     return kin;
   }
   // Torsion on: material axis 1 of every rfe at θ (world, unit; frame-free: the spins' result); else untouched.
-  void materialAxes(const VecX& theta, const SpatialModel& model, AlignedVector<Vec3>* axes) {
+  void materialAxes(const VecX& theta, const Model3& model, AlignedVector<Vec3>* axes) {
     if (!axes || !model.hasTorsion()) return;
     const Kinematics3 kin = kinematics(theta, model);
     axes->resize(model.bodies());

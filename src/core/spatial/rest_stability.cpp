@@ -7,8 +7,8 @@
 namespace riser_sim {
 namespace spatial {
 
-LinearStability spatialStability(const SpatialModel& model, const Kinematics3& equilibrium, bool held_end,
-                                 const SpatialModalOptions& options, const AlignedVector<Vec3>* material_axes) {
+LinearStability spatialStability(const Model3& model, const Kinematics3& equilibrium, bool held_end,
+                                 const ModalOptions3& options, const AlignedVector<Vec3>* material_axes) {
   detail::RestLine line(model, equilibrium, options.fd_step, material_axes, options.hang_off);
   const VecX theta0 = line.theta();
   const bool pinned = model.bottom() == BottomBoundary::kPinned;

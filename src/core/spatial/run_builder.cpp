@@ -5,8 +5,8 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "riser_sim/force_registry.h"
-#include "riser_sim/initial_velocity.h"
+#include "riser_sim/run/force_registry.h"
+#include "riser_sim/run/initial_velocity.h"
 #include "riser_sim/spatial/force_term.h"
 #include "riser_sim/spatial/forces/attachments.h"
 #include "riser_sim/spatial/forces/axial_spring.h"
@@ -18,7 +18,7 @@
 #include "riser_sim/spatial/forces/gravity.h"
 #include "riser_sim/spatial/forces/morison_drag.h"
 #include "riser_sim/spatial/forces/seabed.h"
-#include "riser_sim/stability_estimate.h"
+#include "riser_sim/run/stability_estimate.h"
 
 namespace riser_sim {
 namespace spatial {
@@ -121,9 +121,9 @@ std::unique_ptr<TopMotion3> buildTopMotion3(const TopMotionSpec& spec) {
   throw std::invalid_argument("top.motion.type: unknown motion (accepted: " + choiceNames<MotionKind>() + ")");
 }
 
-std::shared_ptr<SpatialModel> buildSpatialModel(const Scene& scene) {
-  auto model = std::make_shared<SpatialModel>(lineSections(scene), scene.stiffeners, scene.options, scene.end_mass,
-                                              Vec3(0.0, 0.0, -scene.gravity));
+std::shared_ptr<Model3> buildSpatialModel(const Scene& scene) {
+  auto model = std::make_shared<Model3>(lineSections(scene), scene.stiffeners, scene.options, scene.end_mass,
+                                        Vec3(0.0, 0.0, -scene.gravity));
   model->setBottom(scene.bottom, scene.bottom_point3);
   // Only the terms the scene needs: the registry's rows (as the planar buildModel).
   addSpatialTerms(scene, *model);
@@ -138,12 +138,12 @@ std::shared_ptr<SpatialModel> buildSpatialModel(const Scene& scene) {
   return model;
 }
 
-SpatialRun::SpatialRun(const Scene& scene, RunInputs3 inputs)
+Run3::Run3(const Scene& scene, RunInputs3 inputs)
     : integrator_kind_(scene.solver.integrator),
       rho_inf_(scene.solver.rho_inf),
       dt_(scene.solver.dt),
       max_gap_(scene.solver.max_constraint_error * scene.length / scene.elements) {
-  if (scene.space != SpaceKind::kSpatial) throw std::invalid_argument("space: SpatialRun needs space: spatial");
+  if (scene.space != SpaceKind::kSpatial) throw std::invalid_argument("space: Run3 needs space: spatial");
   if (const auto issue = unsupported(scene)) throw std::invalid_argument(issue->key + ": " + issue->message);
   model_ = buildSpatialModel(scene);
   std::shared_ptr<const TopMotion3> motion = inputs.motion ? std::move(inputs.motion) : runTopMotion3(scene);
@@ -206,7 +206,7 @@ SpatialRun::SpatialRun(const Scene& scene, RunInputs3 inputs)
   io.jacobian = scene.solver.jacobian == JacobianKind::kDense ? JacobianKind::kDense : JacobianKind::kStructured;
   io.rho_inf = scene.solver.rho_inf;
   io.newton_tolerance = scene.solver.newton_tolerance;
-  sim_ = std::make_unique<SpatialSimulator>(model_, motion, scene.solver.integrator, io, scene.solver.stabilization);
+  sim_ = std::make_unique<Simulator3>(model_, motion, scene.solver.integrator, io, scene.solver.stabilization);
   sim_->reset(withInitialVelocity3(scene.initial, top, initial_.kin), 0.0, initial_.hang_off);  // initial.velocity
   // The spins of an equilibrium twisted by the bending axes.
   if (!initial_.material_axes.empty()) sim_->setMaterialAxes(initial_.material_axes);
@@ -228,7 +228,7 @@ SpatialRun::SpatialRun(const Scene& scene, RunInputs3 inputs)
         "combine beyond double range");
 }
 
-void SpatialRun::trackMoments() {
+void Run3::trackMoments() {
   const int nb = model_->bodies();
   const VecX& y = sim_->state();
   if (top_joint_) {
@@ -241,7 +241,7 @@ void SpatialRun::trackMoments() {
   }
 }
 
-FlexJoints3 addFlexJoints(const Scene& scene, const Kinematics3& initial, SpatialModel& model,
+FlexJoints3 addFlexJoints(const Scene& scene, const Kinematics3& initial, Model3& model,
                           const std::shared_ptr<const TopMotion3>& top_holder,
                           const std::shared_ptr<const TopMotion3>& bottom_holder) {
   FlexJoints3 out;
@@ -269,7 +269,7 @@ FlexJoints3 addFlexJoints(const Scene& scene, const Kinematics3& initial, Spatia
   return out;
 }
 
-bool SpatialRun::step() {
+bool Run3::step() {
   if (diverged()) return false;
   const bool stepped = sim_->step(dt_);
   ++steps_;
@@ -320,7 +320,7 @@ bool SpatialRun::step() {
 // The forces of the step's last evaluation when it was made at the step's end time (as the planar
 // Simulator::sampleForces: no extra evaluation; the projection after the step moves the state by its
 // round-off-sized drift only).
-void SpatialRun::sampleForces() {
+void Run3::sampleForces() {
   if (!sim_->stepEndEvaluated()) return;
   const NaturalData& d = sim_->lastEvaluation();
   const bool axial = model_->options().axial_flexibility;
@@ -331,20 +331,18 @@ void SpatialRun::sampleForces() {
   noise_.add(d.reactions.top.norm(), tmax, dt_);
 }
 
-std::string SpatialRun::stepAboveLimit() const {
+std::string Run3::stepAboveLimit() const {
   if (!explicitFixedStep()) return "";
   return stepAboveLimitMessage(sim_->integrator().name(), dt_, stableStepEstimate(), highestFrequency());
 }
 
-std::string SpatialRun::forceWarning(const ForceNoise& e) const {
+std::string Run3::forceWarning(const ForceNoise& e) const {
   return forceNoiseWarning(e, dt_, integrator_kind_, rho_inf_);
 }
 
-double SpatialRun::energyDrift() {
-  return (sim_->energy() - e0_ - sim_->work()) / std::max(std::abs(e0_), energy_scale_);
-}
+double Run3::energyDrift() { return (sim_->energy() - e0_ - sim_->work()) / std::max(std::abs(e0_), energy_scale_); }
 
-const LineOutputs3& SpatialRun::outputs() {
+const LineOutputs3& Run3::outputs() {
   const NaturalData& d = sim_->evaluate();
   const int nb = model_->bodies();
   const bool axial = model_->options().axial_flexibility;

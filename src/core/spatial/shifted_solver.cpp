@@ -92,7 +92,7 @@ void invRows(Eigen::Matrix<double, N, N>& A, Eigen::Matrix<double, Nr, N>& out) 
 }
 }  // namespace
 
-ShiftedSolver3::ShiftedSolver3(const SpatialModel& model, double stabilization)
+ShiftedSolver3::ShiftedSolver3(const Model3& model, double stabilization)
     : model_(model),
       omega_(stabilization),
       nb_(model.bodies()),

@@ -1,8 +1,8 @@
 #include "riser_sim/spatial/simulator.h"
 
-#include "riser_sim/implicit_integrators.h"
+#include "riser_sim/integrators/implicit_integrators.h"
 #include "riser_sim/spatial/force_term.h"
-#include "riser_sim/stability_estimate.h"
+#include "riser_sim/run/stability_estimate.h"
 
 #include <algorithm>
 #include <cmath>
@@ -21,8 +21,8 @@ namespace {
 constexpr double kStabilityFactor3 = 0.9;
 }  // namespace
 
-SpatialSimulator::SpatialSimulator(std::shared_ptr<const SpatialModel> model, std::shared_ptr<const TopMotion3> top,
-                                   IntegratorKind kind, const IntegratorOptions& options, double stabilization)
+Simulator3::Simulator3(std::shared_ptr<const Model3> model, std::shared_ptr<const TopMotion3> top, IntegratorKind kind,
+                       const IntegratorOptions& options, double stabilization)
     : model_(std::move(model)),
       top_(std::move(top)),
       formulation_(*model_, stabilization),
@@ -38,7 +38,7 @@ SpatialSimulator::SpatialSimulator(std::shared_ptr<const SpatialModel> model, st
   integrator_->reset(StateLayout{n, formulation_.positionSize()});
 }
 
-void SpatialSimulator::reset(const Kinematics3& kin, double t0, const HangOff& hang_off) {
+void Simulator3::reset(const Kinematics3& kin, double t0, const HangOff& hang_off) {
   t_ = t0;
   y_.setZero();
   formulation_.packState(kin, y_);
@@ -48,10 +48,10 @@ void SpatialSimulator::reset(const Kinematics3& kin, double t0, const HangOff& h
   force_lin_ = true;
 }
 
-void SpatialSimulator::setTwist(const VecX& theta, const VecX& omega) {
+void Simulator3::setTwist(const VecX& theta, const VecX& omega) {
   const int nt = formulation_.twistDofs(), nq = model_->dofs(), p = formulation_.positionSize();
   if (nt == 0 || theta.size() != nt || omega.size() != nt)
-    throw std::invalid_argument("SpatialSimulator::setTwist: torsion off, or not one angle and rate per rfe");
+    throw std::invalid_argument("Simulator3::setTwist: torsion off, or not one angle and rate per rfe");
   y_.segment(nq, nt) = theta;
   y_.segment(p + nq, nt) = omega;
   if (firstSpin(*model_) > 0) y_[nq] = y_[p + nq] = 0.0;  // rfe 0 is held by the hang-off
@@ -59,7 +59,7 @@ void SpatialSimulator::setTwist(const VecX& theta, const VecX& omega) {
   force_lin_ = true;
 }
 
-void SpatialSimulator::setMaterialAxes(const AlignedVector<Vec3>& m1) {
+void Simulator3::setMaterialAxes(const AlignedVector<Vec3>& m1) {
   const int nb = model_->bodies();
   Kinematics3 kin(nb);
   kinematics(kin);
@@ -68,7 +68,7 @@ void SpatialSimulator::setMaterialAxes(const AlignedVector<Vec3>& m1) {
   setTwist(theta, VecX::Zero(nb));
 }
 
-void SpatialSimulator::rhs(double t, const VecX& y, VecX& dy) {
+void Simulator3::rhs(double t, const VecX& y, VecX& dy) {
   const PointMotion3 top = top_->at(t);
   formulation_.derivative(t, y, top, dy, *data_);
   ++evaluations_;
@@ -85,7 +85,7 @@ void SpatialSimulator::rhs(double t, const VecX& y, VecX& dy) {
 // Newton schemes keep the last factor instead while the steps converge in kReuseSolves (3) solves, for at most
 // kReuseSteps steps (simplified Newton across steps: the same solution to Newton's tolerance); a step
 // that needs more is relinearised at its current iterate, and reuse waits 1, 3, 7, ... 63 steps after it.
-void SpatialSimulator::linearize(double t, const VecX& y) {
+void Simulator3::linearize(double t, const VecX& y) {
   if (reused_) backoff_ = 0;  // the last step converged on the kept factor
   if (wait_ > 0) --wait_;
   bool reuse =
@@ -112,18 +112,18 @@ void SpatialSimulator::linearize(double t, const VecX& y) {
 // proportion to the steps since the linearisation, so the next step's error after as many solves is
 // about margin ((age_ + 1) / age_)^solves (measured on the step-cost bench line: the rate after the
 // second solve 6e-5, 1.3e-4, 2e-4, 3e-4, 4e-4 one to five steps after it at n = 1000).
-bool SpatialSimulator::staleNext() const {
+bool Simulator3::staleNext() const {
   if (!newton_ || newton_->lastNewton().solves != solves_) return false;  // a retry in substeps: no estimate
   const double growth = double(age_ + 1) / double(age_);
   return newton_->lastNewton().margin * std::pow(growth, solves_) > 1.0;
 }
 
-void SpatialSimulator::factorShifted(double c) {
+void Simulator3::factorShifted(double c) {
   c_pending_ = c;
   if (!lin_pending_ && !(shifted_->factored() && shifted_->c() == c)) formulation_.factorShifted(c, *shifted_);
 }
 
-void SpatialSimulator::solveShifted(const VecX& b, VecX& x) {
+void Simulator3::solveShifted(const VecX& b, VecX& x) {
   if (reused_ && ++solves_ > kReuseSolves && evaluations_ != evaluations_at_solve_) {  // converging slowly
     shifted_->setLinearization(*data_, data_->acc);
     formulation_.factorShifted(c_pending_, *shifted_);
@@ -147,7 +147,7 @@ void SpatialSimulator::solveShifted(const VecX& b, VecX& x) {
   formulation_.solveShifted(b, x, *shifted_);
 }
 
-bool SpatialSimulator::step(double h) {
+bool Simulator3::step(double h) {
   const bool ok = integrator_->step(*this, t_, y_, h);
   t_ += h;
   end_evaluated_ = data_->t == t_;  // before the charts move (rechartTwist marks the evaluation stale)
@@ -163,13 +163,13 @@ bool SpatialSimulator::step(double h) {
   return ok && y_.allFinite();
 }
 
-void SpatialSimulator::positions(AlignedVector<Vec3>& p) const {
+void Simulator3::positions(AlignedVector<Vec3>& p) const {
   const int nb = model_->bodies();
   for (int i = 0; i < nb; ++i) p[i] = formulation_.body(y_, i).A;
   p[nb] = formulation_.body(y_, nb - 1).end();
 }
 
-double SpatialSimulator::kineticEnergy() {
+double Simulator3::kineticEnergy() {
   double T = formulation_.kineticEnergy(y_);
   if (data_->added.empty()) return T;
   formulation_.kinematics(y_, kin_);
@@ -177,19 +177,19 @@ double SpatialSimulator::kineticEnergy() {
   return T;
 }
 
-double SpatialSimulator::potentialEnergy() {
+double Simulator3::potentialEnergy() {
   formulation_.kinematics(y_, kin_);
   double v = 0.0;
   for (const auto& term : model_->terms()) v += term->potentialEnergy(*model_, kin_, t_);
   return v + formulation_.twistEnergy(y_, top_->at(t_), *data_);
 }
 
-const NaturalData& SpatialSimulator::evaluate() {
+const NaturalData& Simulator3::evaluate() {
   rhs(t_, y_, dy_);
   return *data_;
 }
 
-void SpatialSimulator::estimateStability() {
+void Simulator3::estimateStability() {
   const Rk4 rk4;  // the reference scheme for the implicit and adaptive ones
   const Integrator& scheme = integrator_->explicitFixedStep() ? *integrator_ : static_cast<const Integrator&>(rk4);
   const LinearisedSpectrum s = linearisedSpectrum(
@@ -202,7 +202,7 @@ void SpatialSimulator::estimateStability() {
   rhs(t_, y_, dy_);  // leave data_'s evaluation at the state
 }
 
-double SpatialSimulator::stableStepEstimate() const { return kStabilityFactor3 * stable_step_; }
+double Simulator3::stableStepEstimate() const { return kStabilityFactor3 * stable_step_; }
 
 }  // namespace spatial
 }  // namespace riser_sim

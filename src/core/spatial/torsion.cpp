@@ -39,16 +39,14 @@ void TwistData::resize(int bodies) {
   m1.assign(bodies, Vec3::Zero());
 }
 
-double twistStiffness(const SpatialModel& model) { return model.torsion().stiffness / model.line().segmentLength(); }
-double twistDamping(const SpatialModel& model) { return model.torsion().damping / model.line().segmentLength(); }
-int firstSpin(const SpatialModel& model) {
+double twistStiffness(const Model3& model) { return model.torsion().stiffness / model.line().segmentLength(); }
+double twistDamping(const Model3& model) { return model.torsion().damping / model.line().segmentLength(); }
+int firstSpin(const Model3& model) {
   const TorsionProperties& t = model.torsion();
   return t.free_top || t.top_stiffness > 0.0 ? 0 : 1;
 }
-double hangOffTwist(const SpatialModel& model, const TwistData& d) {
-  return firstSpin(model) > 0 ? d.moment[0] : d.top_tau;
-}
-double polarInertia(const SpatialModel& model, int i) {
+double hangOffTwist(const Model3& model, const TwistData& d) { return firstSpin(model) > 0 ? d.moment[0] : d.top_tau; }
+double polarInertia(const Model3& model, int i) {
   if (i < firstSpin(model)) return 0.0;
   const TorsionProperties& t = model.torsion();
   return t.polar_inertia * model.rfe(i).length + (i == model.bodies() - 1 ? t.end_polar_inertia : 0.0);
@@ -143,7 +141,7 @@ double topSpinRate(const Kinematics3& kin, const TwistFrames& f) {
   return spinConnection(f.centre[0], n0).dot(kin[0].e_dot) + hangOffSpin(f, n0);
 }
 
-double addTwistForces(const SpatialModel& model, const Kinematics3& kin, const double* theta, const double* omega,
+double addTwistForces(const Model3& model, const Kinematics3& kin, const double* theta, const double* omega,
                       TwistData& d, VecX& Q) {
   const int nb = model.bodies(), nj = nb - 1;
   const double k = twistStiffness(model), c = twistDamping(model);
@@ -188,7 +186,7 @@ double addTwistForces(const SpatialModel& model, const Kinematics3& kin, const d
   return power;
 }
 
-double twistEnergy(const SpatialModel& model, const Kinematics3& kin, const double* theta, TwistData& d) {
+double twistEnergy(const Model3& model, const Kinematics3& kin, const double* theta, TwistData& d) {
   twistAngles(kin, theta, d.frames, d.m.data(), d.kb.data());
   double v = 0.0;
   for (double m : d.m) v += m * m;

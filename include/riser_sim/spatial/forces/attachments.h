@@ -13,27 +13,27 @@
 namespace riser_sim {
 namespace spatial {
 
-class Attachments : public SpatialForceTerm {
+class Attachments : public ForceTerm3 {
  public:
   // Throws std::invalid_argument naming attachments[k] when one is off the line.
-  Attachments(const SpatialModel& model, const std::vector<AttachmentSpec>& specs, const WaterSpec& water,
+  Attachments(const Model3& model, const std::vector<AttachmentSpec>& specs, const WaterSpec& water,
               const SeabedSpec& seabed);
   std::string name() const override { return "attachments"; }
-  void addForces(const SpatialModel& model, const Kinematics3& kin, double t, VecX& Q) const override;
-  double addForcesAndPower(const SpatialModel& model, const Kinematics3& kin, double t, VecX& Q) const override;
-  double potentialEnergy(const SpatialModel& model, const Kinematics3& kin, double t) const override;
-  double power(const SpatialModel& model, const Kinematics3& kin, double t) const override;
-  void addStiffness(const SpatialModel& model, const Kinematics3& kin, double t, SpatialStiffness& S) const override;
+  void addForces(const Model3& model, const Kinematics3& kin, double t, VecX& Q) const override;
+  double addForcesAndPower(const Model3& model, const Kinematics3& kin, double t, VecX& Q) const override;
+  double potentialEnergy(const Model3& model, const Kinematics3& kin, double t) const override;
+  double power(const Model3& model, const Kinematics3& kin, double t) const override;
+  void addStiffness(const Model3& model, const Kinematics3& kin, double t, Stiffness3& S) const override;
   bool hasInertia() const override { return has_added_mass_; }
-  void addInertia(const SpatialModel& model, const Kinematics3& kin, std::vector<AddedMass3>& per_rfe) const override;
-  double kineticEnergy(const SpatialModel& model, const Kinematics3& kin) const override;
+  void addInertia(const Model3& model, const Kinematics3& kin, std::vector<AddedMass3>& per_rfe) const override;
+  double kineticEnergy(const Model3& model, const Kinematics3& kin) const override;
 
   int count() const { return int(bodies_.size()); }
   const AttachmentSpec& spec(int k) const { return bodies_[k].spec; }
   const AttachmentPoint& point(int k) const { return bodies_[k].at; }
   Vec3 position(const Kinematics3& kin, int k) const;
   // This term's force on attachment k and its weight [N].
-  Vec3 force(const SpatialModel& model, const Kinematics3& kin, double t, int k) const;
+  Vec3 force(const Model3& model, const Kinematics3& kin, double t, int k) const;
 
  private:
   struct Body {

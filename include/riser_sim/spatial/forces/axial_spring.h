@@ -6,13 +6,13 @@
 namespace riser_sim {
 namespace spatial {
 
-class AxialSpring : public SpatialForceTerm {
+class AxialSpring : public ForceTerm3 {
  public:
   std::string name() const override { return "axial_spring"; }
-  void addForces(const SpatialModel& model, const Kinematics3& kin, double t, VecX& Q) const override;
-  double potentialEnergy(const SpatialModel& model, const Kinematics3& kin, double t) const override;
-  double power(const SpatialModel& model, const Kinematics3& kin, double t) const override;
-  void addStiffness(const SpatialModel& model, const Kinematics3& kin, double t, SpatialStiffness& S) const override;
+  void addForces(const Model3& model, const Kinematics3& kin, double t, VecX& Q) const override;
+  double potentialEnergy(const Model3& model, const Kinematics3& kin, double t) const override;
+  double power(const Model3& model, const Kinematics3& kin, double t) const override;
+  void addStiffness(const Model3& model, const Kinematics3& kin, double t, Stiffness3& S) const override;
 };
 
 }  // namespace spatial

@@ -12,15 +12,15 @@
 namespace riser_sim {
 namespace spatial {
 
-class BendingSpring : public SpatialForceTerm {
+class BendingSpring : public ForceTerm3 {
  public:
   std::string name() const override { return "bending_spring"; }
-  void addForces(const SpatialModel& model, const Kinematics3& kin, double t, VecX& Q) const override;
-  double potentialEnergy(const SpatialModel& model, const Kinematics3& kin, double t) const override;
-  double power(const SpatialModel& model, const Kinematics3& kin, double t) const override;
+  void addForces(const Model3& model, const Kinematics3& kin, double t, VecX& Q) const override;
+  double potentialEnergy(const Model3& model, const Kinematics3& kin, double t) const override;
+  double power(const Model3& model, const Kinematics3& kin, double t) const override;
   // Forces and the dampers' power in one pass over the joints (one ω difference per joint).
-  double addForcesAndPower(const SpatialModel& model, const Kinematics3& kin, double t, VecX& Q) const override;
-  void addStiffness(const SpatialModel& model, const Kinematics3& kin, double t, SpatialStiffness& S) const override;
+  double addForcesAndPower(const Model3& model, const Kinematics3& kin, double t, VecX& Q) const override;
+  void addStiffness(const Model3& model, const Kinematics3& kin, double t, Stiffness3& S) const override;
   // Angle between two directions [rad] in [0, π] (any lengths).
   static double angle(const Vec3& a, const Vec3& b) { return std::atan2(a.cross(b).norm(), a.dot(b)); }
   // θ / sin θ without cancellation near 0 (the spring force's factor).

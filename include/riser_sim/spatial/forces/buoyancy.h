@@ -8,16 +8,16 @@
 namespace riser_sim {
 namespace spatial {
 
-class Buoyancy : public SpatialForceTerm {
+class Buoyancy : public ForceTerm3 {
  public:
   explicit Buoyancy(const Water3& water) : water_(water) {}
   std::string name() const override { return "buoyancy"; }
-  void addForces(const SpatialModel& model, const Kinematics3& kin, double t, VecX& Q) const override;
-  double potentialEnergy(const SpatialModel& model, const Kinematics3& kin, double t) const override;
-  double power(const SpatialModel&, const Kinematics3&, double) const override { return 0.0; }  // conservative
+  void addForces(const Model3& model, const Kinematics3& kin, double t, VecX& Q) const override;
+  double potentialEnergy(const Model3& model, const Kinematics3& kin, double t) const override;
+  double power(const Model3&, const Kinematics3&, double) const override { return 0.0; }  // conservative
   // The lift's geometric part on each wet part (its moment arm s = s0 + κΔ); the change of the wet length
   // at the surface stays explicit.
-  void addStiffness(const SpatialModel& model, const Kinematics3& kin, double t, SpatialStiffness& S) const override;
+  void addStiffness(const Model3& model, const Kinematics3& kin, double t, Stiffness3& S) const override;
 
  private:
   Water3 water_;

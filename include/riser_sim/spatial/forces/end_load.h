@@ -6,13 +6,13 @@
 namespace riser_sim {
 namespace spatial {
 
-class EndLoad : public SpatialForceTerm {
+class EndLoad : public ForceTerm3 {
  public:
   explicit EndLoad(const Vec3& force) : force_(force) {}
   std::string name() const override { return "end_load"; }
-  void addForces(const SpatialModel& model, const Kinematics3& kin, double t, VecX& Q) const override;
-  double potentialEnergy(const SpatialModel& model, const Kinematics3& kin, double t) const override;
-  double power(const SpatialModel&, const Kinematics3&, double) const override { return 0.0; }
+  void addForces(const Model3& model, const Kinematics3& kin, double t, VecX& Q) const override;
+  double potentialEnergy(const Model3& model, const Kinematics3& kin, double t) const override;
+  double power(const Model3&, const Kinematics3&, double) const override { return 0.0; }
   const Vec3& force() const { return force_; }
 
  private:

@@ -15,7 +15,7 @@
 namespace riser_sim {
 namespace spatial {
 
-class FlexJoint : public SpatialForceTerm {
+class FlexJoint : public ForceTerm3 {
  public:
   enum class End { kTop, kBottom };  // rfe 0 at A_0, or rfe n at its end E_n
   // direction: the unloaded axis of the joint at time t0 in the world frame, pointing along the line from the
@@ -24,16 +24,16 @@ class FlexJoint : public SpatialForceTerm {
   FlexJoint(End end, const Vec3& direction, double stiffness, double damping,
             std::shared_ptr<const TopMotion3> holder = nullptr, double t0 = 0.0);
   std::string name() const override { return end_ == End::kTop ? "flex_joint_top" : "flex_joint_bottom"; }
-  void addForces(const SpatialModel& model, const Kinematics3& kin, double t, VecX& Q) const override;
-  double potentialEnergy(const SpatialModel& model, const Kinematics3& kin, double t) const override;
-  double power(const SpatialModel& model, const Kinematics3& kin, double t) const override;
-  double addForcesAndPower(const SpatialModel& model, const Kinematics3& kin, double t, VecX& Q) const override;
+  void addForces(const Model3& model, const Kinematics3& kin, double t, VecX& Q) const override;
+  double potentialEnergy(const Model3& model, const Kinematics3& kin, double t) const override;
+  double power(const Model3& model, const Kinematics3& kin, double t) const override;
+  double addForcesAndPower(const Model3& model, const Kinematics3& kin, double t, VecX& Q) const override;
   // The exact linearisation (spring Hessian, damper in the rate and through e) for the structured solves.
-  void addStiffness(const SpatialModel& model, const Kinematics3& kin, double t, SpatialStiffness& S) const override;
+  void addStiffness(const Model3& model, const Kinematics3& kin, double t, Stiffness3& S) const override;
   // The moment the line exerts on the holder through the joint at time t [N m] (world frame): spring and damper.
-  Vec3 moment(const SpatialModel& model, const Kinematics3& kin, double t) const;
+  Vec3 moment(const Model3& model, const Kinematics3& kin, double t) const;
   // Rotation of the joint from its unloaded axis at time t [rad].
-  double angle(const SpatialModel& model, const Kinematics3& kin, double t) const;
+  double angle(const Model3& model, const Kinematics3& kin, double t) const;
   // The unloaded axis at time t (world frame) and the holder's angular velocity [rad/s].
   struct Axis {
     Vec3 d, w;
@@ -42,12 +42,12 @@ class FlexJoint : public SpatialForceTerm {
   bool turnsWithHolder() const { return holder_ != nullptr; }
 
  private:
-  int rfe(const SpatialModel& model) const { return end_ == End::kTop ? 0 : model.bodies() - 1; }
+  int rfe(const Model3& model) const { return end_ == End::kTop ? 0 : model.bodies() - 1; }
   // The line's direction at the joint, pointing away from the holder (e_0 at the top, -e_n at the bottom).
-  Vec3 away(const SpatialModel& model, const Kinematics3& kin) const;
+  Vec3 away(const Model3& model, const Kinematics3& kin) const;
   // Torques [N m] the joint's spring and damper apply to its rfe.
-  Vec3 springTorque(const SpatialModel& model, const Kinematics3& kin, const Vec3& d) const;
-  Vec3 damperTorque(const SpatialModel& model, const Kinematics3& kin, const Vec3& w) const;
+  Vec3 springTorque(const Model3& model, const Kinematics3& kin, const Vec3& d) const;
+  Vec3 damperTorque(const Model3& model, const Kinematics3& kin, const Vec3& w) const;
   End end_;
   Vec3 d_;  // the axis in the holder's frame (in the world's without a holder)
   double k_, c_;

@@ -9,21 +9,19 @@
 namespace riser_sim {
 namespace spatial {
 
-class FroudeKrylov : public SpatialForceTerm {
+class FroudeKrylov : public ForceTerm3 {
  public:
   // cm_normal C_M, cm_axial 1 + C_a,t.
   FroudeKrylov(const Water3& water, double cm_normal, double cm_axial)
       : water_(water), cm_n_(cm_normal), cm_t_(cm_axial) {}
   std::string name() const override { return "froude_krylov"; }
-  void addForces(const SpatialModel& model, const Kinematics3& kin, double t, VecX& Q) const override;
-  double potentialEnergy(const SpatialModel&, const Kinematics3&, double) const override {
-    return 0.0;
-  }  // power() only
-  double power(const SpatialModel& model, const Kinematics3& kin, double t) const override;
-  double addForcesAndPower(const SpatialModel& model, const Kinematics3& kin, double t, VecX& Q) const override;
+  void addForces(const Model3& model, const Kinematics3& kin, double t, VecX& Q) const override;
+  double potentialEnergy(const Model3&, const Kinematics3&, double) const override { return 0.0; }  // power() only
+  double power(const Model3& model, const Kinematics3& kin, double t) const override;
+  double addForcesAndPower(const Model3& model, const Kinematics3& kin, double t, VecX& Q) const override;
 
  private:
-  double sweep(const SpatialModel& model, const Kinematics3& kin, double t, VecX* Q) const;
+  double sweep(const Model3& model, const Kinematics3& kin, double t, VecX* Q) const;
   Water3 water_;
   double cm_n_, cm_t_;
 };

@@ -6,13 +6,13 @@
 namespace riser_sim {
 namespace spatial {
 
-class Gravity : public SpatialForceTerm {
+class Gravity : public ForceTerm3 {
  public:
   std::string name() const override { return "gravity"; }
-  void addForces(const SpatialModel& model, const Kinematics3& kin, double t, VecX& Q) const override;
-  double potentialEnergy(const SpatialModel& model, const Kinematics3& kin, double t) const override;
-  double power(const SpatialModel&, const Kinematics3&, double) const override { return 0.0; }  // conservative
-  void addStiffness(const SpatialModel& model, const Kinematics3& kin, double t, SpatialStiffness& S) const override;
+  void addForces(const Model3& model, const Kinematics3& kin, double t, VecX& Q) const override;
+  double potentialEnergy(const Model3& model, const Kinematics3& kin, double t) const override;
+  double power(const Model3&, const Kinematics3&, double) const override { return 0.0; }  // conservative
+  void addStiffness(const Model3& model, const Kinematics3& kin, double t, Stiffness3& S) const override;
 };
 
 }  // namespace spatial

@@ -8,24 +8,24 @@
 //   direction projected on the plane (rfe j's, the end's rfe for the end), l = n × a, v_s the sliding speed
 //   below which it acts as a viscous stick (friction_velocity). Sliding along a: μ_a F_n; across: μ_l F_n.
 #pragma once
-#include "riser_sim/forces/seabed.h"
+#include "riser_sim/planar/forces/seabed.h"
 #include "riser_sim/spatial/force_term.h"
 
 namespace riser_sim {
 namespace spatial {
 
-class Seabed : public SpatialForceTerm {
+class Seabed : public ForceTerm3 {
  public:
   Seabed(const SeabedSpec& spec, const Vec3& gravity);
   std::string name() const override { return "seabed"; }
-  void addForces(const SpatialModel& model, const Kinematics3& kin, double t, VecX& Q) const override;
-  double potentialEnergy(const SpatialModel& model, const Kinematics3& kin, double t) const override;
-  double power(const SpatialModel& model, const Kinematics3& kin, double t) const override;
-  double addForcesAndPower(const SpatialModel& model, const Kinematics3& kin, double t, VecX& Q) const override;
+  void addForces(const Model3& model, const Kinematics3& kin, double t, VecX& Q) const override;
+  double potentialEnergy(const Model3& model, const Kinematics3& kin, double t) const override;
+  double power(const Model3& model, const Kinematics3& kin, double t) const override;
+  double addForcesAndPower(const Model3& model, const Kinematics3& kin, double t, VecX& Q) const override;
   // The normal spring and the dampers, and the friction's exact rate dependence (its turning with e left out).
-  void addStiffness(const SpatialModel& model, const Kinematics3& kin, double t, SpatialStiffness& S) const override;
+  void addStiffness(const Model3& model, const Kinematics3& kin, double t, Stiffness3& S) const override;
   // Contact points below the plane.
-  int contacts(const SpatialModel& model, const Kinematics3& kin) const;
+  int contacts(const Model3& model, const Kinematics3& kin) const;
   const Vec3& normal() const { return n_; }
   double penetration(const Vec3& p) const { return offset_ - n_.dot(p); }  // [m], > 0 below the plane
 
@@ -35,10 +35,10 @@ class Seabed : public SpatialForceTerm {
     double s0, kappa;
     Vec3 p, v;
   };
-  Contact contact(const SpatialModel& model, const Kinematics3& kin, int j) const;
+  Contact contact(const Model3& model, const Kinematics3& kin, int j) const;
   // The contact force; conservative: the spring alone.
   Vec3 force(const Contact& c, const Vec3& e, bool conservative) const;
-  double sweep(const SpatialModel& model, const Kinematics3& kin, VecX* Q) const;
+  double sweep(const Model3& model, const Kinematics3& kin, VecX* Q) const;
   SeabedSpec spec_;
   Vec3 n_;         // the plane's unit normal (up when level)
   double offset_;  // n·(level up): level when level

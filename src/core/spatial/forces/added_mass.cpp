@@ -3,7 +3,7 @@
 namespace riser_sim {
 namespace spatial {
 
-void AddedMass::addInertia(const SpatialModel& model, const Kinematics3& kin, std::vector<AddedMass3>& per_rfe) const {
+void AddedMass::addInertia(const Model3& model, const Kinematics3& kin, std::vector<AddedMass3>& per_rfe) const {
   for (int i = 0; i < model.bodies(); ++i)
     for (int p = 0; p < 2; ++p) {
       const BodyKinematics3& b = kin[i];
@@ -17,7 +17,7 @@ void AddedMass::addInertia(const SpatialModel& model, const Kinematics3& kin, st
 }
 
 // energy: Σ ½ m_w v_cᵀ T v_c; else the power ½ v_cᵀ T' v_c = (C_a,t - C_a,n) m_w (n'·v_c)(n·v_c).
-double AddedMass::sweep(const SpatialModel& model, const Kinematics3& kin, bool energy) const {
+double AddedMass::sweep(const Model3& model, const Kinematics3& kin, bool energy) const {
   double sum = 0.0;
   for (int i = 0; i < model.bodies(); ++i)
     for (int p = 0; p < 2; ++p) {
@@ -39,13 +39,9 @@ double AddedMass::sweep(const SpatialModel& model, const Kinematics3& kin, bool 
   return sum;
 }
 
-double AddedMass::power(const SpatialModel& model, const Kinematics3& kin, double) const {
-  return sweep(model, kin, false);
-}
+double AddedMass::power(const Model3& model, const Kinematics3& kin, double) const { return sweep(model, kin, false); }
 
-double AddedMass::kineticEnergy(const SpatialModel& model, const Kinematics3& kin) const {
-  return sweep(model, kin, true);
-}
+double AddedMass::kineticEnergy(const Model3& model, const Kinematics3& kin) const { return sweep(model, kin, true); }
 
 }  // namespace spatial
 }  // namespace riser_sim

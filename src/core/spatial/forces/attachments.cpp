@@ -3,7 +3,7 @@
 namespace riser_sim {
 namespace spatial {
 
-Attachments::Attachments(const SpatialModel& model, const std::vector<AttachmentSpec>& specs, const WaterSpec& water,
+Attachments::Attachments(const Model3& model, const std::vector<AttachmentSpec>& specs, const WaterSpec& water,
                          const SeabedSpec& seabed)
     : sea_(water.enabled ? water : WaterSpec(), model.gravity()), seabed_(seabed), plane_(seabed, model.gravity()) {
   const double g = model.gravity().norm();
@@ -41,24 +41,22 @@ double Attachments::sweep(const Kinematics3& kin, double t, VecX* Q) const {
   return pw;
 }
 
-void Attachments::addForces(const SpatialModel&, const Kinematics3& kin, double t, VecX& Q) const { sweep(kin, t, &Q); }
+void Attachments::addForces(const Model3&, const Kinematics3& kin, double t, VecX& Q) const { sweep(kin, t, &Q); }
 
-double Attachments::addForcesAndPower(const SpatialModel&, const Kinematics3& kin, double t, VecX& Q) const {
+double Attachments::addForcesAndPower(const Model3&, const Kinematics3& kin, double t, VecX& Q) const {
   return sweep(kin, t, &Q);
 }
 
-double Attachments::power(const SpatialModel&, const Kinematics3& kin, double t) const {
-  return sweep(kin, t, nullptr);
-}
+double Attachments::power(const Model3&, const Kinematics3& kin, double t) const { return sweep(kin, t, nullptr); }
 
-double Attachments::potentialEnergy(const SpatialModel&, const Kinematics3& kin, double t) const {
+double Attachments::potentialEnergy(const Model3&, const Kinematics3& kin, double t) const {
   double e = 0.0;
   for (const Body& a : bodies_) e += load(a, kin, t).energy;
   return e;
 }
 
 // Q = Jᵀ F, J = [I, κ e, s I]: K = Jᵀ Kp J - ∂Jᵀ/∂q F (the geometric part: Q_Δ = κ e·F, Q_e = s F).
-void Attachments::addStiffness(const SpatialModel& model, const Kinematics3& kin, double t, SpatialStiffness& S) const {
+void Attachments::addStiffness(const Model3& model, const Kinematics3& kin, double t, Stiffness3& S) const {
   for (const Body& a : bodies_) {
     const AttachmentLoad<Vec3> L = load(a, kin, t);
     const BodyKinematics3& b = kin[a.at.rfe];
@@ -82,7 +80,7 @@ void Attachments::addStiffness(const SpatialModel& model, const Kinematics3& kin
   }
 }
 
-void Attachments::addInertia(const SpatialModel&, const Kinematics3& kin, std::vector<AddedMass3>& per_rfe) const {
+void Attachments::addInertia(const Model3&, const Kinematics3& kin, std::vector<AddedMass3>& per_rfe) const {
   for (const Body& a : bodies_) {
     if (!(a.spec.added_mass > 0.0)) continue;
     const double c = a.at.s0 + a.at.kappa * kin[a.at.rfe].delta;
@@ -91,7 +89,7 @@ void Attachments::addInertia(const SpatialModel&, const Kinematics3& kin, std::v
   }
 }
 
-double Attachments::kineticEnergy(const SpatialModel&, const Kinematics3& kin) const {
+double Attachments::kineticEnergy(const Model3&, const Kinematics3& kin) const {
   double T = 0.0;
   for (const Body& a : bodies_)
     if (a.spec.added_mass > 0.0)
@@ -104,7 +102,7 @@ Vec3 Attachments::position(const Kinematics3& kin, int k) const {
   return kin[a.at.rfe].point(a.at.s0, a.at.kappa);
 }
 
-Vec3 Attachments::force(const SpatialModel& model, const Kinematics3& kin, double t, int k) const {
+Vec3 Attachments::force(const Model3& model, const Kinematics3& kin, double t, int k) const {
   return load(bodies_[k], kin, t).total + bodies_[k].spec.mass * model.gravity();
 }
 

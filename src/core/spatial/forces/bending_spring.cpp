@@ -27,11 +27,11 @@ double BendingSpring::asinOverSin(double x2) {
 // V = ½ k θ²: Q_b = -k θ ∂θ/∂b = k (θ/sinθ) / (|a||b|) (a - (a·b) b/|b|²), Q_a likewise with a, b swapped.
 // With sinθ = |a×b| / (|a||b|) the factor is k (θ/sinθ) / (|a||b|): below ~5.7° (sin²θ <= 0.01, a·b > 0) by
 // asinOverSin's series (no atan2: a tenth of the 3D evaluation), above as k θ / |a×b| with θ = atan2.
-void BendingSpring::addForces(const SpatialModel& model, const Kinematics3& kin, double t, VecX& Q) const {
+void BendingSpring::addForces(const Model3& model, const Kinematics3& kin, double t, VecX& Q) const {
   addForcesAndPower(model, kin, t, Q);
 }
 
-double BendingSpring::addForcesAndPower(const SpatialModel& model, const Kinematics3& kin, double, VecX& Q) const {
+double BendingSpring::addForcesAndPower(const Model3& model, const Kinematics3& kin, double, VecX& Q) const {
   double p = 0.0;
   for (int i = 1; i < model.bodies(); ++i) {
     const double k = model.bendingStiffness(i), c = model.bendingDamping(i);
@@ -68,7 +68,7 @@ double BendingSpring::addForcesAndPower(const SpatialModel& model, const Kinemat
   return p;
 }
 
-double BendingSpring::potentialEnergy(const SpatialModel& model, const Kinematics3& kin, double) const {
+double BendingSpring::potentialEnergy(const Model3& model, const Kinematics3& kin, double) const {
   double v = 0.0;
   for (int i = 1; i < model.bodies(); ++i) {
     const double theta = angle(kin[i - 1].e, kin[i].e);
@@ -77,7 +77,7 @@ double BendingSpring::potentialEnergy(const SpatialModel& model, const Kinematic
   return v;
 }
 
-double BendingSpring::power(const SpatialModel& model, const Kinematics3& kin, double) const {
+double BendingSpring::power(const Model3& model, const Kinematics3& kin, double) const {
   double p = 0.0;
   for (int i = 1; i < model.bodies(); ++i)
     p -= model.bendingDamping(i) * (kin[i].omega() - kin[i - 1].omega()).squaredNorm();
@@ -100,7 +100,7 @@ Mat3 cross(const Vec3& a) {
 // Damping: Q_b = τ × b, Q_a = -τ × a, τ = -c_d (b × b' - a × a'): C_bb = c_d (|b|² I - b bᵀ),
 // C_ba = c_d [b]×[a]×, and through e (not symmetric): K_bb = c_d [b]×[b']× - [τ]×, K_aa = c_d [a]×[a']× + [τ]×,
 // K_ba = -c_d [b]×[a']×, K_ab = -c_d [a]×[b']×.
-void BendingSpring::addStiffness(const SpatialModel& model, const Kinematics3& kin, double, SpatialStiffness& S) const {
+void BendingSpring::addStiffness(const Model3& model, const Kinematics3& kin, double, Stiffness3& S) const {
   const Mat3 I3 = Mat3::Identity();
   for (int i = 1; i < model.bodies(); ++i) {
     const double k = model.bendingStiffness(i), c = model.bendingDamping(i);

@@ -7,13 +7,13 @@ namespace spatial {
 
 namespace {
 // ρ_w |g| A_w [N/m]: the lift per submerged length of part p of rfe i (its section's displaced area).
-double liftPerLength(const SpatialModel& model, const Water3& water, int i, int p) {
+double liftPerLength(const Model3& model, const Water3& water, int i, int p) {
   return physics::liftPerLength(water.spec().density, model.line().partSection(i, p).props.externalArea(),
                                 model.gravity().norm());
 }
 }  // namespace
 
-void Buoyancy::addForces(const SpatialModel& model, const Kinematics3& kin, double, VecX& Q) const {
+void Buoyancy::addForces(const Model3& model, const Kinematics3& kin, double, VecX& Q) const {
   for (int i = 0; i < model.bodies(); ++i)
     for (int p = 0; p < 2; ++p) {
       const double f = liftPerLength(model, water_, i, p);
@@ -24,7 +24,7 @@ void Buoyancy::addForces(const SpatialModel& model, const Kinematics3& kin, doub
     }
 }
 
-double Buoyancy::potentialEnergy(const SpatialModel& model, const Kinematics3& kin, double) const {
+double Buoyancy::potentialEnergy(const Model3& model, const Kinematics3& kin, double) const {
   double v = 0.0;
   for (int i = 0; i < model.bodies(); ++i)
     for (int p = 0; p < 2; ++p) {
@@ -36,7 +36,7 @@ double Buoyancy::potentialEnergy(const SpatialModel& model, const Kinematics3& k
 }
 
 // Q = [F; κ e·F; s F] with F constant: -∂Q_Δ/∂e = -κ Fᵀ, -∂Q_e/∂Δ = -κ F.
-void Buoyancy::addStiffness(const SpatialModel& model, const Kinematics3& kin, double, SpatialStiffness& S) const {
+void Buoyancy::addStiffness(const Model3& model, const Kinematics3& kin, double, Stiffness3& S) const {
   if (!model.options().axial_flexibility) return;
   for (int i = 0; i < model.bodies(); ++i) {
     const double f = liftPerLength(model, water_, i, 1);

@@ -26,18 +26,18 @@ FlexJoint::Axis FlexJoint::axis(double t) const {
   return Axis{m.R * d_, m.w};
 }
 
-Vec3 FlexJoint::away(const SpatialModel& model, const Kinematics3& kin) const {
+Vec3 FlexJoint::away(const Model3& model, const Kinematics3& kin) const {
   const Vec3& e = kin[rfe(model)].e;
   return end_ == End::kTop ? e : Vec3(-e);
 }
 
-double FlexJoint::angle(const SpatialModel& model, const Kinematics3& kin, double t) const {
+double FlexJoint::angle(const Model3& model, const Kinematics3& kin, double t) const {
   return BendingSpring::angle(axis(t).d, away(model, kin));
 }
 
 // Spring: V = ½ k θ² turns the line's direction b toward d: torque k (θ/sinθ) (b × d)/|b| on the rfe (its
 // e part, τ × e, is the bending spring's Q with d for the neighbour; the sign of b drops out of it).
-Vec3 FlexJoint::springTorque(const SpatialModel& model, const Kinematics3& kin, const Vec3& d) const {
+Vec3 FlexJoint::springTorque(const Model3& model, const Kinematics3& kin, const Vec3& d) const {
   const Vec3 u = away(model, kin);
   const double theta = BendingSpring::angle(d, u);
   if (theta >= M_PI - BendingSpring::kFoldedTol) return Vec3::Zero();
@@ -46,25 +46,25 @@ Vec3 FlexJoint::springTorque(const SpatialModel& model, const Kinematics3& kin, 
 
 // Damper: -c (ω - w⊥), w⊥ the holder's angular velocity across the line (its spin about the line is no
 // degree of freedom of the rfe here).
-Vec3 FlexJoint::damperTorque(const SpatialModel& model, const Kinematics3& kin, const Vec3& w) const {
+Vec3 FlexJoint::damperTorque(const Model3& model, const Kinematics3& kin, const Vec3& w) const {
   const BodyKinematics3& b = kin[rfe(model)];
   if (c_ == 0.0) return Vec3::Zero();
   const Vec3 e = b.e / b.e.norm();
   return -c_ * (b.omega() - (w - w.dot(e) * e));
 }
 
-void FlexJoint::addForces(const SpatialModel& model, const Kinematics3& kin, double t, VecX& Q) const {
+void FlexJoint::addForces(const Model3& model, const Kinematics3& kin, double t, VecX& Q) const {
   const int i = rfe(model);
   const Axis a = axis(t);
   addTorque(kin[i], springTorque(model, kin, a.d) + damperTorque(model, kin, a.w), Q.data() + kDofPerBody3 * i);
 }
 
-double FlexJoint::potentialEnergy(const SpatialModel& model, const Kinematics3& kin, double t) const {
+double FlexJoint::potentialEnergy(const Model3& model, const Kinematics3& kin, double t) const {
   const double theta = angle(model, kin, t);
   return 0.5 * k_ * theta * theta;
 }
 
-double FlexJoint::power(const SpatialModel& model, const Kinematics3& kin, double t) const {
+double FlexJoint::power(const Model3& model, const Kinematics3& kin, double t) const {
   const Axis a = axis(t);
   const Vec3 omega = kin[rfe(model)].omega();
   double p = damperTorque(model, kin, a.w).dot(omega);
@@ -72,7 +72,7 @@ double FlexJoint::power(const SpatialModel& model, const Kinematics3& kin, doubl
   return p;
 }
 
-double FlexJoint::addForcesAndPower(const SpatialModel& model, const Kinematics3& kin, double t, VecX& Q) const {
+double FlexJoint::addForcesAndPower(const Model3& model, const Kinematics3& kin, double t, VecX& Q) const {
   const int i = rfe(model);
   const Axis a = axis(t);
   const Vec3 ts = springTorque(model, kin, a.d), td = damperTorque(model, kin, a.w);
@@ -93,7 +93,7 @@ Mat3 crossMatrix(const Vec3& a) {
 // φ |b|² ∂g/∂b), ψ = φ'(θ)/sinθ, ∂g/∂b as the bending spring's (bending_spring.cpp).
 // Damping: Q_e = τ × e gives K = -[τ]× + [e]× ∂τ/∂e; τ = -c e × e' + c (w - (w·e) e): C_ee = c (|e|² I - e eᵀ),
 // K_ee = c [e]×[e']× - [τ]× - c (w·e) [e]× (the holder's part through its projection across e).
-void FlexJoint::addStiffness(const SpatialModel& model, const Kinematics3& kin, double t, SpatialStiffness& S) const {
+void FlexJoint::addStiffness(const Model3& model, const Kinematics3& kin, double t, Stiffness3& S) const {
   const int i = rfe(model);
   const Mat3 I3 = Mat3::Identity();
   const Axis a = axis(t);
@@ -122,7 +122,7 @@ void FlexJoint::addStiffness(const SpatialModel& model, const Kinematics3& kin, 
   }
 }
 
-Vec3 FlexJoint::moment(const SpatialModel& model, const Kinematics3& kin, double t) const {
+Vec3 FlexJoint::moment(const Model3& model, const Kinematics3& kin, double t) const {
   const Axis a = axis(t);
   return -(springTorque(model, kin, a.d) + damperTorque(model, kin, a.w));
 }

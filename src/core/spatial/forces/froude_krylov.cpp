@@ -5,7 +5,7 @@
 namespace riser_sim {
 namespace spatial {
 
-double FroudeKrylov::sweep(const SpatialModel& model, const Kinematics3& kin, double t, VecX* Q) const {
+double FroudeKrylov::sweep(const Model3& model, const Kinematics3& kin, double t, VecX* Q) const {
   if (!water_.moving()) return 0.0;
   double pw = 0.0;
   for (int i = 0; i < model.bodies(); ++i)
@@ -26,15 +26,15 @@ double FroudeKrylov::sweep(const SpatialModel& model, const Kinematics3& kin, do
   return pw;
 }
 
-void FroudeKrylov::addForces(const SpatialModel& model, const Kinematics3& kin, double t, VecX& Q) const {
+void FroudeKrylov::addForces(const Model3& model, const Kinematics3& kin, double t, VecX& Q) const {
   sweep(model, kin, t, &Q);
 }
 
-double FroudeKrylov::addForcesAndPower(const SpatialModel& model, const Kinematics3& kin, double t, VecX& Q) const {
+double FroudeKrylov::addForcesAndPower(const Model3& model, const Kinematics3& kin, double t, VecX& Q) const {
   return sweep(model, kin, t, &Q);
 }
 
-double FroudeKrylov::power(const SpatialModel& model, const Kinematics3& kin, double t) const {
+double FroudeKrylov::power(const Model3& model, const Kinematics3& kin, double t) const {
   return sweep(model, kin, t, nullptr);
 }
 

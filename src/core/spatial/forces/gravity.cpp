@@ -4,7 +4,7 @@ namespace riser_sim {
 namespace spatial {
 
 // Σ over parts of [m_p g; κ_p e·m_p g; s_p m_p g] = [m g; m_k e·g; S(Δ) g].
-void Gravity::addForces(const SpatialModel& model, const Kinematics3& kin, double, VecX& Q) const {
+void Gravity::addForces(const Model3& model, const Kinematics3& kin, double, VecX& Q) const {
   const Vec3& g = model.gravity();
   for (int i = 0; i < model.bodies(); ++i) {
     const Rfe& r = model.rfe(i);
@@ -16,7 +16,7 @@ void Gravity::addForces(const SpatialModel& model, const Kinematics3& kin, doubl
   }
 }
 
-double Gravity::potentialEnergy(const SpatialModel& model, const Kinematics3& kin, double) const {
+double Gravity::potentialEnergy(const Model3& model, const Kinematics3& kin, double) const {
   double v = 0.0;
   for (int i = 0; i < model.bodies(); ++i) {
     const Rfe& r = model.rfe(i);
@@ -27,7 +27,7 @@ double Gravity::potentialEnergy(const SpatialModel& model, const Kinematics3& ki
 }
 
 // Geometric part: Q_Δ = m_k e·g and Q_e = S(Δ) g, dS/dΔ = m_k (Δ only moves with axial flexibility).
-void Gravity::addStiffness(const SpatialModel& model, const Kinematics3&, double, SpatialStiffness& S) const {
+void Gravity::addStiffness(const Model3& model, const Kinematics3&, double, Stiffness3& S) const {
   if (!model.options().axial_flexibility) return;
   const Vec3& g = model.gravity();
   for (int i = 0; i < model.bodies(); ++i) {

@@ -17,7 +17,7 @@ Vec3 MorisonDrag::relativeVelocity(const BodyKinematics3& b, const WetPart3& w, 
   return rel;
 }
 
-double MorisonDrag::sweep(const SpatialModel& model, const Kinematics3& kin, double t, VecX* Q) const {
+double MorisonDrag::sweep(const Model3& model, const Kinematics3& kin, double t, VecX* Q) const {
   double pw = 0.0;
   for (int i = 0; i < model.bodies(); ++i)
     for (int p = 0; p < 2; ++p) {
@@ -34,20 +34,20 @@ double MorisonDrag::sweep(const SpatialModel& model, const Kinematics3& kin, dou
   return pw;
 }
 
-void MorisonDrag::addForces(const SpatialModel& model, const Kinematics3& kin, double t, VecX& Q) const {
+void MorisonDrag::addForces(const Model3& model, const Kinematics3& kin, double t, VecX& Q) const {
   sweep(model, kin, t, &Q);
 }
 
-double MorisonDrag::addForcesAndPower(const SpatialModel& model, const Kinematics3& kin, double t, VecX& Q) const {
+double MorisonDrag::addForcesAndPower(const Model3& model, const Kinematics3& kin, double t, VecX& Q) const {
   return sweep(model, kin, t, &Q);
 }
 
-double MorisonDrag::power(const SpatialModel& model, const Kinematics3& kin, double t) const {
+double MorisonDrag::power(const Model3& model, const Kinematics3& kin, double t) const {
   return sweep(model, kin, t, nullptr);
 }
 
 // -∂F/∂V' of each centroid (physics::morisonDragDamping), mapped by the point's Jacobian.
-void MorisonDrag::addStiffness(const SpatialModel& model, const Kinematics3& kin, double t, SpatialStiffness& S) const {
+void MorisonDrag::addStiffness(const Model3& model, const Kinematics3& kin, double t, Stiffness3& S) const {
   if (at_rest_) return;  // no dependence on the rates
   for (int i = 0; i < model.bodies(); ++i)
     for (int p = 0; p < 2; ++p) {

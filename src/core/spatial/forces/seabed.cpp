@@ -25,7 +25,7 @@ Seabed::Seabed(const SeabedSpec& spec, const Vec3& gravity) : spec_(spec), n_(up
   offset_ = spec.level * n_.dot(up);
 }
 
-Seabed::Contact Seabed::contact(const SpatialModel& model, const Kinematics3& kin, int j) const {
+Seabed::Contact Seabed::contact(const Model3& model, const Kinematics3& kin, int j) const {
   const int n1 = model.bodies();
   Contact c;
   c.body = j < n1 ? j : n1 - 1;
@@ -52,7 +52,7 @@ Vec3 Seabed::force(const Contact& c, const Vec3& e, bool conservative) const {
   return F;
 }
 
-double Seabed::sweep(const SpatialModel& model, const Kinematics3& kin, VecX* Q) const {
+double Seabed::sweep(const Model3& model, const Kinematics3& kin, VecX* Q) const {
   double pw = 0.0;
   for (int j = 0; j <= model.bodies(); ++j) {
     const Contact c = contact(model, kin, j);
@@ -64,19 +64,15 @@ double Seabed::sweep(const SpatialModel& model, const Kinematics3& kin, VecX* Q)
   return pw;
 }
 
-void Seabed::addForces(const SpatialModel& model, const Kinematics3& kin, double, VecX& Q) const {
-  sweep(model, kin, &Q);
-}
+void Seabed::addForces(const Model3& model, const Kinematics3& kin, double, VecX& Q) const { sweep(model, kin, &Q); }
 
-double Seabed::addForcesAndPower(const SpatialModel& model, const Kinematics3& kin, double, VecX& Q) const {
+double Seabed::addForcesAndPower(const Model3& model, const Kinematics3& kin, double, VecX& Q) const {
   return sweep(model, kin, &Q);
 }
 
-double Seabed::power(const SpatialModel& model, const Kinematics3& kin, double) const {
-  return sweep(model, kin, nullptr);
-}
+double Seabed::power(const Model3& model, const Kinematics3& kin, double) const { return sweep(model, kin, nullptr); }
 
-double Seabed::potentialEnergy(const SpatialModel& model, const Kinematics3& kin, double) const {
+double Seabed::potentialEnergy(const Model3& model, const Kinematics3& kin, double) const {
   double v = 0.0;
   for (int j = 0; j <= model.bodies(); ++j) {
     const double pen = penetration(contact(model, kin, j).p);
@@ -85,7 +81,7 @@ double Seabed::potentialEnergy(const SpatialModel& model, const Kinematics3& kin
   return v;
 }
 
-int Seabed::contacts(const SpatialModel& model, const Kinematics3& kin) const {
+int Seabed::contacts(const Model3& model, const Kinematics3& kin) const {
   int n = 0;
   for (int j = 0; j <= model.bodies(); ++j) n += penetration(contact(model, kin, j).p) > 0.0;
   return n;
@@ -95,7 +91,7 @@ int Seabed::contacts(const SpatialModel& model, const Kinematics3& kin) const {
 // g = (μ_a v_a a + μ_l v_l l)/s, s = sqrt(v_a² + v_l² + v_s²), F_f = -F_n g gives -∂F_f/∂v_h =
 // F_n (D - D v_p v_pᵀ / s²)/s on the plane (D = μ_a a aᵀ + μ_l l lᵀ, v_p = v_h), and through F_n = C_n p - c_n v_n
 // the terms -c_n g nᵀ (rates) and -C_n g nᵀ (position). The turning of a with e is left out.
-void Seabed::addStiffness(const SpatialModel& model, const Kinematics3& kin, double, SpatialStiffness& S) const {
+void Seabed::addStiffness(const Model3& model, const Kinematics3& kin, double, Stiffness3& S) const {
   const Mat3 UU = n_ * n_.transpose(), P = Mat3::Identity() - UU;
   const bool friction = spec_.friction_axial > 0.0 || spec_.friction_lateral > 0.0;
   for (int j = 0; j <= model.bodies(); ++j) {

@@ -1,0 +1,35 @@
+// The force terms a scene switches on, for both engines: one table whose rows name a term, say whether the
+// scene wants it and add it to the planar Model and to the spatial::Model3. buildModel (scene.h) and
+// buildSpatialModel (spatial/run_builder.h) walk it in order, so both engines hold their terms in the table's order.
+#pragma once
+#include <string>
+#include <vector>
+
+namespace riser_sim {
+
+struct Scene;
+class Model;
+class WaterKinematics;
+namespace spatial {
+class Model3;
+class Water3;
+}  // namespace spatial
+
+// A row adds its term(s) to a model (null: none in that engine). `water`: the model's one sea, built once by
+// add*Terms (null without water); the terms copy it, so they share its wave samples (the waves are paid once
+// per point and time, not once per term).
+struct ForceTermRow {
+  const char* name;                    // the term's name() (planar and spatial alike)
+  bool (*wanted)(const Scene& scene);  // whether the scene switches the term on
+  void (*planar)(const Scene& scene, const WaterKinematics* water, Model& model);
+  void (*spatial)(const Scene& scene, const spatial::Water3* water, spatial::Model3& model);
+};
+
+// The rows in the order the terms enter the models.
+const std::vector<ForceTermRow>& forceTermRegistry();
+
+// Adds every wanted row's terms to the model.
+void addPlanarTerms(const Scene& scene, Model& model);
+void addSpatialTerms(const Scene& scene, spatial::Model3& model);
+
+}  // namespace riser_sim
