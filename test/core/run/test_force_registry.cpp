@@ -42,12 +42,14 @@ attachments:
 
 std::vector<std::string> planarNames(const Scene& s) {
   std::vector<std::string> out;
-  for (const auto& t : buildModel(s)->terms()) out.push_back(t->name());
+  const auto model = buildModel(s);  // held: a temporary's terms() would dangle in the loop
+  for (const auto& t : model->terms()) out.push_back(t->name());
   return out;
 }
 std::vector<std::string> spatialNames(const Scene& s) {
   std::vector<std::string> out;
-  for (const auto& t : spatial::buildSpatialModel(s)->terms()) out.push_back(t->name());
+  const auto model = spatial::buildSpatialModel(s);
+  for (const auto& t : model->terms()) out.push_back(t->name());
   return out;
 }
 
