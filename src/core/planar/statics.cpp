@@ -182,14 +182,27 @@ Attempt direct(const Model& model, const StaticsProblem& problem, const StaticTe
 // (x10^(1/2) per step, halved in the exponent when Newton fails), so the line settles onto the seabed
 // along a path of equilibria instead of jumping into a stiff one. Starts from the first guess on a
 // seabed 10^start_exp as stiff, or (start_exp = -inf) from the solution without the seabed at 1e-6.
+Attempt raiseSeabed(const Model& model, const StaticsProblem& problem, StaticTerms& terms, double t, double e,
+                    Attempt a, Budget& b);
+
 Attempt seabedRamp(const Model& model, const StaticsProblem& problem, StaticTerms& terms, double t, double start_exp,
                    Budget& b) {
   const bool from_free = !std::isfinite(start_exp);
-  double e = from_free ? -6.0 : std::min(start_exp, 0.0), step = 0.5;  // log10 of the stiffness factor
-  StaticsProblem loose = problem;                                      // the intermediate states need not be exact
+  const double e = from_free ? -6.0 : std::min(start_exp, 0.0);  // log10 of the stiffness factor
+  StaticsProblem loose = problem;                                // the intermediate states need not be exact
   loose.tolerance = std::max(problem.tolerance, 1e-6);
   terms.scaleSeabed(from_free ? 0.0 : std::pow(10.0, e));
   Attempt a = direct(model, loose, terms, t, b);
+  return raiseSeabed(model, problem, terms, t, e, std::move(a), b);
+}
+
+// The seabed's normal stiffness raised from 10^e of the scene's to the scene's along the path of equilibria,
+// from the state a solved there (x10^(1/2) per step, halved in the exponent when Newton fails).
+Attempt raiseSeabed(const Model& model, const StaticsProblem& problem, StaticTerms& terms, double t, double e,
+                    Attempt a, Budget& b) {
+  StaticsProblem loose = problem;
+  loose.tolerance = std::max(problem.tolerance, 1e-6);
+  double step = 0.5;
   StaticResidual F(model, problem, terms, t);
   while (a.converged && e < 0.0 && step > 1e-3) {
     const double next = std::min(e + step, 0.0);
@@ -442,6 +455,35 @@ StaticsResult solveStatics(const Model& model, const StaticsProblem& problem, do
   if (!a.failure.empty() && problem.continuation && !budget.out) {
     const Attempt c = loadRamps(problem, true, failures);
     if (c.failure.empty()) a = c;
+  }
+  if (!a.failure.empty() && problem.continuation && k > 0.0 && !budget.out &&
+      (terms.hasAttachments() || terms.hasBuoyantSection())) {
+    // The load ramps on a seabed 10x softer (its contacts switch less as the touch-down moves: a lazy wave's
+    // Newton chatters there), then its stiffness raised to the scene's; the end is checked as any solution.
+    StaticsProblem loose = problem;
+    loose.tolerance = std::max(problem.tolerance, 1e-6);
+    terms.softenSeabed(0.1);
+    std::string soft_failures;
+    Attempt c = loadRamps(loose, false, soft_failures);
+    terms.softenSeabed(1.0);
+    c.converged = c.failure.empty();
+    c = raiseSeabed(model, problem, terms, t, -1.0, std::move(c), budget);
+    std::ostringstream o;
+    if (!c.converged) {
+      o << "(" << (soft_failures.empty() ? std::string("raising its stiffness") : soft_failures.substr(2)) << ")";
+    } else {
+      Kinematics kin(model.bodies());
+      F.toKinematics(c.x, kin);
+      const EquilibriumCheck ch = checkEquilibrium(model, problem, kin, F.endForce(c.x), t);
+      if (!ch.ok)
+        o << "to a valid equilibrium: its solution (" << c.iterations << " iterations, residual " << c.residual
+          << ") fails the check " << ch.message;
+    }
+    c.failure = o.str();
+    if (c.failure.empty())
+      a = c;
+    else
+      failures += "; with the loads ramped up on a seabed 10x softer, then its stiffness raised " + c.failure;
   }
   res.converged = a.failure.empty();
   res.iterations = a.iterations;

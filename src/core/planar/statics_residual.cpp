@@ -103,7 +103,13 @@ double StaticTerms::seabedStiffness() const {
   return k;
 }
 
+void StaticTerms::softenSeabed(double base) {
+  seabed_base_ = base;
+  scaleSeabed(1.0);
+}
+
 void StaticTerms::scaleSeabed(double factor) {
+  factor *= seabed_base_;
   for (size_t k = 0; k < original_.size(); ++k) {
     const auto* s = dynamic_cast<const Seabed*>(original_[k]);
     if (!s) continue;

@@ -19,7 +19,8 @@ class StaticTerms {
   bool isSeabed(size_t k) const { return std::isfinite(terms_[k]->seabedLevel()); }
   double seabedLevel() const;       // highest seabed level (-inf without one) [m]
   double seabedStiffness() const;   // its normal stiffness per contact point (0 without) [N/m]
-  void scaleSeabed(double factor);  // normal stiffness x factor (1: as the scene says)
+  void scaleSeabed(double factor);  // normal stiffness x factor x the base (1, 1: as the scene says)
+  void softenSeabed(double base);   // the base of scaleSeabed's factor (1: the scene's), applied at once
   // The current's velocity x factor (1: as the scene says), for the continuation in the current.
   void scaleCurrent(double factor);
   // The attachments' loads x factor (Attachments::scaled: their weight included), for the continuation in them.
@@ -39,6 +40,7 @@ class StaticTerms {
   bool has_current_ = false;
   double current_factor_ = 1.0;
   double attachments_factor_ = 1.0;
+  double seabed_base_ = 1.0;
   int attachments_ = -1;  // index of the attachments' term
   int buoyancy_ = -1;     // index of the buoyancy's term
   std::vector<std::unique_ptr<ForceTerm>> owned_;

@@ -4,9 +4,12 @@
 // forces: the builder's acceleration bound) and for stability, both independent of the statics' residual.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <string>
 #include <vector>
 
+#include "riser_sim/planar/statics.h"
+#include "riser_sim/run/run_builder.h"
 #include "riser_sim/scene/scene.h"
 #include "riser_sim/scene/scene_yaml.h"
 #include "riser_sim/spatial/run_builder.h"
@@ -41,6 +44,34 @@ TEST(StaticsLoadRamps, TetherWithFloatsStartsInACurrentAlongAndAcross) {
     const Vec3 u_across = u - u.dot(chord) * chord;
     if (u_across.norm() > 0.1) EXPECT_GT(off.dot(u_across), 0.0);
   }
+}
+
+// The lazy wave hung off 2 m deeper than its scene's working point (a fixed top at -10 m): the catenary guess, the
+// seabed's ramps and the buoyancy's ramp all stop short (the buoyancy's at 0.96 of the lift, contacts at the
+// touch-down switching on the stiff seabed); the loads ramped on a seabed 10x softer, then its stiffness raised,
+// reach it. Checked by checkEquilibrium (residual and stability, independent of the path) and by its shape: the
+// hog bend inside the buoyancy section (560-800 m) above the sag bend before it. ~40 s: long.
+TEST(StaticsLoadRamps, LazyWaveStartsWithItsHangOffMoved) {
+  const char* check = std::getenv("RISER_SIM_CHECK");
+  const char* run_long = std::getenv("RISER_SIM_LONG");
+  if (check && std::string(check) == "1" && !(run_long && std::string(run_long) == "1"))
+    GTEST_SKIP() << "long: RISER_SIM_LONG=1 runs it under make check";
+  const Scene s = loadSceneFile(std::string(RISER_SIM_SOURCE_DIR) + "/config/scenes/lazy_wave_riser.yaml",
+                                {"top.motion=null", "top.position=[0.0, -10.0]"});
+  const auto model = buildModel(s);
+  InitialState init;
+  ASSERT_NO_THROW(init = solveInitialState(s, *model, staticsProblem(s).top));
+  const EquilibriumCheck c = checkEquilibrium(*model, staticsProblem(s), init.kin, init.end_force);
+  EXPECT_TRUE(c.ok) << c.message;
+  // Elevation against arc length: the lowest point before the buoyancy section, the highest inside it.
+  double sag = INFINITY, hog = -INFINITY;
+  for (size_t i = 0; i < init.kin.size(); ++i) {
+    const double s_end = 5.0 + 10.0 * i;  // rfe i's end: half an end element, then 10 m segments (the scene's)
+    const double z = init.kin[i].end().y();
+    if (s_end < 560.0) sag = std::min(sag, z);
+    if (s_end > 560.0 && s_end < 800.0) hog = std::max(hog, z);
+  }
+  EXPECT_GT(hog, sag + 5.0);  // a wave: the scene's working point has its hog ~30 m above the sag
 }
 
 }  // namespace
