@@ -387,6 +387,17 @@ StaticsResult solveStatics(const Model& model, const StaticsProblem& problem, do
     }
     return a;
   };
+  // Empty when the state of c passes checkEquilibrium(), else why (the continuations' ends).
+  const auto checked = [&](const Attempt& c) {
+    Kinematics kin(model.bodies());
+    F.toKinematics(c.x, kin);
+    const EquilibriumCheck ch = checkEquilibrium(model, problem, kin, F.endForce(c.x), t);
+    std::ostringstream o;
+    if (!ch.ok)
+      o << "to a valid equilibrium: its solution (" << c.iterations << " iterations, residual " << c.residual
+        << ") fails the check " << ch.message;
+    return o.str();
+  };
   std::string failures;
   Attempt a = attempts(problem, true, failures);
   if (!a.failure.empty() && problem.continuation && terms.hasCurrent() && !budget.out) {
@@ -438,12 +449,7 @@ StaticsResult solveStatics(const Model& model, const StaticsProblem& problem, do
       if (!lost.empty()) o << ", the next one is unstable";
       o << ": " << currentLimit(model, problem, terms, kin, F.endForce(c.x)) << ")";
     } else {
-      Kinematics kin(model.bodies());
-      F.toKinematics(c.x, kin);
-      const EquilibriumCheck ch = checkEquilibrium(model, problem, kin, F.endForce(c.x), t);
-      if (!ch.ok)
-        o << "to a valid equilibrium: its solution (" << c.iterations << " iterations, residual " << c.residual
-          << ") fails the check " << ch.message;
+      o << checked(c);
     }
     c.iterations += a.iterations;
     c.failure = o.str();
@@ -466,19 +472,16 @@ StaticsResult solveStatics(const Model& model, const StaticsProblem& problem, do
     std::string soft_failures;
     Attempt c = loadRamps(loose, false, soft_failures);
     terms.softenSeabed(1.0);
-    c.converged = c.failure.empty();
+    const bool ramped = c.failure.empty();
+    c.converged = ramped;
     c = raiseSeabed(model, problem, terms, t, -1.0, std::move(c), budget);
     std::ostringstream o;
-    if (!c.converged) {
-      o << "(" << (soft_failures.empty() ? std::string("raising its stiffness") : soft_failures.substr(2)) << ")";
-    } else {
-      Kinematics kin(model.bodies());
-      F.toKinematics(c.x, kin);
-      const EquilibriumCheck ch = checkEquilibrium(model, problem, kin, F.endForce(c.x), t);
-      if (!ch.ok)
-        o << "to a valid equilibrium: its solution (" << c.iterations << " iterations, residual " << c.residual
-          << ") fails the check " << ch.message;
-    }
+    if (!ramped)
+      o << "(" << (soft_failures.size() > 2 ? soft_failures.substr(2) : std::string("no load ramp converged")) << ")";
+    else if (!c.converged)
+      o << "(raising its stiffness from 0.1 of the scene's: the path of equilibria Newton follows ends before)";
+    else
+      o << checked(c);
     c.failure = o.str();
     if (c.failure.empty())
       a = c;
