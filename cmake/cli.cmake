@@ -16,7 +16,8 @@ install(TARGETS riser_sim_cli RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATI
 
 # test/core/test_cli*.cpp (made gtests by cmake/core.cmake's glob) run the built binary.
 foreach(t test_cli test_cli_outputs test_cli_spatial test_cli_spatial_ends test_cli_spatial_modes
-          test_cli_spatial_torsion test_cli_statics_only test_cli_range_graph test_cli_section_extremes)
+          test_cli_spatial_torsion test_cli_statics_only test_cli_range_graph test_cli_section_extremes
+          test_cli_shipped_scenes)
   if(CATKIN_ENABLE_TESTING AND TARGET ${t})
     target_compile_definitions(${t} PRIVATE
       RISER_SIM_CLI_BINARY="${CATKIN_DEVEL_PREFIX}/${CATKIN_PACKAGE_BIN_DESTINATION}/riser_sim_cli")
