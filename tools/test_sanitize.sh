@@ -69,7 +69,10 @@ long+=":SpatialTorsion.ImplicitSchemesStaySecondOrder:SpatialTorsion.Axial*:Spat
 # The 3D ends' runs to rest through the CLI (40 s at 0.5 ms; 23 s each under ASan).
 long+=":CliSpatialEnds.FlexJointTopMomentBalancesTheWeight:CliSpatialEnds.PinnedBottomForceAndMoment"
 # Whole-scene runs through the CLI and long energy balances (11-15 s each under ASan); the per-step code they
-# run is covered by the short tests.
+# run is covered by the short tests. Every shipped scene's statics in process and the planar ones' 0.5 s in 3D
+# against 2D (test_cli_shipped_scenes: 99 s and 53 s under ASan): Cli.EveryShippedSceneRuns and
+# CliSpatial.PlanarScenesRunThroughTheSpatialPath run each scene's statics and first steps.
+long+=":SceneYaml.EveryShippedSceneParsesAndBuilds"
 long+=":CliSpatial.PlanarScenesThroughTheSpatialPath:CliSpatial.YawedSceneGivesTheRotatedResult"
 long+=":TermData.SimulatorsSharingAModelRunIndependently:HydroInternalFlow.EnergyBalanceHoldsWithConstantAndAcceleratingFlow"
 # The listed binaries are short: every test in them runs (their tests run nowhere else in make test).
@@ -104,8 +107,8 @@ run_one() {
   return 1
 }
 export -f run_one
-# The longest first, two at a time.
-first=" test_extremes test_formulations_agree test_energy test_hydro_dynamics test_cli_spatial test_modal "
+# The longest first, two at a time (test_cli: every shipped scene, ~100 s under ASan).
+first=" test_cli test_extremes test_formulations_agree test_energy test_hydro_dynamics test_cli_spatial test_modal "
 {
   for n in $first; do
     [ -x "$build/tests/$n" ] && { [ -z "$tests" ] || [[ " $tests " == *" $n "* ]]; } && echo "$build/tests/$n"
