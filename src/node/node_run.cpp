@@ -105,7 +105,7 @@ std::string NodeRun::startMessage() {
                                        num(o.bottom_point.y(), "%.3f") + ", " + num(o.bottom_point.z(), "%.3f") + ") m"
                                  : std::string();
   const Eigen::Vector3d top =
-      spatial() ? scene.top.position3 : Eigen::Vector3d(scene.top.position.x(), 0.0, scene.top.position.y());
+      spatial() ? scene.top.position : riser_sim::inSpace(riser_sim::inPlane(scene.top.position));
   return (run_->start().equilibrium ? "static equilibrium" : run_->start().about) + " at hang-off " +
          point(scene, top, "%.3f") + " m" + bottom + (spatial() ? " (3D)" : "") + ": top tension " +
          num(o.top_tension, "%.1f") + " N; running";

@@ -12,7 +12,7 @@ using Vec3 = Eigen::Vector3d;
 
 bool hasCurrent(const riser_sim::WaterSpec& w) {
   const riser_sim::CurrentSpec& c = w.current;
-  return w.enabled && (c.velocity3.norm() > 0.0 || c.acceleration3.norm() > 0.0 || !c.profile.empty());
+  return w.enabled && (c.velocity.norm() > 0.0 || c.acceleration.norm() > 0.0 || !c.profile.empty());
 }
 
 geometry_msgs::Point point(const Vec3& v) {

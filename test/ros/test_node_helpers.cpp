@@ -40,7 +40,8 @@ TEST(XmlRpcYaml, ParameterTreeParsesLikeTheSceneFile) {
   EXPECT_EQ(s.line.EA, 1.0e6);
   EXPECT_FALSE(s.options.bending);
   EXPECT_EQ(s.top.position.x(), 1.5);
-  EXPECT_EQ(s.top.position.y(), -2.0);
+  EXPECT_EQ(s.top.position.y(), 0.0);  // [x, z]: (x, 0, z)
+  EXPECT_EQ(s.top.position.z(), -2.0);
   EXPECT_EQ(s.solver.dt, 1e-4);  // doubles round-trip exactly (%.17g)
 }
 

@@ -57,8 +57,8 @@ TEST(SpatialState, CurvatureAndMomentAreThePlanarNodesInAnyVerticalPlane) {
     riser_sim::Scene s = planar;
     s.space = riser_sim::SpaceKind::kSpatial;
     const Vec3 top(8.0 * std::cos(psi), 8.0 * std::sin(psi), 0.0);
-    s.top.position3 = top;
-    s.bottom_point3 = Vec3(0.0, 0.0, -15.0);
+    s.top.position = top;
+    s.bottom_point = Vec3(0.0, 0.0, -15.0);
     std::unique_ptr<NodeRun> run = startAt(s, top);
     const riser_sim::LineState q = run->state(ros::Time(1));
     ASSERT_EQ(q.curvatures.size(), size_t(joints));
@@ -100,7 +100,7 @@ environment: {gravity: 9.81}
 initial: {type: between_points}
 solver: {dt: 0.001}
 )");
-  s.top.position3 = top;
+  s.top.position = top;
   std::unique_ptr<NodeRun> run = startAt(s, top);
   const geometry_msgs::Wrench& f = run->topWrench(ros::Time(1)).wrench;  // the line's pull on the hang-off
   const double H = std::hypot(f.force.x, f.force.y), V = -f.force.z, a = H / w, sv = V / w;

@@ -66,7 +66,7 @@ TEST(NodeModes, MatchesTheCoreAndThePendulum) {
   // The reference: the same scene with the top fixed at the hang-off, statics and modes in this process.
   riser_sim::Scene scene = riser_sim::loadSceneFile(scene_file);
   scene.top.type = riser_sim::MotionKind::kFixed;
-  scene.top.position = riser_sim::Vec2(kX, kZ);
+  scene.top.position = Eigen::Vector3d(kX, 0.0, kZ);
   riser_sim::ModalOptions o;
   o.modes = 5;
   const riser_sim::ModalResult ref = riser_sim::sceneModes(scene, o);

@@ -4,48 +4,11 @@
 #pragma once
 #include <vector>
 
-#include "riser_sim/scene/choices.h"
+#include "riser_sim/scene/in_plane.h"
+#include "riser_sim/scene/water_spec.h"
 #include "riser_sim/types.h"
 
 namespace riser_sim {
-
-struct CurrentSpec {
-  Vec2 velocity = Vec2::Zero();      // uniform current at t = 0 [m/s] (x, y_up: the planar core's plane)
-  Vec2 acceleration = Vec2::Zero();  // uniform acceleration of the current [m/s^2]
-  // The same in 3D (x, y horizontal, z up; the planar ones are their (x, z)): the spatial core reads these.
-  Eigen::Vector3d velocity3 = Eigen::Vector3d::Zero(), acceleration3 = Eigen::Vector3d::Zero();
-  struct Point {
-    double depth;     // below the surface [m], increasing
-    double vx;        // horizontal velocity [m/s]
-    double vy = 0.0;  // the other horizontal component (3D only) [m/s]
-  };
-  std::vector<Point> profile;  // depth profile (replaces the horizontal velocity when given), linear between points
-};
-
-struct WaveSpec {
-  WaveKind type = WaveKind::kRegular;  // regular (Airy) or irregular long-crested (JONSWAP)
-  double height = 0.0;                 // H, crest to trough [m]; 0 = no waves
-  double period = 10.0;                // T [s]
-  double phase = 0.0;                  // [rad]
-  double direction = 1.0;  // +1 travels towards +x, -1 towards -x (in 3D: along +-(cos heading, sin heading))
-  double heading = 0.0;    // azimuth of +direction from +x towards +y [rad] (3D only; planar: 0)
-  double depth = 1000.0;   // water depth for the dispersion relation [m]
-  double ramp = 0.0;       // amplitude ramped from 0 at t = 0 to full at t = ramp, ½(1 - cos πt/ramp) [s]; 0 = none
-  // jonswap: significant height Hs [m] (0 = no waves), peak period Tp [s], peak enhancement γ, the number of
-  // components on [0.5, 3] ω_p (equal bins) and the seed of their random phases (the same seed, the same sea).
-  double significant_height = 0.0, peak_period = 10.0, gamma = 3.3;
-  int components = 100;
-  unsigned seed = 1;
-  bool active() const { return type == WaveKind::kRegular ? height > 0.0 : significant_height > 0.0; }
-};
-
-struct WaterSpec {
-  bool enabled = false;
-  double density = 1025.0;  // ρ_w [kg/m^3]
-  double surface = 0.0;     // y of the mean free surface [m]
-  CurrentSpec current;
-  WaveSpec waves;
-};
 
 class WaterKinematics {
  public:
@@ -76,6 +39,7 @@ class WaterKinematics {
   // cosh(k(z+h))/sinh(kh) and sinh(k(z+h))/sinh(kh) at z below the surface, finite for any k h.
   void depthRatios(const Component& c, double z, double& ch, double& sh) const;
   WaterSpec spec_;
+  Vec2 velocity_, acceleration_;  // the uniform current's (x, z): the plane's (x, y_up)
   std::vector<Component> comp_;
   bool moving_ = false;
 };

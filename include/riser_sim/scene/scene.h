@@ -15,31 +15,31 @@
 #include "riser_sim/planar/forces/seabed.h"
 #include "riser_sim/motion/top_motion.h"
 #include "riser_sim/planar/water.h"
+#include "riser_sim/scene/in_plane.h"
+#include "riser_sim/scene/water_spec.h"
 
 namespace riser_sim {
 
-// Vectors: the planar fields are [x, z_up] (the 2D path reads only them); the *3 fields are the same
-// values in 3D, [x, y, z] with z up (REP 103; space: spatial reads only them). A scene's 2-vector
-// [a, b] is (a, b) planar and (a, 0, b) in 3D; a 3-vector [x, y, z] is (x, z) planar (y = 0 there).
+// Vectors are 3D, [x, y, z] with z up (REP 103). A planar scene is the 3D scene in its vertical x-z plane
+// (y = 0): the planar engine reads inPlane(v) = (x, z) (scene/in_plane.h). A scene's 2-vector [a, b] is
+// (a, 0, b); a 3-vector [x, y, z] with y != 0 is refused in a planar scene.
 struct TopMotionSpec {
-  MotionKind type = MotionKind::kFixed;            // top.motion.type
-  Vec2 position = Vec2::Zero();                    // top.position: A_0 at t = 0 (centre of a sinusoid) [m]
-  Vec2 amplitude = Vec2::Zero();                   // sinusoid [m]
-  double period = 1.0;                             // sinusoid [s]
-  double phase = 0.0;                              // sinusoid [rad]
-  std::vector<VelocityProfileMotion::Knot> knots;  // velocity_profile: (t [s], v [m/s])
-  struct Knot3 {
-    double t;
-    Eigen::Vector3d v;
+  struct Knot {
+    double t;           // [s]
+    Eigen::Vector3d v;  // [m/s]
   };
-  Eigen::Vector3d position3 = Eigen::Vector3d::Zero();   // [m]
-  Eigen::Vector3d amplitude3 = Eigen::Vector3d::Zero();  // [m]
-  Eigen::Vector3d phase3 = Eigen::Vector3d::Zero();      // per axis [rad] (top.motion.phase: a number or a 3-vector)
-  std::vector<Knot3> knots3;
-  // sinusoid, spatial: the holder's attitude, roll/pitch/yaw (Z-Y-X) = attitude3 ∘ cos(2π t / period +
-  // attitude_phase3) [rad] (top.motion.attitude [deg], attitude_phase [rad]); zero: the holder does not turn.
-  Eigen::Vector3d attitude3 = Eigen::Vector3d::Zero();
-  Eigen::Vector3d attitude_phase3 = Eigen::Vector3d::Zero();
+  MotionKind type = MotionKind::kFixed;                 // top.motion.type
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();   // top.position: A_0 at t = 0 (centre of a sinusoid) [m]
+  Eigen::Vector3d amplitude = Eigen::Vector3d::Zero();  // sinusoid [m]
+  double period = 1.0;                                  // sinusoid [s]
+  // sinusoid, per axis [rad] (top.motion.phase: a number, the same on every axis, or a 3-vector in 3D); the
+  // planar engine reads phase.x() (a planar scene has one phase).
+  Eigen::Vector3d phase = Eigen::Vector3d::Zero();
+  std::vector<Knot> knots;  // velocity_profile: (t, v)
+  // sinusoid, spatial: the holder's attitude, roll/pitch/yaw (Z-Y-X) = attitude ∘ cos(2π t / period +
+  // attitude_phase) [rad] (top.motion.attitude [deg], attitude_phase [rad]); zero: the holder does not turn.
+  Eigen::Vector3d attitude = Eigen::Vector3d::Zero();
+  Eigen::Vector3d attitude_phase = Eigen::Vector3d::Zero();
 };
 
 // A flex joint at an end (space: spatial; spatial/forces/flex_joint.h): a rotational spring k and damper c
@@ -119,8 +119,7 @@ struct Scene {
   TopMotionSpec top;
   FlexJointSpec top_flex_joint;  // top.flex_joint (3D)
   BottomBoundary bottom = BottomBoundary::kFree;
-  Vec2 bottom_point = Vec2::Zero();
-  Eigen::Vector3d bottom_point3 = Eigen::Vector3d::Zero();  // the same point in 3D [m]
+  Eigen::Vector3d bottom_point = Eigen::Vector3d::Zero();  // bottom.position [m]
   // bottom.motion of a pinned bottom (3D; the top's motion keys): its position is bottom.position. fixed by
   // default; external is held at bottom.position until fed (as the top's external in the CLI).
   TopMotionSpec bottom_motion;
@@ -140,6 +139,7 @@ struct Scene {
 std::vector<LineSection> lineSections(const Scene& scene);
 // Some section has a C_M or C_a,t of its own (the added-mass terms are built for it).
 bool sectionsAddMass(const Scene& scene);
+// The planar engine's model and holder motion: they read inPlane of the scene's vectors (a sinusoid's phase.x()).
 std::shared_ptr<Model> buildModel(const Scene& scene);
 std::unique_ptr<TopMotion> buildTopMotion(const TopMotionSpec& spec);
 // Static problem for the scene's initial state (top at the motion's position at t = 0).

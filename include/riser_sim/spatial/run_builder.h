@@ -58,14 +58,14 @@ class SinusoidMotion3 : public TopMotion3 {
 // Velocity piecewise linear between knots (the planar VelocityProfileMotion on (x, z) and on y).
 class VelocityProfileMotion3 : public TopMotion3 {
  public:
-  VelocityProfileMotion3(const Vec3& start, const std::vector<TopMotionSpec::Knot3>& knots);
+  VelocityProfileMotion3(const Vec3& start, const std::vector<TopMotionSpec::Knot>& knots);
   PointMotion3 at(double t) const override;
 
  private:
   std::unique_ptr<TopMotion> xz_, y_;
 };
 
-// top.motion (or bottom.motion, the same keys) in 3D; external is held at spec.position3 (the CLI has no feed).
+// top.motion (or bottom.motion, the same keys) in 3D; external is held at spec.position (the CLI has no feed).
 std::unique_ptr<TopMotion3> buildTopMotion3(const TopMotionSpec& spec);
 // The scene's line in 3D: gravity (0, 0, -g), axial and bending terms as the scene lists them, the end
 // mass, the bottom free or pinned at bottom.position (held fixed: Run3 adds the bottom's motion and

@@ -26,7 +26,7 @@ StaticTerms::StaticTerms(const Model& model, double t) : model_(model), t_(t) {
   for (const auto& term : model.terms())
     if (const auto* d = dynamic_cast<const MorisonDrag*>(term.get())) w = &d->water().spec();
   if (w && w->enabled) {
-    has_current_ = w->current.velocity.norm() > 0.0 || w->current.acceleration.norm() > 0.0;
+    has_current_ = inPlane(w->current.velocity).norm() > 0.0 || inPlane(w->current.acceleration).norm() > 0.0;
     for (const CurrentSpec::Point& p : w->current.profile) has_current_ |= p.vx != 0.0 || p.vy != 0.0;
   }
 }

@@ -32,10 +32,11 @@ double WaterKinematics::jonswapShape(double omega, double omega_p, double gamma)
   return std::pow(omega, -5.0) * std::exp(-1.25 * std::pow(omega_p / omega, 4)) * std::pow(gamma, r);
 }
 
-WaterKinematics::WaterKinematics(const WaterSpec& spec, double gravity) : spec_(spec) {
+WaterKinematics::WaterKinematics(const WaterSpec& spec, double gravity)
+    : spec_(spec), velocity_(inPlane(spec.current.velocity)), acceleration_(inPlane(spec.current.acceleration)) {
   const CurrentSpec& c = spec.current;
   const WaveSpec& w = spec.waves;
-  moving_ = c.velocity.norm() > 0.0 || c.acceleration.norm() > 0.0 || !c.profile.empty() || w.active();
+  moving_ = velocity_.norm() > 0.0 || acceleration_.norm() > 0.0 || !c.profile.empty() || w.active();
   if (!w.active()) return;
   const double h = w.depth;
   const auto add = [&](double a, double omega, double phase) {
@@ -109,8 +110,8 @@ void WaterKinematics::at(const Vec2& p, double t, Vec2& v, Vec2& a) const {
   const double z = p.y() - spec_.surface;  // < 0 below the surface
   if (z > 0.0) return;
   const CurrentSpec& c = spec_.current;
-  v = c.velocity + c.acceleration * t;
-  a = c.acceleration;
+  v = velocity_ + acceleration_ * t;
+  a = acceleration_;
   if (!c.profile.empty()) {
     const double d = -z;
     double vx = c.profile.front().vx;
@@ -126,7 +127,7 @@ void WaterKinematics::at(const Vec2& p, double t, Vec2& v, Vec2& a) const {
           break;
         }
     }
-    v.x() = vx + c.acceleration.x() * t;
+    v.x() = vx + acceleration_.x() * t;
   }
   const WaveSpec& w = spec_.waves;
   if (comp_.empty()) return;

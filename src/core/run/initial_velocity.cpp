@@ -60,8 +60,7 @@ void checkInitialVelocity(const Scene& scene) {
   if (scene.bottom != BottomBoundary::kPinned) return;
   const spatial::PointMotion3 bottom =
       scene.space == SpaceKind::kSpatial ? holderAt0(scene, scene.bottom_motion) : spatial::PointMotion3{};
-  const Vec3 p_bottom =
-      scene.space == SpaceKind::kSpatial ? bottom.p : Vec3(scene.bottom_point.x(), 0.0, scene.bottom_point.y());
+  const Vec3 p_bottom = scene.space == SpaceKind::kSpatial ? bottom.p : inSpace(inPlane(scene.bottom_point));
   const Vec3 u = rigidVelocity(spec, top.p, p_bottom);
   if (!((u - bottom.v).norm() <= tol)) {
     const std::string key = spec.rotation == 0.0 ? kTranslationKey : v.isZero() ? kRotationKey : "initial.velocity";
@@ -73,15 +72,14 @@ void checkInitialVelocity(const Scene& scene) {
 std::unique_ptr<TopMotion> runTopMotion(const Scene& scene) {
   const InitialSpec& spec = scene.initial;
   if (spec.has_velocity && scene.top.type == MotionKind::kFixed && !spec.translation.isZero())
-    return std::make_unique<ConstantVelocityMotion>(scene.top.position,
-                                                    Vec2(spec.translation.x(), spec.translation.z()));
+    return std::make_unique<ConstantVelocityMotion>(inPlane(scene.top.position), inPlane(spec.translation));
   return buildTopMotion(scene.top);
 }
 
 std::unique_ptr<spatial::TopMotion3> runTopMotion3(const Scene& scene) {
   const InitialSpec& spec = scene.initial;
   if (spec.has_velocity && scene.top.type == MotionKind::kFixed && !spec.translation.isZero())
-    return std::make_unique<spatial::ConstantVelocityMotion3>(scene.top.position3, spec.translation);
+    return std::make_unique<spatial::ConstantVelocityMotion3>(scene.top.position, spec.translation);
   return spatial::buildTopMotion3(scene.top);
 }
 

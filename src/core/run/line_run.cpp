@@ -6,6 +6,7 @@
 
 #include "riser_sim/planar/forces/attachments.h"
 #include "riser_sim/run/run_builder.h"
+#include "riser_sim/scene/in_plane.h"
 #include "riser_sim/spatial/external_motion.h"
 #include "riser_sim/spatial/forces/attachments.h"
 #include "riser_sim/spatial/forces/bending_spring.h"
@@ -40,11 +41,6 @@ bool allFinite(const RunOutputs& o) {
 }
 
 namespace {
-
-// Planar (x, y), y up -> 3D (x, 0, y), z up.
-Vec3 inSpace(const Vec2& p) { return Vec3(p.x(), 0.0, p.y()); }
-// 3D -> the planar scene's plane (world y dropped).
-Vec2 inPlane(const Vec3& p) { return Vec2(p.x(), p.z()); }
 
 // initial.velocity with holders driven from outside: their feeds start at rest, so a translation (live top) or any
 // rigid motion (live bottom) would contradict them (initial_velocity.h).
@@ -175,7 +171,7 @@ class PlanarLineRun : public LineRun {
     if (!inputs.top) return buildRun(held_, std::move(in));
     const Vec2 top = inPlane(inputs.top->point);
     held_.top.type = MotionKind::kFixed;
-    held_.top.position = top;
+    held_.top.position = inSpace(top);
     in.top = top;
     in.motion = std::make_unique<ExternalMotion>(top, inputs.top->t, inputs.motion);
     return buildRun(held_, std::move(in));
@@ -207,7 +203,7 @@ class SpatialLineRun : public LineRun {
     start_.initial_twist_moment_bound = init.twist_moment_bound;
     if (bottom_) {  // the modes hold a driven bottom where it started
       held_.bottom_motion.type = MotionKind::kFixed;
-      held_.bottom_point3 = held_.bottom_motion.position3 = init.kin.back().end();
+      held_.bottom_point = held_.bottom_motion.position = init.kin.back().end();
     }
     const spatial::Model3& model = run_.model();
     const int nb = model.bodies();
@@ -317,7 +313,7 @@ class SpatialLineRun : public LineRun {
     if (inputs.top) {
       const HolderStart& s = *inputs.top;
       held_.top.type = MotionKind::kFixed;
-      held_.top.position3 = s.point;
+      held_.top.position = s.point;
       in.top = s.point;
       auto m = std::make_unique<spatial::ExternalMotion3>(s.point, s.attitude, s.t, inputs.motion);
       top_ = m.get();

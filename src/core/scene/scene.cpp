@@ -26,20 +26,27 @@ bool sectionsAddMass(const Scene& scene) {
 std::shared_ptr<Model> buildModel(const Scene& scene) {
   auto model =
       std::make_shared<Model>(lineSections(scene), scene.stiffeners, scene.options, scene.end_mass, scene.gravity);
-  model->setBottom(scene.bottom, scene.bottom_point);
+  model->setBottom(scene.bottom, inPlane(scene.bottom_point));
   // Only the terms the scene needs are built (a term that is off costs nothing): the registry's rows.
   addPlanarTerms(scene, *model);
   return model;
 }
 
+// The planar motion reads the (x, z) of the spec's vectors and the phase of x (a planar scene has one phase).
 std::unique_ptr<TopMotion> buildTopMotion(const TopMotionSpec& spec) {
   switch (spec.type) {
     case MotionKind::kFixed:
-    case MotionKind::kExternal: return std::make_unique<FixedMotion>(spec.position);
+    case MotionKind::kExternal: return std::make_unique<FixedMotion>(inPlane(spec.position));
     case MotionKind::kSinusoid:
       if (!(spec.period > 0.0)) throw std::invalid_argument("top.motion.period: must be > 0");
-      return std::make_unique<SinusoidMotion>(spec.position, spec.amplitude, spec.period, spec.phase);
-    case MotionKind::kVelocityProfile: return std::make_unique<VelocityProfileMotion>(spec.position, spec.knots);
+      return std::make_unique<SinusoidMotion>(inPlane(spec.position), inPlane(spec.amplitude), spec.period,
+                                              spec.phase.x());
+    case MotionKind::kVelocityProfile: {
+      std::vector<VelocityProfileMotion::Knot> knots;
+      knots.reserve(spec.knots.size());
+      for (const TopMotionSpec::Knot& k : spec.knots) knots.push_back({k.t, inPlane(k.v)});
+      return std::make_unique<VelocityProfileMotion>(inPlane(spec.position), std::move(knots));
+    }
   }
   throw std::invalid_argument("top.motion.type: unknown motion (accepted: " + choiceNames<MotionKind>() + ")");
 }
@@ -53,7 +60,7 @@ StaticsProblem staticsProblem(const Scene& scene) {
     p.end_dx = scene.initial.end_dx;
   } else if (scene.initial.type == InitialKind::kBetweenPoints) {
     p.kind = StaticsProblem::Kind::kBetweenPoints;
-    p.end_point = scene.bottom_point;
+    p.end_point = inPlane(scene.bottom_point);
   } else {
     p.kind = StaticsProblem::Kind::kHanging;
   }

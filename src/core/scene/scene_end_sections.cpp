@@ -17,7 +17,6 @@ void parseKnots(const Section& motion, TopMotionSpec& top, bool planar) {
   if (!knots.IsSequence() || knots.size() == 0)
     throw SceneError(key, "expected a non-empty list of [t, [vx, vz]] or [t, [vx, vy, vz]], got " + describe(knots));
   top.knots.clear();
-  top.knots3.clear();
   for (size_t i = 0; i < knots.size(); ++i) {
     const std::string k = key + "[" + std::to_string(i) + "]";
     const YAML::Node knot = knots[i];
@@ -28,8 +27,7 @@ void parseKnots(const Section& motion, TopMotionSpec& top, bool planar) {
       throw SceneError(
           k, "knot times must increase, got " + formatNumber(t) + " after " + formatNumber(top.knots.back().t));
     const Eigen::Vector3d v = toVec3(knot[1], k + "[1]", planar);
-    top.knots.push_back({t, planarOf(v)});
-    top.knots3.push_back({t, v});
+    top.knots.push_back({t, v});
   }
 }
 
@@ -59,25 +57,23 @@ void parseAttitude(const Section& motion, TopMotionSpec& spec, bool planar) {
   const YAML::Node a = motion.at("attitude");
   if (!a.IsSequence() || a.size() != 3)
     throw SceneError(key, "expected [roll, pitch, yaw] in degrees, got " + describe(a));
-  for (int i = 0; i < 3; ++i) spec.attitude3[i] = toNumber(a[i], key + "[" + std::to_string(i) + "]") * M_PI / 180.0;
-  if (!(std::abs(spec.attitude3[1]) < 0.5 * M_PI))
+  for (int i = 0; i < 3; ++i) spec.attitude[i] = toNumber(a[i], key + "[" + std::to_string(i) + "]") * M_PI / 180.0;
+  if (!(std::abs(spec.attitude[1]) < 0.5 * M_PI))
     throw SceneError(key + "[1]", "the pitch amplitude must be below 90 degrees (Z-Y-X angles), got " +
-                                      formatNumber(spec.attitude3[1] * 180.0 / M_PI));
-  spec.attitude_phase3 = parsePhase(motion, "attitude_phase", planar);
+                                      formatNumber(spec.attitude[1] * 180.0 / M_PI));
+  spec.attitude_phase = parsePhase(motion, "attitude_phase", planar);
 }
 
-// top.motion or bottom.motion (the same keys): spec.position3 is set by the caller.
+// top.motion or bottom.motion (the same keys): spec.position is set by the caller.
 void parseMotion(const Section& motion, TopMotionSpec& spec, bool planar) {
   spec.type = motion.choice("type", MotionKind::kFixed);
   // Keys of the other motion types are type-checked but ignored (so --set top.motion.type=... just works).
   const bool sinusoid = spec.type == MotionKind::kSinusoid;
-  spec.amplitude3 =
+  spec.amplitude =
       sinusoid ? motion.vec3("amplitude", planar) : motion.vec3("amplitude", planar, Eigen::Vector3d::Zero());
-  spec.amplitude = planarOf(spec.amplitude3);
   spec.period = sinusoid ? motion.number("period") : motion.number("period", 1.0);
   requirePositive(motion.key("period"), spec.period);
-  spec.phase3 = parsePhase(motion, "phase", planar);
-  spec.phase = spec.phase3.x();
+  spec.phase = parsePhase(motion, "phase", planar);
   parseAttitude(motion, spec, planar);
   if (spec.type == MotionKind::kVelocityProfile || motion.has("knots")) parseKnots(motion, spec, planar);
 }
@@ -121,8 +117,7 @@ void parseTop(const Section& root, Scene& s) {
   const bool planar = s.space == SpaceKind::kPlanar;
   const Section top = root.section("top", {"position", "motion", "flex_joint", "torsion"});
   s.top = TopMotionSpec();
-  s.top.position3 = top.vec3("position", planar, Eigen::Vector3d::Zero());
-  s.top.position = planarOf(s.top.position3);
+  s.top.position = top.vec3("position", planar, Eigen::Vector3d::Zero());
   parseMotion(top.section("motion", {"type", "amplitude", "period", "phase", "knots", "attitude", "attitude_phase"}),
               s.top, planar);
   s.top_flex_joint = parseFlexJoint(top, planar);
@@ -143,11 +138,9 @@ void parseBottom(const Section& root, Scene& s) {
   const std::string type = bottom.choice("type", "free", {"free", "pinned"});
   s.bottom = type == "pinned" ? BottomBoundary::kPinned : BottomBoundary::kFree;
   const bool planar = s.space == SpaceKind::kPlanar;
-  s.bottom_point3 = s.bottom == BottomBoundary::kPinned ? bottom.vec3("position", planar)
-                                                        : bottom.vec3("position", planar, Eigen::Vector3d::Zero());
-  s.bottom_point = planarOf(s.bottom_point3);
+  s.bottom_point = s.bottom == BottomBoundary::kPinned ? bottom.vec3("position", planar)
+                                                       : bottom.vec3("position", planar, Eigen::Vector3d::Zero());
   s.bottom_motion = TopMotionSpec();
-  s.bottom_motion.position3 = s.bottom_point3;
   s.bottom_motion.position = s.bottom_point;
   const bool pinned = s.bottom == BottomBoundary::kPinned;
   for (const char* k : {"motion", "flex_joint"})

@@ -1,6 +1,6 @@
 // Scene sections of the sea and the contents: environment (gravity, water, current, waves),
 // hydrodynamics, seabed, internal_fluid. Every error is a SceneError naming the full key path
-// (docs/scene_keys.md). A 2-vector keeps its planar meaning [x, z_up]; a 3-vector is [x, y, z].
+// (docs/scene_keys.md). A 2-vector [a, b] (planar [x, z_up]) is (a, 0, b); a 3-vector is [x, y, z].
 #include <cmath>
 #include <string>
 #include <vector>
@@ -40,10 +40,8 @@ void parseCurrent(const Section& env, Scene& s) {
   const Section cur = env.section("current", {"velocity", "acceleration", "profile"});
   CurrentSpec& c = s.water.current;
   c = CurrentSpec();
-  c.velocity3 = cur.vec3("velocity", planar, Eigen::Vector3d::Zero());
-  c.acceleration3 = cur.vec3("acceleration", planar, Eigen::Vector3d::Zero());
-  c.velocity = planarOf(c.velocity3);
-  c.acceleration = planarOf(c.acceleration3);
+  c.velocity = cur.vec3("velocity", planar, Eigen::Vector3d::Zero());
+  c.acceleration = cur.vec3("acceleration", planar, Eigen::Vector3d::Zero());
   if (cur.has("profile")) parseProfile(cur, planar, c);
 }
 

@@ -120,8 +120,6 @@ inline Eigen::Vector3d toVec3(const YAML::Node& node, const std::string& key, bo
                                       "scene (space: planar, the default); set space: spatial for a 3D scene");
   return v;
 }
-// The planar [x, z_up] of a 3D vector (exact: the doubles of a 2-vector are copied).
-inline Vec2 planarOf(const Eigen::Vector3d& v) { return Vec2(v.x(), v.z()); }
 
 // ---- value checks ----
 

@@ -313,7 +313,7 @@ void checkCombination(const Scene& s) {
     const double span =
         s.space == SpaceKind::kSpatial
             ? (spatial::buildTopMotion3(s.bottom_motion)->at(0.0).p - spatial::buildTopMotion3(s.top)->at(0.0).p).norm()
-            : (s.bottom_point - buildTopMotion(s.top)->at(0.0).p).norm();
+            : (inPlane(s.bottom_point) - buildTopMotion(s.top)->at(0.0).p).norm();
     if (span > s.length)
       throw SceneError("bottom.position", "is " + formatNumber(span) + " m from the top at t = 0 but the line is " +
                                               formatNumber(s.length) + " m long and inextensible");

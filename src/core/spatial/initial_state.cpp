@@ -44,7 +44,7 @@ Vec2 currentDirection(const CurrentSpec& c) {
       if (Vec2(p.vx, p.vy).norm() > 0.0) return Vec2(p.vx, p.vy).normalized();
     return Vec2::Zero();
   }
-  const Vec2 h = c.velocity3.head<2>();
+  const Vec2 h = c.velocity.head<2>();
   return h.norm() > 0.0 ? Vec2(h.normalized()) : Vec2::Zero();
 }
 
@@ -53,10 +53,10 @@ Vec2 currentDirection(const CurrentSpec& c) {
 CurrentSpec planarCurrent(const CurrentSpec& c, const Vec2& u, double& across) {
   const Vec2 nrm(-u.y(), u.x());
   CurrentSpec p = c;
-  p.velocity = Vec2(c.velocity3.head<2>().dot(u), c.velocity3.z());
-  p.acceleration = Vec2(c.acceleration3.head<2>().dot(u), c.acceleration3.z());
-  across = std::max(std::abs(c.velocity3.head<2>().dot(nrm)), std::abs(c.acceleration3.head<2>().dot(nrm)));
-  double speed = std::max(c.velocity3.norm(), c.acceleration3.norm());
+  p.velocity = inSpace(Vec2(c.velocity.head<2>().dot(u), c.velocity.z()));
+  p.acceleration = inSpace(Vec2(c.acceleration.head<2>().dot(u), c.acceleration.z()));
+  across = std::max(std::abs(c.velocity.head<2>().dot(nrm)), std::abs(c.acceleration.head<2>().dot(nrm)));
+  double speed = std::max(c.velocity.norm(), c.acceleration.norm());
   for (CurrentSpec::Point& q : p.profile) {
     const Vec2 v(q.vx, q.vy);
     across = std::max(across, std::abs(v.dot(nrm)));
@@ -159,7 +159,7 @@ struct StaticsPlane {
 StaticsPlane staticsPlane(const Scene& scene, const Vec3& top) {
   StaticsPlane p;
   const InitialKind kind = scene.initial.type;
-  const Vec2 bottom_h = scene.bottom_point3.head<2>() - top.head<2>();
+  const Vec2 bottom_h = scene.bottom_point.head<2>() - top.head<2>();
   if (kind == InitialKind::kStraight) p.u = Vec2(std::cos(scene.initial.heading), std::sin(scene.initial.heading));
   if (kind == InitialKind::kDisplaced && scene.initial.end_offset.norm() > 0.0)
     p.u = scene.initial.end_offset.normalized();
@@ -195,13 +195,13 @@ Scene planarScene(const Scene& scene, const StaticsPlane& plane, const Vec3& top
   if (scene.bending_axes.enabled) ps.line.EI = detail::planarBendingStiffness(scene, plane.normal, principal);
   ps.bending_axes = BendingAxesSpec();
   ps.top = TopMotionSpec();
-  ps.top.position = Vec2(0.0, top.z());
+  ps.top.position = Vec3(0.0, 0.0, top.z());
   ps.initial.end_dx = scene.initial.end_offset.norm();
-  ps.bottom_point = Vec2((scene.bottom_point3.head<2>() - top.head<2>()).norm(), scene.bottom_point3.z());
+  ps.bottom_point = inSpace(Vec2((scene.bottom_point.head<2>() - top.head<2>()).norm(), scene.bottom_point.z()));
   ps.water.current = planarCurrent(scene.water.current, plane.u, across);
   ps.water.waves = WaveSpec();  // the statics never see the waves
   if (plane.sloped && kind == InitialKind::kBetweenPoints)
-    ps.seabed.level = slopeHeight(scene.bottom_point3.head<2>());
+    ps.seabed.level = slopeHeight(scene.bottom_point.head<2>());
   else if (plane.sloped && !plane.free_hang)
     ps.seabed.level = std::max(slopeHeight(top.head<2>()), slopeHeight(top.head<2>() + scene.initial.end_offset));
   else if (plane.sloped)
@@ -245,8 +245,8 @@ void planarEquilibrium(const Scene& scene, const StaticsPlane& plane, const Mode
   const auto offPlane = [&](const Vec3& p) { return std::abs(plane.normal.dot(p - plane.origin)); };
   std::string check;
   if (kind == InitialKind::kBetweenPoints &&
-      offPlane(scene.bottom_point3) > kPlanarTolerance * std::max(L, (scene.bottom_point3 - top).norm()))
-    check = "bottom.position is " + fmt(offPlane(scene.bottom_point3)) + " m off the plane";
+      offPlane(scene.bottom_point) > kPlanarTolerance * std::max(L, (scene.bottom_point - top).norm()))
+    check = "bottom.position is " + fmt(offPlane(scene.bottom_point)) + " m off the plane";
   if (check.empty()) {
     StaticsProblem problem = staticsProblem(ps);
     problem.progress = progress;
@@ -322,7 +322,7 @@ InitialState3 solveInitialState3(const Scene& scene, const Vec3& top, const Stat
   bool principal = true;
   const Scene ps = planarScene(scene, plane, top, current_across, principal);
   const std::shared_ptr<Model> planar = buildModel(ps);
-  if (kind == InitialKind::kStraight) return straightStart(scene, plane, *planar, ps.top.position);
+  if (kind == InitialKind::kStraight) return straightStart(scene, plane, *planar, inPlane(ps.top.position));
 
   InitialState3 init;
   init.plane_direction = Vec3(plane.u.x(), plane.u.y(), 0.0);

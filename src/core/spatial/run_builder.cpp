@@ -92,7 +92,7 @@ PointMotion3 SinusoidMotion3::at(double t) const {
   return m;
 }
 
-VelocityProfileMotion3::VelocityProfileMotion3(const Vec3& start, const std::vector<TopMotionSpec::Knot3>& knots) {
+VelocityProfileMotion3::VelocityProfileMotion3(const Vec3& start, const std::vector<TopMotionSpec::Knot>& knots) {
   std::vector<VelocityProfileMotion::Knot> xz, y;
   for (const auto& k : knots) {
     xz.push_back({k.t, Vec2(k.v.x(), k.v.z())});
@@ -111,12 +111,12 @@ PointMotion3 VelocityProfileMotion3::at(double t) const {
 std::unique_ptr<TopMotion3> buildTopMotion3(const TopMotionSpec& spec) {
   switch (spec.type) {
     case MotionKind::kFixed:
-    case MotionKind::kExternal: return std::make_unique<FixedMotion3>(spec.position3);
+    case MotionKind::kExternal: return std::make_unique<FixedMotion3>(spec.position);
     case MotionKind::kSinusoid:
       if (!(spec.period > 0.0)) throw std::invalid_argument("top.motion.period: must be > 0");
-      return std::make_unique<SinusoidMotion3>(spec.position3, spec.amplitude3, spec.period, spec.phase3,
-                                               spec.attitude3, spec.attitude_phase3);
-    case MotionKind::kVelocityProfile: return std::make_unique<VelocityProfileMotion3>(spec.position3, spec.knots3);
+      return std::make_unique<SinusoidMotion3>(spec.position, spec.amplitude, spec.period, spec.phase, spec.attitude,
+                                               spec.attitude_phase);
+    case MotionKind::kVelocityProfile: return std::make_unique<VelocityProfileMotion3>(spec.position, spec.knots);
   }
   throw std::invalid_argument("top.motion.type: unknown motion (accepted: " + choiceNames<MotionKind>() + ")");
 }
@@ -124,7 +124,7 @@ std::unique_ptr<TopMotion3> buildTopMotion3(const TopMotionSpec& spec) {
 std::shared_ptr<Model3> buildSpatialModel(const Scene& scene) {
   auto model = std::make_shared<Model3>(lineSections(scene), scene.stiffeners, scene.options, scene.end_mass,
                                         Vec3(0.0, 0.0, -scene.gravity));
-  model->setBottom(scene.bottom, scene.bottom_point3);
+  model->setBottom(scene.bottom, scene.bottom_point);
   // Only the terms the scene needs: the registry's rows (as the planar buildModel).
   addSpatialTerms(scene, *model);
   if (scene.torsion.enabled) {
@@ -154,20 +154,20 @@ Run3::Run3(const Scene& scene, RunInputs3 inputs)
   if (inputs.bottom_motion && !pinned)
     throw std::invalid_argument("bottom.motion: a driven bottom needs bottom.type: pinned");
   if (pinned)
-    at0.bottom_point3 =
+    at0.bottom_point =
         inputs.bottom_motion ? inputs.bottom_motion->at(0.0).p : buildTopMotion3(scene.bottom_motion)->at(0.0).p;
   initial_ = solveInitialState3(at0, top, inputs.statics_progress);
   // A pinned end is held where the statics put it: within initial.tolerance x line.length of
   // bottom.position (their end condition), so the run starts without a Baumgarte kick from that gap. A
   // moving bottom's path is shifted by that gap for the same reason.
   if (pinned) {
-    const Vec3 gap = initial_.kin.back().end() - at0.bottom_point3;
+    const Vec3 gap = initial_.kin.back().end() - at0.bottom_point;
     const MotionKind type = scene.bottom_motion.type;
     if (inputs.bottom_motion) {
       model_->setBottomMotion(inputs.bottom_motion);
     } else if (type == MotionKind::kSinusoid || type == MotionKind::kVelocityProfile) {
       TopMotionSpec spec = scene.bottom_motion;
-      spec.position3 += gap;
+      spec.position += gap;
       model_->setBottomMotion(buildTopMotion3(spec));
     } else {
       model_->setBottom(BottomBoundary::kPinned, initial_.kin.back().end());

@@ -52,7 +52,7 @@ Water3::Water3(const WaterSpec& spec, const Vec3& gravity)
       up_(gravity.norm() > 0.0 ? Vec3(-gravity.normalized()) : Vec3::UnitZ()),
       waves_(wavesOnly(spec), gravity.norm()) {
   const CurrentSpec& c = spec.current;
-  moving_ = c.velocity3.norm() > 0.0 || c.acceleration3.norm() > 0.0 || !c.profile.empty() || spec.waves.active();
+  moving_ = c.velocity.norm() > 0.0 || c.acceleration.norm() > 0.0 || !c.profile.empty() || spec.waves.active();
   if (spec.waves.active() && !vertical(gravity))
     throw std::invalid_argument("environment.waves: need gravity along -z (the waves' heading is horizontal)");
   if (!c.profile.empty() && gravity.norm() > 0.0 && !vertical(gravity))
@@ -66,10 +66,8 @@ Water3 Water3::steady(double t) const {
   s.waves.height = 0.0;
   s.waves.significant_height = 0.0;
   CurrentSpec& c = s.current;
-  c.velocity3 += c.acceleration3 * t;
   c.velocity += c.acceleration * t;
-  for (CurrentSpec::Point& p : c.profile) p.vx += c.acceleration3.x() * t, p.vy += c.acceleration3.y() * t;
-  c.acceleration3.setZero();
+  for (CurrentSpec::Point& p : c.profile) p.vx += c.acceleration.x() * t, p.vy += c.acceleration.y() * t;
   c.acceleration.setZero();
   return Water3(s, -up_);  // no waves: the gravity's size is not used
 }
@@ -92,8 +90,8 @@ void Water3::compute(const Vec3& p, double t, Vec3& v, Vec3& a) const {
   const double z = height(p);
   if (z > 0.0) return;
   const CurrentSpec& c = spec_.current;
-  v = c.velocity3 + c.acceleration3 * t;
-  a = c.acceleration3;
+  v = c.velocity + c.acceleration * t;
+  a = c.acceleration;
   if (!c.profile.empty()) {
     const double d = -z;
     double vx = c.profile.front().vx, vy = c.profile.front().vy;
@@ -109,8 +107,8 @@ void Water3::compute(const Vec3& p, double t, Vec3& v, Vec3& a) const {
           break;
         }
     }
-    v.x() = vx + c.acceleration3.x() * t;
-    v.y() = vy + c.acceleration3.y() * t;
+    v.x() = vx + c.acceleration.x() * t;
+    v.y() = vy + c.acceleration.y() * t;
   }
   if (spec_.waves.active()) {
     Vec2 vw, aw;

@@ -45,10 +45,9 @@ Scene catenaryScene(int k) {
   s.elements = 10 * k;
   s.options.bending = false;
   s.gravity = kG;
-  s.top.position = Vec2::Zero();
+  s.top.position = Eigen::Vector3d::Zero();
   s.bottom = BottomBoundary::kPinned;
-  s.bottom_point = Vec2(90.0, -60.0);
-  s.bottom_point3 = Eigen::Vector3d(90.0, 0.0, -60.0);
+  s.bottom_point = Eigen::Vector3d(90.0, 0.0, -60.0);
   s.initial.type = InitialKind::kBetweenPoints;
   s.initial.tolerance = 1e-12;
   return s;
@@ -99,7 +98,7 @@ TEST(LineSections, MultiSectionCatenaryConvergesAsNToTheMinusTwo) {
   const Scene base = catenaryScene(1);
   double W = 0.0;
   for (const LineSection& s : base.sections) W += s.props.mass_per_length * s.length * kG;
-  const Vec2 ref = referenceAnchorForce(base.sections, base.bottom_point, W);
+  const Vec2 ref = referenceAnchorForce(base.sections, inPlane(base.bottom_point), W);
   std::vector<double> err;
   for (int k : {1, 2, 4, 8}) {
     const Scene s = catenaryScene(k);
@@ -235,7 +234,7 @@ TEST(LineSections, TermsPowerIdentityWithUnequalSections) {
   s.stiffeners = {st};
   s.water.enabled = true;
   s.water.surface = -20.0;
-  s.water.current.velocity = Vec2(0.8, 0.0);
+  s.water.current.velocity = Eigen::Vector3d(0.8, 0.0, 0.0);
   s.hydro.enabled = true;
   s.hydro.drag_normal = 1.2;
   s.hydro.drag_tangential = 0.05;

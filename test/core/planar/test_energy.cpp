@@ -86,7 +86,7 @@ TEST(Energy, DampedRunLosesEnergyMonotonicallyAndBalances) {
 TEST(Energy, PrescribedTopMotionBalancesWork) {
   Scene s = tableLikeScene();
   s.top.type = MotionKind::kSinusoid;  // paper eq. 27: x_0 = 10 cos(2π t / 27)
-  s.top.amplitude = Vec2(10.0, 0.0);
+  s.top.amplitude = Eigen::Vector3d(10.0, 0.0, 0.0);
   s.top.period = 27.0;
   // The start is a static equilibrium with the top at rest, but the cosine starts with zero velocity
   // and nonzero acceleration: the line is shaken from t = 0.

@@ -214,7 +214,7 @@ TEST(FormulationsAgree, EnergyConservedInConservativeCase) {
       s.options.axial_flexibility = axial;
       if (moving) {
         s.top.type = MotionKind::kSinusoid;
-        s.top.amplitude = Vec2(5.0, 1.0);
+        s.top.amplitude = Eigen::Vector3d(5.0, 0.0, 1.0);
         s.top.period = 4.0;
       }
       s.options.bending = true;
@@ -246,10 +246,10 @@ TEST(FormulationsAgree, PinnedBottomRunsAgree) {
     s.line.EI = 1e4;
     s.end_mass = 0.0;
     s.bottom = BottomBoundary::kPinned;
-    s.bottom_point = Vec2(-60.0, -70.0);
+    s.bottom_point = Eigen::Vector3d(-60.0, 0.0, -70.0);
     s.initial.type = InitialKind::kBetweenPoints;
     s.top.type = MotionKind::kSinusoid;
-    s.top.amplitude = Vec2(3.0, 0.5);
+    s.top.amplitude = Eigen::Vector3d(3.0, 0.0, 0.5);
     s.top.period = 5.0;
     s.solver.formulation = toChoice<FormulationKind>(names[f]);
     auto sim = buildSimulator(s);
@@ -277,7 +277,7 @@ TEST(FormulationsAgree, RecursiveJointGapIsExactlyZero) {
   s.line.EI = 1e4;
   s.line.EA = 2e7;
   s.top.type = MotionKind::kSinusoid;
-  s.top.amplitude = Vec2(10.0, 1.0);
+  s.top.amplitude = Eigen::Vector3d(10.0, 0.0, 1.0);
   s.top.period = 7.0;
   s.solver.formulation = FormulationKind::kRecursive;
   auto sim = buildSimulator(s);

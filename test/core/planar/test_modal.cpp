@@ -52,7 +52,7 @@ Scene stringScene(int n) {
   s.options.bending = false;
   s.gravity = 0.0;
   s.bottom = BottomBoundary::kPinned;
-  s.bottom_point = Vec2(kStringL * (1.0 + kStringStrain), 0.0);
+  s.bottom_point = Eigen::Vector3d(kStringL * (1.0 + kStringStrain), 0.0, 0.0);
   s.initial.type = InitialKind::kBetweenPoints;
   return s;
 }
@@ -103,7 +103,7 @@ TEST(Modal, PinnedBeamConvergesAtOrderFour) {
     s.line.EI = kBeamEI;
     s.gravity = 0.0;
     s.bottom = BottomBoundary::kPinned;
-    s.bottom_point = Vec2(kBeamL, 0.0);
+    s.bottom_point = Eigen::Vector3d(kBeamL, 0.0, 0.0);
     s.initial.type = InitialKind::kBetweenPoints;
     ModalOptions o;
     o.modes = 4;

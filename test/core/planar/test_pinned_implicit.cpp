@@ -52,9 +52,9 @@ Scene pinnedScene(const Setting& s, bool moving) {
   sc.solver.tolerance = 1e-11;
   if (moving) {
     sc.top.type = MotionKind::kSinusoid;
-    sc.top.amplitude = Vec2(0.3, 0.2);
+    sc.top.amplitude = Eigen::Vector3d(0.3, 0.0, 0.2);
     sc.top.period = 3.0;
-    sc.top.phase = 0.0;
+    sc.top.phase = Eigen::Vector3d::Zero();
     sc.line.axial_damping = 50.0;
   }
   return sc;

@@ -44,8 +44,8 @@ Scene pinnedCatenary(bool axial, bool water, bool seabed, bool hydro = true, dou
   s.line = LineProperties::fromGeometry(0.3, 0.26, 2.07e11, 7850.0);
   s.options.axial_flexibility = axial;
   s.bottom = BottomBoundary::kPinned;
-  s.top.position = Vec2(0.0, -1.0);  // every rfe fully wet (the wet length's change is not linearised)
-  s.bottom_point = Vec2(80.0, -61.0);
+  s.top.position = Eigen::Vector3d(0.0, 0.0, -1.0);  // every rfe fully wet (the wet length's change is not linearised)
+  s.bottom_point = Eigen::Vector3d(80.0, 0.0, -61.0);
   s.initial.type = InitialKind::kBetweenPoints;
   s.solver.stabilization = stabilization;
   if (water) {
@@ -247,7 +247,7 @@ TEST(ShiftedSolve, CloseToDenseJacobianInMotionWithHydroTerms) {
   drag10.hydro.drag_normal = 10.0;
   drag10.hydro.drag_tangential = 1.0;
   Scene current = jlay(true);
-  current.water.current.velocity = Vec2(1.0, 0.0);
+  current.water.current.velocity = Eigen::Vector3d(1.0, 0.0, 0.0);
   const Case cases[] = {
       {"hanging, end mass, elastic", hangingWithMass(true)},
       {"hanging, end mass, inext.", hangingWithMass(false)},

@@ -23,7 +23,7 @@ Scene pinnedChain(const Vec2& anchor, double end_mass, bool axial) {
   s.options.axial_flexibility = axial;
   s.end_mass = end_mass;
   s.bottom = BottomBoundary::kPinned;
-  s.bottom_point = anchor;
+  s.bottom_point = inSpace(anchor);
   s.initial.type = InitialKind::kBetweenPoints;
   return s;
 }
@@ -112,7 +112,7 @@ TEST(StaticsChecks, WavesDoNotChangeTheStatics) {
   s.options.axial_flexibility = false;
   s.end_mass = 300.0;
   s.water.enabled = true;
-  s.water.current.velocity = Vec2(0.7, 0.0);
+  s.water.current.velocity = Eigen::Vector3d(0.7, 0.0, 0.0);
   s.hydro.enabled = true;
   s.hydro.drag_normal = 1.1;
   s.hydro.inertia_coefficient = 1.8;

@@ -29,7 +29,7 @@ TEST(StaticsLoadRamps, TetherWithFloatsStartsInACurrentAlongAndAcross) {
     SCOPED_TRACE(current);
     const Scene s = loadSceneFile(kTether, {std::string("environment.current.velocity=") + current});
     spatial::InitialState3 init;
-    ASSERT_NO_THROW(init = spatial::solveInitialState3(s, s.top.position3));
+    ASSERT_NO_THROW(init = spatial::solveInitialState3(s, s.top.position));
     EXPECT_TRUE(init.equilibrium);
     EXPECT_LE(init.max_acceleration, init.acceleration_bound);
     EXPECT_NO_THROW(spatial::checkStable(s, init, false));
@@ -40,7 +40,7 @@ TEST(StaticsLoadRamps, TetherWithFloatsStartsInACurrentAlongAndAcross) {
     const Vec3 chord = (end - top).normalized();
     Vec3 off = (mid - top) - (mid - top).dot(chord) * chord;
     off.z() = 0.0;
-    const Vec3 u = s.water.current.velocity3;
+    const Vec3 u = s.water.current.velocity;
     const Vec3 u_across = u - u.dot(chord) * chord;
     if (u_across.norm() > 0.1) EXPECT_GT(off.dot(u_across), 0.0);
   }

@@ -99,7 +99,7 @@ TEST(StaticsSeabed, AnchorOnTheSeabed) {
     Scene s = chainOverSeabed(90, axial, 3e6);
     s.initial.type = InitialKind::kBetweenPoints;
     s.bottom = BottomBoundary::kPinned;
-    s.bottom_point = Vec2(75.0, s.seabed.level);
+    s.bottom_point = Eigen::Vector3d(75.0, 0.0, s.seabed.level);
     const SeabedResult r = solve(s);
     const double eh = std::abs(r.H / r.ref.H - 1.0), et = std::abs(r.top_tension / r.ref.topTension() - 1.0);
     std::printf(

@@ -30,7 +30,7 @@ TEST(StaticsStability, UpturnedLineInStrongCurrentIsRefusedPlanar) {
   const StaticsResult up = solveStatics(*model, direct);
   ASSERT_FALSE(up.converged);
   EXPECT_TRUE(names(up.message, "stability: the equilibrium is unstable")) << up.message;
-  EXPECT_GT(up.kin.back().end().y(), s.top.position.y() + 10.0);  // the refused state stands above the top
+  EXPECT_GT(up.kin.back().end().y(), s.top.position.z() + 10.0);  // the refused state stands above the top
   // Balanced (residual at the tolerance): only the stability check refuses it.
   const EquilibriumCheck c = checkEquilibrium(*model, direct, up.kin, up.end_force);
   EXPECT_LE(c.residual, direct.tolerance);
@@ -38,7 +38,7 @@ TEST(StaticsStability, UpturnedLineInStrongCurrentIsRefusedPlanar) {
 
   const StaticsResult r = solveStatics(*model, staticsProblem(s));
   if (r.converged)
-    EXPECT_LT(r.kin.back().end().y(), s.top.position.y()) << r.message;
+    EXPECT_LT(r.kin.back().end().y(), s.top.position.z()) << r.message;
   else
     EXPECT_TRUE(names(r.message, "stability") || names(r.message, "current")) << r.message;
 }
@@ -62,8 +62,8 @@ TEST(StaticsStability, UpturnedLineInStrongCurrentIsRefused3D) {
   }
   // The 3D start itself: refused naming why, or hanging below the hang-off.
   try {
-    const spatial::InitialState3 r = spatial::solveInitialState3(s, s.top.position3);
-    EXPECT_LT(r.kin.back().end().z(), s.top.position3.z());
+    const spatial::InitialState3 r = spatial::solveInitialState3(s, s.top.position);
+    EXPECT_LT(r.kin.back().end().z(), s.top.position.z());
   } catch (const std::runtime_error& e) {
     EXPECT_TRUE(names(e.what(), "stability") || names(e.what(), "current")) << e.what();
     EXPECT_FALSE(names(e.what(), "not an equilibrium of the 3D model")) << e.what();

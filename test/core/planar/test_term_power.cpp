@@ -31,7 +31,7 @@ Scene everyTermScene() {
   s.line.bending_damping = 3e3;
   s.water.enabled = true;
   s.water.surface = -20.0;  // the upper rfes cut the surface
-  s.water.current.velocity = Vec2(0.8, 0.0);
+  s.water.current.velocity = Eigen::Vector3d(0.8, 0.0, 0.0);
   s.hydro.enabled = true;
   s.hydro.drag_normal = 1.2;
   s.hydro.drag_tangential = 0.05;

@@ -96,7 +96,7 @@ TEST(WaterWaves, IncompressibleAndAccelerationIsTheRate) {
 // The ramp: nothing at t <= 0, half the amplitude at half the ramp, all of it from the ramp's end on.
 TEST(WaterWaves, RampScalesTheAmplitude) {
   WaterSpec s = sea(2.0, 5.0, 50.0, 8.0);
-  s.current.velocity = Vec2(0.3, 0.0);
+  s.current.velocity = Eigen::Vector3d(0.3, 0.0, 0.0);
   WaterSpec full = s;
   full.waves.ramp = 0.0;
   const WaterKinematics w(s, kG), wf(full, kG);
@@ -135,8 +135,8 @@ TEST(WaterWaves, RampKey) {
 // What the statics see: no waves, the current at its velocity at t, no acceleration.
 TEST(WaterWaves, SteadySeaDropsWavesAndFreezesTheCurrent) {
   WaterSpec s = sea(2.0, 5.0, 50.0);
-  s.current.velocity = Vec2(0.2, 0.0);
-  s.current.acceleration = Vec2(0.05, 0.0);
+  s.current.velocity = Eigen::Vector3d(0.2, 0.0, 0.0);
+  s.current.acceleration = Eigen::Vector3d(0.05, 0.0, 0.0);
   s.current.profile = {{0.0, 0.6}, {20.0, 0.1}};
   const WaterKinematics steady = WaterKinematics(s, kG).steady(4.0);
   Vec2 v, a;

@@ -180,7 +180,7 @@ std::vector<Case> cases() {
                  s.initial.type = InitialKind::kStraight;
                  s.initial.angle = 0.0;
                  s.top.type = MotionKind::kVelocityProfile;
-                 s.top.knots = {{0.0, Vec2(0.0, 0.0)}, {0.05, Vec2(0.0, -20.0)}};
+                 s.top.knots = {{0.0, Eigen::Vector3d(0.0, 0.0, 0.0)}, {0.05, Eigen::Vector3d(0.0, 0.0, -20.0)}};
                  return s;
                },
                kAll, 0.5, Expect::kSoundOrClean, 1e-2, 0.8});
@@ -221,7 +221,7 @@ std::vector<Case> cases() {
                  s.hydro.drag_normal = 10.0;
                  s.hydro.drag_tangential = 10.0;
                  s.hydro.inertia_coefficient = 2.0;
-                 s.water.current.velocity = Vec2(2.0, 0.0);
+                 s.water.current.velocity = Eigen::Vector3d(2.0, 0.0, 0.0);
                  return s;
                },
                kAll, 0.5, Expect::kSound, kEnergyBound, 0.8});

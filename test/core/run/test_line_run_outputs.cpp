@@ -88,7 +88,7 @@ TEST(LineRunOutputs, LiveTopFollowsItsSamples) {
   EXPECT_TRUE(run->live(Holder::kTop));
   EXPECT_FALSE(run->live(Holder::kBottom));
   EXPECT_EQ(run->heldScene().top.type, MotionKind::kFixed);
-  EXPECT_EQ(run->heldScene().top.position, Vec2(8.0, 0.0));  // world y dropped: the plane
+  EXPECT_EQ(run->heldScene().top.position, Eigen::Vector3d(8.0, 0.0, 0.0));  // world y dropped: the plane
   EXPECT_LT((run->outputs().top_point - Vec3(8.0, 0.0, 0.0)).norm(), 1e-12);
   for (int k = 1; k <= 1500; ++k) {  // 0.1 m along x over 0.2 s, then still for 1.3 s
     const double t = k * run->dt();

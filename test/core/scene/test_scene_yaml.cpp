@@ -276,7 +276,7 @@ TEST(SceneYaml, MinimalSceneTakesDefaults) {
   EXPECT_EQ(s.end_mass, 0.0);
   EXPECT_EQ(s.gravity, 9.81);
   EXPECT_STREQ(name(s.top.type), "fixed");
-  EXPECT_EQ(s.top.position, Vec2::Zero());
+  EXPECT_EQ(s.top.position, Eigen::Vector3d::Zero());
   EXPECT_EQ(s.bottom, BottomBoundary::kFree);
   EXPECT_STREQ(name(s.initial.type), "hanging");
   EXPECT_EQ(s.initial.tolerance, 1e-9);
@@ -334,10 +334,10 @@ TEST(SceneYaml, MotionsBoundariesAndInitialStates) {
                           "top: {position: [1, 2], motion: {type: sinusoid, amplitude: [10, 0], period: 27,"
                           " phase: 0.5}}");
     EXPECT_STREQ(name(s.top.type), "sinusoid");
-    EXPECT_EQ(s.top.position, Vec2(1, 2));
-    EXPECT_EQ(s.top.amplitude, Vec2(10, 0));
+    EXPECT_EQ(s.top.position, Eigen::Vector3d(1, 0, 2));  // [x, z]: (x, 0, z)
+    EXPECT_EQ(s.top.amplitude, Eigen::Vector3d(10, 0, 0));
     EXPECT_EQ(s.top.period, 27.0);
-    EXPECT_EQ(s.top.phase, 0.5);
+    EXPECT_EQ(s.top.phase, Eigen::Vector3d::Constant(0.5));  // one phase: every axis's
   }
   {
     const Scene s = parse(line +
@@ -345,13 +345,13 @@ TEST(SceneYaml, MotionsBoundariesAndInitialStates) {
                           "[40, [0, -0.5]]]}}");
     ASSERT_EQ(s.top.knots.size(), 3u);
     EXPECT_EQ(s.top.knots[1].t, 20.0);
-    EXPECT_EQ(s.top.knots[1].v, Vec2(1.5, 0));
-    EXPECT_EQ(s.top.knots[2].v, Vec2(0, -0.5));
+    EXPECT_EQ(s.top.knots[1].v, Eigen::Vector3d(1.5, 0, 0));
+    EXPECT_EQ(s.top.knots[2].v, Eigen::Vector3d(0, 0, -0.5));
   }
   {
     const Scene s = parse(line + "bottom: {type: pinned, position: [6, -7]}\ninitial: {type: between_points}");
     EXPECT_EQ(s.bottom, BottomBoundary::kPinned);
-    EXPECT_EQ(s.bottom_point, Vec2(6, -7));
+    EXPECT_EQ(s.bottom_point, Eigen::Vector3d(6, 0, -7));
     EXPECT_STREQ(name(s.initial.type), "between_points");
   }
   {
@@ -384,7 +384,7 @@ TEST(SceneYaml, OverridesSetAndCreateKeys) {
   applyOverride(root, "name=my run");
   const Scene s = parseScene(root);
   EXPECT_EQ(s.elements, 40);
-  EXPECT_EQ(s.top.position, Vec2(1, 2));
+  EXPECT_EQ(s.top.position, Eigen::Vector3d(1, 0, 2));
   EXPECT_EQ(s.gravity, 3.7);
   EXPECT_EQ(s.solver.dt, 2e-4);
   EXPECT_EQ(s.name, "my run");
@@ -516,7 +516,7 @@ TEST(SceneYaml, PaperTable1Scene) {
   EXPECT_STREQ(name(s.initial.type), "displaced");
   EXPECT_EQ(s.initial.end_dx, -50.0);
   EXPECT_STREQ(name(s.top.type), "fixed");
-  EXPECT_EQ(s.top.position, Vec2::Zero());
+  EXPECT_EQ(s.top.position, Eigen::Vector3d::Zero());
   EXPECT_STREQ(name(s.solver.integrator), "rk4");
   EXPECT_EQ(s.solver.dt, 1e-4);
   EXPECT_EQ(s.duration, 20.0);
@@ -533,7 +533,7 @@ int main(int argc, char** argv) {
 TEST(SceneYaml, BuildRefusesNonFiniteInitialForces) {
   Scene s = parse("{line: {length: 10, elements: 4, EA: 1e6, EI: 0, mass_per_length: 1}}");
   s.top.type = MotionKind::kSinusoid;
-  s.top.amplitude = Vec2(1e300, 0.0);
+  s.top.amplitude = Eigen::Vector3d(1e300, 0.0, 0.0);
   s.top.period = 1e-300;  // acceleration amplitude ~1e300 * (2 pi 1e300)^2 = inf
   try {
     buildSimulator(s);

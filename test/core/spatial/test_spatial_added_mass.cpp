@@ -38,8 +38,8 @@ WaterSpec water(double surface) {
   WaterSpec w;
   w.enabled = true;
   w.surface = surface;
-  w.current.velocity3 = Vec3(0.4, -0.3, 0.0);
-  w.current.acceleration3 = Vec3(0.05, 0.03, 0.0);  // the water accelerates: Froude-Krylov acts
+  w.current.velocity = Vec3(0.4, -0.3, 0.0);
+  w.current.acceleration = Vec3(0.05, 0.03, 0.0);  // the water accelerates: Froude-Krylov acts
   return w;
 }
 

@@ -131,8 +131,8 @@ TEST(SpatialFlexJointHolder, PrescribedAttitudeTurnsTheJoints) {
   EXPECT_FALSE(SinusoidMotion3(Vec3::Zero(), Vec3(1, 0, 0), 5.0, Vec3::Zero()).rotates());
 
   Scene scene = loadSceneFile(std::string(RISER_SIM_SOURCE_DIR) + "/config/scenes/spatial_tether.yaml");
-  scene.top.attitude3 = Vec3(5.0, 3.0, 20.0) * M_PI / 180.0;            // the vessel rolls, pitches and yaws
-  scene.bottom_motion.attitude3 = Vec3(0.0, 0.0, 30.0) * M_PI / 180.0;  // the ROV yaws
+  scene.top.attitude = Vec3(5.0, 3.0, 20.0) * M_PI / 180.0;            // the vessel rolls, pitches and yaws
+  scene.bottom_motion.attitude = Vec3(0.0, 0.0, 30.0) * M_PI / 180.0;  // the ROV yaws
   Run3 run(scene);
   ASSERT_TRUE(run.topFlexJoint() && run.bottomFlexJoint());
   EXPECT_TRUE(run.topFlexJoint()->turnsWithHolder());
@@ -145,7 +145,7 @@ TEST(SpatialFlexJointHolder, PrescribedAttitudeTurnsTheJoints) {
   EXPECT_TRUE(run.initial().equilibrium);  // phase 0: the holders start at rest
   // A quarter period on, the vessel is turning at t = 0 and the joints' dampers load the line at rest: said so.
   Scene turning = scene;
-  turning.top.attitude_phase3 = Vec3::Constant(0.5 * M_PI);
+  turning.top.attitude_phase = Vec3::Constant(0.5 * M_PI);
   Run3 moving(turning);
   EXPECT_FALSE(moving.initial().equilibrium);
   EXPECT_NE(moving.initial().about.find("a holder turns at t = 0"), std::string::npos) << moving.initial().about;

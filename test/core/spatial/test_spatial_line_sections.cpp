@@ -52,10 +52,9 @@ Scene sectionedScene(SpaceKind space) {
   s.hydro.enabled = true;
   s.hydro.drag_normal = 1.2;
   s.hydro.drag_tangential = 0.05;
-  s.top.position = Vec2::Zero();
+  s.top.position = Eigen::Vector3d::Zero();
   s.bottom = BottomBoundary::kPinned;
-  s.bottom_point = Vec2(70.0, -80.0);
-  s.bottom_point3 = Eigen::Vector3d(70.0, 0.0, -80.0);
+  s.bottom_point = Eigen::Vector3d(70.0, 0.0, -80.0);
   s.initial.type = InitialKind::kBetweenPoints;
   s.initial.tolerance = 1e-12;
   return s;
@@ -113,7 +112,7 @@ TEST(SpatialLineSections, EnergyBalanceWithMovingTop) {
   // Planar: the same line, its top swaying from the static equilibrium (test_energy's bound 1e-8 of m g L).
   Scene p = sectionedScene(SpaceKind::kPlanar);
   p.top.type = MotionKind::kSinusoid;
-  p.top.amplitude = Vec2(1.0, 0.5);
+  p.top.amplitude = Eigen::Vector3d(1.0, 0.0, 0.5);
   p.top.period = 3.0;
   p.solver.integrator = IntegratorKind::kRk4;
   p.solver.dt = 1e-4;
@@ -182,7 +181,7 @@ TEST(SpatialLineSections, EqualSectionsAreTheUniformLine3D) {
 TEST(SpatialLineSections, StepsAllocateNothing) {
   Scene s = sectionedScene(SpaceKind::kSpatial);
   s.bottom = BottomBoundary::kFree;
-  s.water.current.velocity = Vec2(0.5, 0.0);
+  s.water.current.velocity = Eigen::Vector3d(0.5, 0.0, 0.0);
   const auto m = buildSpatialModel(s);
   std::vector<Vec3> dirs(m->bodies(), Vec3(0.3, 0.2, -1.0));
   Simulator3 sim(m, std::make_unique<PlanarMotion3>(spatial_test::topSway(Vec2(0.5, 0.3), 1.0)), IntegratorKind::kRk4);
@@ -193,7 +192,7 @@ TEST(SpatialLineSections, StepsAllocateNothing) {
   EXPECT_EQ(g_allocations.load() - before, 0) << "3D";
   Scene p = sectionedScene(SpaceKind::kPlanar);
   p.top.type = MotionKind::kSinusoid;
-  p.top.amplitude = Vec2(1.0, 0.5);
+  p.top.amplitude = Eigen::Vector3d(1.0, 0.0, 0.5);
   p.solver.integrator = IntegratorKind::kRk4;
   p.solver.dt = 1e-4;
   auto sim2 = buildSimulator(p);

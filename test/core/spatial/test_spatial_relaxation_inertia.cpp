@@ -18,7 +18,7 @@ spatial::InitialState3 tetherStart(double end_polar_inertia, double GJ = 10.0, b
     set.push_back("line.torsion={stiffness: " + std::to_string(GJ) +
                   ", end_polar_inertia: " + std::to_string(end_polar_inertia) + "}");
   const Scene s = loadSceneFile(std::string(RISER_SIM_SOURCE_DIR) + "/config/scenes/rov_tether.yaml", set);
-  return spatial::solveInitialState3(s, s.top.position3);
+  return spatial::solveInitialState3(s, s.top.position);
 }
 
 TEST(SpatialRelaxationInertia, EndPolarInertiaDoesNotChangeTheStart) {

@@ -48,8 +48,8 @@ WaterSpec movingWater() {
   WaterSpec w;
   w.enabled = true;
   w.surface = -4.0;  // the random states span z ~ 1 .. -11: parts cross it
-  w.current.velocity3 = Vec3(0.7, -0.4, 0.05);
-  w.current.acceleration3 = Vec3(0.02, 0.01, 0.0);
+  w.current.velocity = Vec3(0.7, -0.4, 0.05);
+  w.current.acceleration = Vec3(0.02, 0.01, 0.0);
   return w;
 }
 
@@ -191,7 +191,7 @@ environment:
       w3.at(p, 7.3, v3, a3);
       Vec2 v2, a2;
       planar.at(Vec2(s, z), 7.3, v2, a2);
-      const Vec3 expected = v2.x() * d + Vec3(0.0, 0.0, v2.y()) + sc.water.current.velocity3;
+      const Vec3 expected = v2.x() * d + Vec3(0.0, 0.0, v2.y()) + sc.water.current.velocity;
       err = std::max(err, (v3 - expected).norm());
       vmax = std::max(vmax, v3.norm());
     }

@@ -250,9 +250,9 @@ TEST(SpatialSeabed, StraightStartInsideTheSeabedRefusedInBothEngines) {
   const auto refusal = [](const Scene& scene) -> std::string {
     try {
       if (scene.space == SpaceKind::kSpatial)
-        solveInitialState3(scene, scene.top.position3);
+        solveInitialState3(scene, scene.top.position);
       else
-        solveInitialState(scene, *buildModel(scene), scene.top.position);
+        solveInitialState(scene, *buildModel(scene), inPlane(scene.top.position));
     } catch (const std::runtime_error& e) {
       return e.what();
     }
