@@ -15,6 +15,14 @@ class Model3;
 class Water3;
 }  // namespace spatial
 
+// How a model's terms differ from the run's, for the statics' models (the one table builds them all).
+struct TermOptions {
+  // The Morison drag on the line held still in the water (V' = -V_water whatever its velocity): the current's
+  // static load without the drag's damping, for the 3D relaxation (spatial/relaxation.h), where the damping would
+  // only slow the creep to rest. The line's and each section's coefficients alike.
+  bool drag_on_line_at_rest = false;
+};
+
 // A row adds its term(s) to a model (null: none in that engine). `water`: the model's one sea, built once by
 // add*Terms (null without water); the terms copy it, so they share its wave samples (the waves are paid once
 // per point and time, not once per term).
@@ -22,7 +30,7 @@ struct ForceTermRow {
   const char* name;                    // the term's name() (planar and spatial alike)
   bool (*wanted)(const Scene& scene);  // whether the scene switches the term on
   void (*planar)(const Scene& scene, const WaterKinematics* water, Model& model);
-  void (*spatial)(const Scene& scene, const spatial::Water3* water, spatial::Model3& model);
+  void (*spatial)(const Scene& scene, const spatial::Water3* water, const TermOptions& options, spatial::Model3& model);
 };
 
 // The rows in the order the terms enter the models.
@@ -30,6 +38,6 @@ const std::vector<ForceTermRow>& forceTermRegistry();
 
 // Adds every wanted row's terms to the model.
 void addPlanarTerms(const Scene& scene, Model& model);
-void addSpatialTerms(const Scene& scene, spatial::Model3& model);
+void addSpatialTerms(const Scene& scene, spatial::Model3& model, const TermOptions& options = TermOptions());
 
 }  // namespace riser_sim

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "riser_sim/run/force_noise.h"
+#include "riser_sim/run/force_registry.h"
 #include "riser_sim/scene/scene.h"
 #include "riser_sim/spatial/forces/flex_joint.h"
 #include "riser_sim/spatial/simulator.h"
@@ -69,8 +70,9 @@ class VelocityProfileMotion3 : public TopMotion3 {
 std::unique_ptr<TopMotion3> buildTopMotion3(const TopMotionSpec& spec);
 // The scene's line in 3D: gravity (0, 0, -g), axial and bending terms as the scene lists them, the end
 // mass, the bottom free or pinned at bottom.position (held fixed: Run3 adds the bottom's motion and
-// the flex joints, whose default axes come from the initial state).
-std::shared_ptr<Model3> buildSpatialModel(const Scene& scene);
+// the flex joints, whose default axes come from the initial state). `options`: the statics' variants of the
+// terms (force_registry.h).
+std::shared_ptr<Model3> buildSpatialModel(const Scene& scene, const TermOptions& options = TermOptions());
 
 struct InitialState3 {
   Kinematics3 kin;                // at rest

@@ -55,28 +55,35 @@ bool addsMass(const Scene& s) {
 const std::vector<ForceTermRow> kRows = {
     {"gravity", [](const Scene& s) { return s.gravity != 0.0; },
      [](const Scene&, const WaterKinematics*, Model& m) { m.addTerm(std::make_unique<Gravity>()); },
-     [](const Scene&, const Water3*, Model3& m) { m.addTerm(std::make_unique<spatial::Gravity>()); }},
+     [](const Scene&, const Water3*, const TermOptions&, Model3& m) {
+       m.addTerm(std::make_unique<spatial::Gravity>());
+     }},
     {"axial_spring", [](const Scene& s) { return s.options.axial_flexibility; },
      [](const Scene&, const WaterKinematics*, Model& m) { m.addTerm(std::make_unique<AxialSpring>()); },
-     [](const Scene&, const Water3*, Model3& m) { m.addTerm(std::make_unique<spatial::AxialSpring>()); }},
+     [](const Scene&, const Water3*, const TermOptions&, Model3& m) {
+       m.addTerm(std::make_unique<spatial::AxialSpring>());
+     }},
     // Each engine asks its own line whether any section bends.
     {"bending_spring", [](const Scene& s) { return s.options.bending; },
      [](const Scene& s, const WaterKinematics*, Model& m) {
        if (s.line.EI > 0.0 || s.line.bending_damping > 0.0 || sectionsBend(s))
          m.addTerm(std::make_unique<BendingSpring>());
      },
-     [](const Scene&, const Water3*, Model3& m) {
+     [](const Scene&, const Water3*, const TermOptions&, Model3& m) {
        if (m.line().hasBending()) m.addTerm(std::make_unique<spatial::BendingSpring>());
      }},
     {"buoyancy", [](const Scene& s) { return wantsSea(s) && s.gravity != 0.0; },
      [](const Scene& s, const WaterKinematics*, Model& m) { m.addTerm(std::make_unique<Buoyancy>(s.water)); },
-     [](const Scene&, const Water3* w, Model3& m) { m.addTerm(std::make_unique<spatial::Buoyancy>(*w)); }},
+     [](const Scene&, const Water3* w, const TermOptions&, Model3& m) {
+       m.addTerm(std::make_unique<spatial::Buoyancy>(*w));
+     }},
     {"morison_drag", wantsDrag,
      [](const Scene& s, const WaterKinematics* w, Model& m) {
        m.addTerm(std::make_unique<MorisonDrag>(*w, s.hydro.drag_tangential, s.hydro.drag_normal));
      },
-     [](const Scene& s, const Water3* w, Model3& m) {
-       m.addTerm(std::make_unique<spatial::MorisonDrag>(*w, s.hydro.drag_tangential, s.hydro.drag_normal));
+     [](const Scene& s, const Water3* w, const TermOptions& o, Model3& m) {
+       m.addTerm(std::make_unique<spatial::MorisonDrag>(*w, s.hydro.drag_tangential, s.hydro.drag_normal,
+                                                        o.drag_on_line_at_rest));
      }},
     // Planar: one term (added mass and Froude-Krylov); 3D: the Froude-Krylov force where the water moves, then
     // the added mass.
@@ -88,7 +95,7 @@ const std::vector<ForceTermRow> kRows = {
          m.addTerm(
              std::make_unique<HydroInertia>(water, h.inertia_coefficient, h.axial_added_mass, sectionsAddMass(s)));
      },
-     [](const Scene& s, const Water3* w, Model3& m) {
+     [](const Scene& s, const Water3* w, const TermOptions&, Model3& m) {
        const Water3& water = *w;
        const HydroSpec& h = s.hydro;
        if (water.moving())
@@ -99,7 +106,7 @@ const std::vector<ForceTermRow> kRows = {
      }},
     {"seabed", [](const Scene& s) { return s.seabed.enabled; },
      [](const Scene& s, const WaterKinematics*, Model& m) { m.addTerm(std::make_unique<Seabed>(s.seabed)); },
-     [](const Scene& s, const Water3*, Model3& m) {
+     [](const Scene& s, const Water3*, const TermOptions&, Model3& m) {
        m.addTerm(std::make_unique<spatial::Seabed>(s.seabed, m.gravity()));
      }},
     // Their masses are parts of their rfes; the rest is their term.
@@ -108,7 +115,7 @@ const std::vector<ForceTermRow> kRows = {
        addAttachmentMasses(m, s.attachments);
        m.addTerm(std::make_unique<Attachments>(m, s.attachments, s.water, s.seabed, s.gravity));
      },
-     [](const Scene& s, const Water3*, Model3& m) {
+     [](const Scene& s, const Water3*, const TermOptions&, Model3& m) {
        addAttachmentMasses(m.mutableLine(), s.attachments);
        m.addTerm(std::make_unique<spatial::Attachments>(m, s.attachments, s.water, s.seabed));
      }},
@@ -139,11 +146,11 @@ void addPlanarTerms(const Scene& scene, Model& model) {
     if (row.planar && row.wanted(scene)) row.planar(scene, water ? &*water : nullptr, model);
 }
 
-void addSpatialTerms(const Scene& scene, spatial::Model3& model) {
+void addSpatialTerms(const Scene& scene, spatial::Model3& model, const TermOptions& options) {
   std::optional<Water3> water;
   if (scene.water.enabled) water.emplace(scene.water, model.gravity());
   for (const ForceTermRow& row : kRows)
-    if (row.spatial && row.wanted(scene)) row.spatial(scene, water ? &*water : nullptr, model);
+    if (row.spatial && row.wanted(scene)) row.spatial(scene, water ? &*water : nullptr, options, model);
 }
 
 }  // namespace riser_sim

@@ -7,7 +7,6 @@
 
 #include "riser_sim/spatial/force_term.h"
 #include "riser_sim/spatial/forces/end_load.h"
-#include "riser_sim/spatial/forces/morison_drag.h"
 #include "riser_sim/spatial/run_builder.h"
 #include "riser_sim/spatial/simulator.h"
 
@@ -91,25 +90,21 @@ Relaxed3 relaxToRest(const Scene& scene, const Kinematics3& guess_in, const Vec3
     pre_steps = shape.steps;
   }
   const Scene still = stillWater(scene);
-  // The drag as the static load on the line held still (its damping would overdamp the slow modes).
-  Scene dragless = still;
-  dragless.hydro.drag_normal = dragless.hydro.drag_tangential = 0.0;
+  Scene relaxed = still;
   // The rest does not depend on inertia, so the relaxation chooses the spins': none at the end body, and the line's
   // at most a solid rod's m D²/8, so no slow, lightly damped torsional mode (an end body's polar inertia on a soft
   // twist) outlasts the budget (its steps kill the fast ones); the translations keep their masses under the damping
   // α M, which decays every mode at α/2 whatever the masses.
-  dragless.torsion.end_polar_inertia = 0.0;
-  const double D = dragless.line.outer_diameter;
+  relaxed.torsion.end_polar_inertia = 0.0;
+  const double D = relaxed.line.outer_diameter;
   if (D > 0.0)
-    dragless.torsion.polar_inertia =
-        std::min(dragless.torsion.polar_inertia, dragless.line.mass_per_length * D * D / 8.0);
+    relaxed.torsion.polar_inertia = std::min(relaxed.torsion.polar_inertia, relaxed.line.mass_per_length * D * D / 8.0);
   // The seabed's friction and tangential damper vanish at rest; they would only slow the creep to it.
-  dragless.seabed.friction_axial = dragless.seabed.friction_lateral = dragless.seabed.damping_tangential = 0.0;
-  std::shared_ptr<Model3> model = buildSpatialModel(dragless);
-  const HydroSpec& hs = still.hydro;
-  if (still.water.enabled && hs.enabled && (hs.drag_normal > 0.0 || hs.drag_tangential > 0.0))
-    model->addTerm(
-        std::make_unique<MorisonDrag>(Water3(still.water, model->gravity()), hs.drag_tangential, hs.drag_normal, true));
+  relaxed.seabed.friction_axial = relaxed.seabed.friction_lateral = relaxed.seabed.damping_tangential = 0.0;
+  // The drag as the static load on the line held still (its damping would overdamp the slow modes).
+  TermOptions terms;
+  terms.drag_on_line_at_rest = true;
+  std::shared_ptr<Model3> model = buildSpatialModel(relaxed, terms);
   if (scene.bottom == BottomBoundary::kPinned)
     model->setBottom(BottomBoundary::kPinned, guess.back().end());
   else if (end_force.squaredNorm() > 0.0)

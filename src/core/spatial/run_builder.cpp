@@ -121,12 +121,12 @@ std::unique_ptr<TopMotion3> buildTopMotion3(const TopMotionSpec& spec) {
   throw std::invalid_argument("top.motion.type: unknown motion (accepted: " + choiceNames<MotionKind>() + ")");
 }
 
-std::shared_ptr<Model3> buildSpatialModel(const Scene& scene) {
+std::shared_ptr<Model3> buildSpatialModel(const Scene& scene, const TermOptions& options) {
   auto model = std::make_shared<Model3>(lineSections(scene), scene.stiffeners, scene.options, scene.end_mass,
                                         Vec3(0.0, 0.0, -scene.gravity));
   model->setBottom(scene.bottom, scene.bottom_point);
   // Only the terms the scene needs: the registry's rows (as the planar buildModel).
-  addSpatialTerms(scene, *model);
+  addSpatialTerms(scene, *model, options);
   if (scene.torsion.enabled) {
     const TorsionSpec& t = scene.torsion;
     model->setTorsion(TorsionProperties{t.stiffness, t.polar_inertia, t.damping, t.end_polar_inertia, t.free_top,
