@@ -4,6 +4,7 @@ add_library(riser_sim_core
   src/core/line/line_sections.cpp
   src/core/planar/model.cpp
   src/core/run/force_registry.cpp
+  src/core/run/relaxed_statics.cpp
   src/core/line/rfe_inertia.cpp
   src/core/motion/top_motion.cpp
   src/core/motion/external_motion.cpp

@@ -72,6 +72,20 @@ constexpr double kTensionLoadFactor = 3.0;
 EquilibriumCheck checkEquilibrium(const Model& model, const StaticsProblem& problem, const Kinematics& kin,
                                   const Vec2& end_force, double t = 0.0);
 
+// Whether a failed solve is one a dynamic relaxation may get past (spatial/relaxation.h): it iterated (not a
+// refused input) on a line hanging free or held between two points (a displaced end is held by a force the
+// relaxation has no constraint for).
+bool relaxationMayReach(const StaticsProblem& problem, const StaticsResult& failed);
+
+// Newton from a given state at rest (and its end force [N]), e.g. one relaxed to rest; converged only if
+// checkEquilibrium() passes, as solveStatics().
+StaticsResult solveStaticsFrom(const Model& model, const StaticsProblem& problem, const Kinematics& guess,
+                               const Vec2& end_force, double t = 0.0);
+
+// Newton's starting point for the problem in the steady sea at t (the catenary guesses of docs/statics.md, on the
+// seabed where it reaches it), at rest; end_force gets its guess of the end's force [N].
+Kinematics staticsFirstGuess(const Model& model, const StaticsProblem& problem, Vec2& end_force, double t = 0.0);
+
 // Straight line from A_0 at angle phi [rad], unstretched, at rest.
 Kinematics straightLine(const Model& model, const Vec2& top, double phi);
 

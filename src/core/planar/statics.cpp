@@ -127,6 +127,54 @@ std::string problemKeys(const Model& model, const StaticsProblem& p, const Stati
 
 }  // namespace
 
+bool relaxationMayReach(const StaticsProblem& problem, const StaticsResult& failed) {
+  return !failed.converged && failed.iterations > 0 && problem.kind != StaticsProblem::Kind::kEndDisplaced;
+}
+
+StaticsResult solveStaticsFrom(const Model& model, const StaticsProblem& problem, const Kinematics& guess,
+                               const Vec2& end_force, double t) {
+  StaticTerms terms(model, t);
+  StaticResidual F(model, problem, terms, t);
+  VecX x = VecX::Zero(F.size());
+  Kinematics kin = guess;
+  unwrap(kin);
+  F.fromKinematics(kin, x);
+  F.setEndForce(end_force, x);
+  Budget budget;
+  StaticsResult res;
+  res.converged = newton(F, x, problem, res.iterations, res.residual, budget);
+  res.kin.resize(model.bodies());
+  F.toKinematics(x, res.kin);
+  res.end_force = F.endForce(x);
+  std::ostringstream msg;
+  if (res.converged) {
+    const EquilibriumCheck c = checkEquilibrium(model, problem, res.kin, res.end_force, t);
+    res.converged = c.ok;
+    if (c.ok)
+      msg << "statics converged in " << res.iterations << " iterations from the given state, residual " << res.residual
+          << " (tolerance " << problem.tolerance << ")";
+    else
+      msg << "statics from the given state: its solution (" << res.iterations << " iterations, residual "
+          << res.residual << ") fails the check " << c.message;
+  } else {
+    msg << "statics did not converge from the given state in " << res.iterations << " iterations, residual "
+        << res.residual << " (tolerance " << problem.tolerance << ")";
+  }
+  res.message = msg.str();
+  return res;
+}
+
+Kinematics staticsFirstGuess(const Model& model, const StaticsProblem& problem, Vec2& end_force, double t) {
+  StaticTerms terms(model, t);
+  StaticResidual F(model, problem, terms, t);
+  VecX x = VecX::Zero(F.size());
+  firstGuess(model, problem, terms, F, x);
+  Kinematics kin(model.bodies());
+  F.toKinematics(x, kin);
+  end_force = F.endForce(x);
+  return kin;
+}
+
 Kinematics straightLine(const Model& model, const Vec2& top, double phi) {
   Kinematics kin(model.bodies());
   Vec2 A = top;
@@ -257,6 +305,8 @@ std::string currentLimit(const Model& model, const StaticsProblem& p, const Stat
 
 }  // namespace
 
+constexpr int kMaxRampFailures = 8;
+
 // A continuation in loads (scale(s): the attachments' loads, StaticTerms::scaleAttachments, or the buoyancy,
 // scaleBuoyancy): from none (solved by `start`) up to the scene's in steps (from the last state: Newton stays on
 // the path) halved when Newton fails; with `check`, the end is checked as any solution (its stability included).
@@ -271,8 +321,11 @@ Attempt rampLoads(const Model& model, const StaticsProblem& problem, StaticTerms
   Attempt c = start(loose, none_failures);
   double s = 0.0, step = 0.25;
   Kinematics kin(model.bodies());
+  // A path that refuses kMaxRampFailures steps stalls (contacts switching at a touch-down make Newton chatter
+  // between nearby loads, each failure ~max_iterations): the caller's next path takes over.
+  int failures = 0;
   if (c.converged) {
-    while (s < 1.0 && step > 1e-3 && !budget.out) {
+    while (s < 1.0 && step > 1e-3 && failures < kMaxRampFailures && !budget.out) {
       const double next = std::min(s + step, 1.0);
       scale(next);
       VecX x = c.x;
@@ -284,7 +337,7 @@ Attempt rampLoads(const Model& model, const StaticsProblem& problem, StaticTerms
       if (ok)
         c.x = x, c.residual = r, s = next, step = std::min(2.0 * step, 0.5);
       else
-        step *= 0.5;
+        step *= 0.5, ++failures;
     }
   }
   scale(1.0);

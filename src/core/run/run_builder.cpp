@@ -6,6 +6,7 @@
 
 #include "riser_sim/planar/forces/end_load.h"
 #include "riser_sim/run/initial_velocity.h"
+#include "riser_sim/run/relaxed_statics.h"
 
 namespace riser_sim {
 
@@ -38,6 +39,13 @@ InitialState solveInitialState(const Scene& scene, const Model& model, const Vec
   problem.progress = progress;
   if (straight) problem.kind = StaticsProblem::Kind::kHanging;  // the modes of a straight start
   init.statics = solveStatics(model, problem, 0.0);
+  if (relaxationMayReach(problem, init.statics)) {  // where the continuations stop: relaxed_statics.h
+    const StaticsResult relaxed = relaxedPlanarStatics(scene, model, problem);
+    if (relaxed.converged)
+      init.statics = relaxed;
+    else
+      init.statics.message += "; " + relaxed.message;
+  }
   if (!init.statics.converged) throw std::runtime_error("initial: " + init.statics.message);
   init.kin = init.statics.kin;
   init.end_force = init.statics.end_force;

@@ -301,6 +301,7 @@ void restIn3D(const Scene& scene, const StaticsPlane& plane, double current_acro
   } else if ((relax || relax_slope) && !scene.bending_axes.enabled) {  // with bending axes: stage 6's Newton
     const Relaxed3 r = relaxToRest(scene, init.kin, top, init.acceleration_bound);
     init.kin = r.kin;
+    if (scene.bottom == BottomBoundary::kPinned) init.end_force = r.end_force;
     init.about = std::string(name(kind)) + " equilibrium " +
                  (relax ? "in the current across the plane" : "on the sloped seabed, from the plane") + " along (" +
                  fmt(u.x()) + ", " + fmt(u.y()) + "): the planar statics" +
@@ -308,6 +309,26 @@ void restIn3D(const Scene& scene, const StaticsPlane& plane, double current_acro
                  " s, " + std::to_string(r.steps) + " steps)";
     init.max_acceleration = restAcceleration(scene, init.kin, init.end_force, top, where);
   }
+}
+
+// Stage 4b. Where the planar statics iterate and fail (a buoyant section or buoys whose continuations stall as
+// touch-down contacts switch, or end on an unstable balance): relaxed in 3D from the planar first guess under every
+// load at once (relaxation.h); the checks that follow are those of any start.
+void relaxFromTheGuess(const Scene& scene, const StaticsPlane& plane, const Model& planar, const Scene& ps,
+                       const Vec3& top, const std::string& statics_failure, InitialState3& init) {
+  Relaxed3 r;
+  try {
+    r = relaxFromFirstGuess(scene, planar, staticsProblem(ps), plane.R, plane.origin, top, init.acceleration_bound);
+  } catch (const std::runtime_error& e) {
+    throw std::runtime_error(statics_failure + "; relaxed in 3D from the statics' first guess: " + e.what());
+  }
+  init.kin = r.kin;
+  init.end_force = r.end_force;
+  init.statics.converged = true;
+  init.statics.message = "relaxed in 3D from the first guess";
+  init.about = std::string(name(scene.initial.type)) + " equilibrium relaxed in 3D from the planar statics' first " +
+               "guess (" + fmt(r.time) + " s, " + std::to_string(r.steps) + " steps), where the planar statics " +
+               "stop: " + statics_failure;
 }
 
 }  // namespace
@@ -326,20 +347,21 @@ InitialState3 solveInitialState3(const Scene& scene, const Vec3& top, const Stat
 
   InitialState3 init;
   init.plane_direction = Vec3(plane.u.x(), plane.u.y(), 0.0);
-  planarEquilibrium(scene, plane, *planar, ps, top, progress, init);
-
-  // The rotated state must be an equilibrium of the 3D model: its accelerations at rest ~0. The statics
-  // leave a residual force up to initial.tolerance x the weight W on a coordinate; on the lightest rfe
-  // (mass m_min) that is an acceleration of tolerance W / m_min. The bound allows 100x that (the residual
-  // spreads over the force, Δ and moment equations of an rfe), plus 1e-9 g of round-off.
-  const Model& line = *planar;
-  double m_min = INFINITY;
-  for (int i = 0; i < line.bodies(); ++i) m_min = std::min(m_min, line.rfe(i).mass);
-  const double W = line.totalMass() * scene.gravity;
-  init.acceleration_bound = 100.0 * scene.initial.tolerance * W / m_min + 1e-9 * std::max(scene.gravity, 1.0);
+  // The rotated state must be an equilibrium of the 3D model: its accelerations at rest ~0 (the bound from
+  // initial.tolerance: relaxation.h).
+  const double W = planar->totalMass() * scene.gravity;
+  init.acceleration_bound = restAccelerationBound(scene, *planar);
   int where = 0;
+  bool relaxed_from_guess = false;
+  try {
+    planarEquilibrium(scene, plane, *planar, ps, top, progress, init);
+  } catch (const std::runtime_error& e) {
+    if (!relaxationMayReach(staticsProblem(ps), init.statics)) throw;
+    relaxFromTheGuess(scene, plane, *planar, ps, top, e.what(), init);
+    relaxed_from_guess = true;
+  }
   init.max_acceleration = restAcceleration(scene, init.kin, init.end_force, top, where);
-  restIn3D(scene, plane, current_across, top, init, where);
+  if (!relaxed_from_guess) restIn3D(scene, plane, current_across, top, init, where);
 
   // The spins at rest (torsion on): a moment on a free spin is a residual as a force is, bounded as the 3D
   // statics' moment rows are, relative to weight x length (100x initial.tolerance, plus round-off).

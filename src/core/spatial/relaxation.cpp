@@ -70,6 +70,31 @@ std::string fmt(double v) {
   return o.str();
 }
 
+// Moves the points A_1..A_n of a chain from A_0 so that its end lies on `anchor`, each by the end's gap times its
+// arc length's fraction of the whole (the planar statics' end is on it to round-off; a first guess's within ~1e-3
+// of the length): every rfe keeps its direction and stretch to that order.
+void closeOnto(Kinematics3& kin, const Vec3& anchor) {
+  const Vec3 gap = anchor - kin.back().end();
+  double total = 0.0;
+  for (const BodyKinematics3& b : kin) total += b.len;
+  std::vector<Vec3> points(kin.size() + 1);
+  double s = 0.0;
+  for (size_t i = 0; i < kin.size(); ++i) {
+    points[i] = kin[i].A + (s / total) * gap;
+    s += kin[i].len;
+  }
+  points.back() = anchor;
+  for (size_t i = 0; i < kin.size(); ++i) {
+    BodyKinematics3& b = kin[i];
+    const Vec3 d = points[i + 1] - points[i];
+    const double rest = b.len - b.delta;  // l_i
+    b.A = points[i];
+    b.len = d.norm();
+    b.e = d / b.len;
+    b.delta = b.len - rest;
+  }
+}
+
 }  // namespace
 
 Relaxed3 relaxToRest(const Scene& scene, const Kinematics3& guess_in, const Vec3& top, double bound,
@@ -105,9 +130,10 @@ Relaxed3 relaxToRest(const Scene& scene, const Kinematics3& guess_in, const Vec3
   TermOptions terms;
   terms.drag_on_line_at_rest = true;
   std::shared_ptr<Model3> model = buildSpatialModel(relaxed, terms);
-  if (scene.bottom == BottomBoundary::kPinned)
-    model->setBottom(BottomBoundary::kPinned, guess.back().end());
-  else if (end_force.squaredNorm() > 0.0)
+  if (scene.bottom == BottomBoundary::kPinned) {
+    closeOnto(guess, scene.bottom_point);
+    model->setBottom(BottomBoundary::kPinned, scene.bottom_point);
+  } else if (end_force.squaredNorm() > 0.0)
     model->addTerm(std::make_unique<EndLoad>(end_force));
   // The slowest mode of a hanging line is about its pendulum, ω1 ~ sqrt(g_wet / L) (g_wet: gravity less the
   // buoyancy of the whole line; the current and the pins stiffen it). α = 2 ω1 damps it critically and every
@@ -143,7 +169,17 @@ Relaxed3 relaxToRest(const Scene& scene, const Kinematics3& guess_in, const Vec3
   };
   // The untwisted spins on the relaxed shape: done when they are at rest within the bounds (a stiff GJ
   // turns the round-off of the twist into moments the relaxation's 1/100 margin would chase in vain).
-  if (!atRest() && pre_steps > 0 && out.acceleration <= bound && moment <= moment_bound) return out;
+  // The end's force in the state at rest: a pinned end's is its anchor's reaction.
+  const auto finish = [&] {
+    out.end_force = end_force;
+    if (scene.bottom == BottomBoundary::kPinned) {
+      sim.reset(out.kin, sim.time(), out.hang_off);
+      if (!out.material_axes.empty()) sim.setMaterialAxes(out.material_axes);
+      out.end_force = -sim.evaluate().reactions.bottom;
+    }
+    return out;
+  };
+  if (!atRest() && pre_steps > 0 && out.acceleration <= bound && moment <= moment_bound) return finish();
   double h = 0.2 / w1;              // 5 steps per time constant 1/ω1 of the slowest mode (ρ∞ = 0 damps the rest)
   const double budget = 60.0 / w1;  // 60 time constants: e^-60 of any start the planar statics give
   const int kCheck = 10;
@@ -177,7 +213,21 @@ Relaxed3 relaxToRest(const Scene& scene, const Kinematics3& guess_in, const Vec3
         out.material_axes[i] = materialDirector(f, i, out.kin[i].e.normalized(), sim.state()[model->dofs() + i]);
     }
   }
-  return out;
+  return finish();
+}
+
+Relaxed3 relaxFromFirstGuess(const Scene& scene, const Model& planar, const StaticsProblem& problem, const Mat3& R,
+                             const Vec3& offset, const Vec3& top, double bound) {
+  Vec2 end_force = Vec2::Zero();  // a pinned end's is its anchor's; a free end hangs
+  const Kinematics guess = staticsFirstGuess(planar, problem, end_force);
+  return relaxToRest(scene, fromPlanar(guess, R, offset), top, bound);
+}
+
+double restAccelerationBound(const Scene& scene, const Model& line) {
+  double m_min = INFINITY;
+  for (int i = 0; i < line.bodies(); ++i) m_min = std::min(m_min, line.rfe(i).mass);
+  const double W = line.totalMass() * scene.gravity;
+  return 100.0 * scene.initial.tolerance * W / m_min + 1e-9 * std::max(scene.gravity, 1.0);
 }
 
 }  // namespace spatial

@@ -50,7 +50,7 @@ TEST(StaticsLoadRamps, TetherWithFloatsStartsInACurrentAlongAndAcross) {
 // seabed's ramps and the buoyancy's ramp all stop short (the buoyancy's at 0.96 of the lift, contacts at the
 // touch-down switching on the stiff seabed); the loads ramped on a seabed 10x softer, then its stiffness raised,
 // reach it. Checked by checkEquilibrium (residual and stability, independent of the path) and by its shape: the
-// hog bend inside the buoyancy section (560-800 m) above the sag bend before it. ~40 s: long.
+// hog bend inside the buoyancy section (560-800 m) above the sag bend before it. ~25 s: long.
 TEST(StaticsLoadRamps, LazyWaveStartsWithItsHangOffMoved) {
   const char* check = std::getenv("RISER_SIM_CHECK");
   const char* run_long = std::getenv("RISER_SIM_LONG");

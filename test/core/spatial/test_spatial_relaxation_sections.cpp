@@ -14,7 +14,8 @@ namespace riser_sim {
 namespace {
 
 // lazy_wave_fpso.yaml (sections; the modules' drag_normal 1.2 against the line's 1.0) without its waves and
-// vessel motion (the turret at (0, 0, -15) m, in the plane y = 0 with the end), its current profile turned towards `heading_deg` (0: the riser's plane).
+// vessel motion (the turret at (0, 0, -15) m, in the plane y = 0 with the end), its current profile turned towards
+// `heading_deg` (0: the riser's plane).
 Scene lazyWave(double heading_deg) {
   const double h = heading_deg * M_PI / 180.0, c = std::cos(h), s = std::sin(h);
   const std::string profile = "environment.current.profile=[[0, " + std::to_string(0.9 * c) + ", " +
@@ -35,7 +36,7 @@ VecX generalisedForces(const spatial::Model3& model, const spatial::Kinematics3&
 // the largest; the sums run in the same order).
 TEST(SpatialRelaxationSections, DragHeldStillIsTheRunsDragAtRest) {
   const Scene s = lazyWave(90.0);
-  const spatial::InitialState3 init = spatial::solveInitialState3(s, s.top.position3);
+  const spatial::InitialState3 init = spatial::solveInitialState3(s, s.top.position);
   const auto run = spatial::buildSpatialModel(spatial::stillWater(s));
   TermOptions held;
   held.drag_on_line_at_rest = true;
@@ -52,8 +53,8 @@ TEST(SpatialRelaxationSections, DragHeldStillIsTheRunsDragAtRest) {
 // 0.05 m allows a factor 3.
 TEST(SpatialRelaxationSections, LazyWaveRestsInACurrentAcrossItsPlane) {
   const Scene left = lazyWave(90.0), right = lazyWave(-90.0);
-  const spatial::InitialState3 a = spatial::solveInitialState3(left, left.top.position3);
-  const spatial::InitialState3 b = spatial::solveInitialState3(right, right.top.position3);
+  const spatial::InitialState3 a = spatial::solveInitialState3(left, left.top.position);
+  const spatial::InitialState3 b = spatial::solveInitialState3(right, right.top.position);
   EXPECT_LE(a.max_acceleration, a.acceleration_bound);
   double off = 0.0, mirror = 0.0;
   for (size_t i = 0; i < a.kin.size(); ++i) {
