@@ -1,6 +1,6 @@
 // The force terms a scene switches on, for both engines: one table whose rows name a term, say whether the
 // scene wants it and add it to the planar Model and to the spatial::Model3. buildModel (scene.h) and
-// buildSpatialModel (spatial/run_builder.h) walk it in order, so both engines hold their terms in the table's order.
+// buildModel3 (spatial/run_builder.h) walk it in order, so both engines hold their terms in the table's order.
 #pragma once
 #include <string>
 #include <vector>

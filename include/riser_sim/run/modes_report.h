@@ -1,5 +1,5 @@
 // The natural modes of a scene about its static state, for either engine (planar: sceneModes, modal.h;
-// space: spatial: computeSpatialModes about the 3D equilibrium, spatial/modal.h), as one engine-neutral
+// space: spatial: computeModes3 about the 3D equilibrium, spatial/modal.h), as one engine-neutral
 // report: what riser_sim_cli --modes prints and the node's ~modes returns.
 //
 // The top is held where the scene has it at t = 0, the statics' end force stays as a dead load, and the

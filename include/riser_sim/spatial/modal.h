@@ -47,9 +47,9 @@ struct ModalResult3 {
 // the anchor's force a dead load). Throws std::runtime_error when the eigen-solve fails.
 // material_axes (torsion on, given and not empty): the equilibrium's spins as each rfe's material axis 1 (a line
 // twisted by bending axes, statics.h); else untwisted.
-ModalResult3 computeSpatialModes(const Model3& model, const Kinematics3& equilibrium,
-                                 const ModalOptions3& options = ModalOptions3(),
-                                 const AlignedVector<Vec3>* material_axes = nullptr);
+ModalResult3 computeModes3(const Model3& model, const Kinematics3& equilibrium,
+                           const ModalOptions3& options = ModalOptions3(),
+                           const AlignedVector<Vec3>* material_axes = nullptr);
 
 }  // namespace spatial
 }  // namespace riser_sim

@@ -72,7 +72,7 @@ std::unique_ptr<TopMotion3> buildTopMotion3(const TopMotionSpec& spec);
 // mass, the bottom free or pinned at bottom.position (held fixed: Run3 adds the bottom's motion and
 // the flex joints, whose default axes come from the initial state). `options`: the statics' variants of the
 // terms (force_registry.h).
-std::shared_ptr<Model3> buildSpatialModel(const Scene& scene, const TermOptions& options = TermOptions());
+std::shared_ptr<Model3> buildModel3(const Scene& scene, const TermOptions& options = TermOptions());
 
 struct InitialState3 {
   Kinematics3 kin;                // at rest
@@ -95,7 +95,7 @@ struct InitialState3 {
 // (the current stays, steady at t = 0).
 Scene stillWater(const Scene& scene);
 // Throws std::runtime_error("initial: ... fails the check stability: ...") unless the equilibrium init.kin (its end
-// force, spins and hang-off frame) has no growing mode in the scene's still water (spatialStability, statics.h);
+// force, spins and hang-off frame) has no growing mode in the scene's still water (stability3, statics.h);
 // held_end: a displaced free end held horizontally where it is.
 void checkStable(const Scene& scene, const InitialState3& init, bool held_end);
 // Largest |acceleration| [m/s^2] of A_0..A_n and of the end of the 3D model of the scene in the state kin

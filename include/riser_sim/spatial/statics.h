@@ -27,26 +27,25 @@ struct ModalOptions3 {
 // of 1e-12 of the weight (and an end gap of 1e-12 of the length) in `iterations`.
 // Torsion on, material_axes given: in, the guess's material axis 1 per rfe (its spins; empty: untwisted); out,
 // the equilibrium's (torsion.h: frame-free). The hang-off's frame: options.hang_off, else made at the guess.
-Kinematics3 spatialEquilibrium(const Model3& model, const Kinematics3& guess, int iterations = 20,
-                               const ModalOptions3& options = ModalOptions3(),
-                               AlignedVector<Vec3>* material_axes = nullptr);
+Kinematics3 equilibrium3(const Model3& model, const Kinematics3& guess, int iterations = 20,
+                         const ModalOptions3& options = ModalOptions3(), AlignedVector<Vec3>* material_axes = nullptr);
 // Static equilibrium of a free end whose horizontal position is held at `xy` [m] by a horizontal force: Newton
 // on Q_θ + Φᵀ F = 0 with the gap E_xy - xy as a constraint and F = (F_x, F_y, 0) its multiplier (a dead load:
 // its geometric stiffness in K), from `guess` and `force` (in: the first guess of F; out: F [N], the force on
 // the line's end). Throws std::runtime_error when it does not reach a residual of 1e-12 of the weight and a
 // gap of 1e-12 of the length in `iterations`.
-Kinematics3 spatialEquilibriumHeldEnd(const Model3& model, const Kinematics3& guess, const Vec2& xy, Vec3& force,
-                                      int iterations = 30, const ModalOptions3& options = ModalOptions3(),
-                                      AlignedVector<Vec3>* material_axes = nullptr);
+Kinematics3 equilibriumHeldEnd3(const Model3& model, const Kinematics3& guess, const Vec2& xy, Vec3& force,
+                                int iterations = 30, const ModalOptions3& options = ModalOptions3(),
+                                AlignedVector<Vec3>* material_axes = nullptr);
 
 // The stability of an equilibrium at rest (the statics' criterion, linear_stability.h) from the modes'
 // linearisation (RestLine: K, M_θ, and C = -∂Q_θ/∂θ' of drag and damping): a pinned end held (its anchor force a
 // dead load, the motions in the null space of Φ); a free end held horizontally where it is when `held_end` (the
 // horizontal end force a dead load, end_force [N]); else free with end_force a dead load. The model: the scene's
 // in still water (its steady current).
-LinearStability spatialStability(const Model3& model, const Kinematics3& equilibrium, bool held_end,
-                                 const ModalOptions3& options = ModalOptions3(),
-                                 const AlignedVector<Vec3>* material_axes = nullptr);
+LinearStability stability3(const Model3& model, const Kinematics3& equilibrium, bool held_end,
+                           const ModalOptions3& options = ModalOptions3(),
+                           const AlignedVector<Vec3>* material_axes = nullptr);
 
 }  // namespace spatial
 }  // namespace riser_sim

@@ -75,7 +75,7 @@ ModesReport spatialReport(const Scene& scene, int count) {
     throw std::invalid_argument(
         "bottom.motion: the modes with space: spatial need a fixed or free bottom (the modes "
         "are about a static state)");
-  std::shared_ptr<sp::Model3> model = sp::buildSpatialModel(scene);
+  std::shared_ptr<sp::Model3> model = sp::buildModel3(scene);
   const sp::InitialState3 init = sp::solveInitialState3(scene, sp::buildTopMotion3(scene.top)->at(0.0).p);
   sp::addFlexJoints(scene, init.kin, *model);
   // The statics' end force stays as a dead load (as the planar modes).
@@ -85,8 +85,8 @@ ModesReport spatialReport(const Scene& scene, int count) {
   AlignedVector<Vec3> axes = init.material_axes;
   sp::ModalOptions3 options;
   options.hang_off = init.hang_off;
-  const sp::Kinematics3 eq = sp::spatialEquilibrium(*model, init.kin, 20, options, &axes);
-  sp::ModalResult3 r = sp::computeSpatialModes(*model, eq, options, &axes);
+  const sp::Kinematics3 eq = sp::equilibrium3(*model, init.kin, 20, options, &axes);
+  sp::ModalResult3 r = sp::computeModes3(*model, eq, options, &axes);
 
   const Vec3 n = Vec3::UnitZ().cross(init.plane_direction).normalized();  // normal of the statics' plane
   sp::alignDegeneratePairs(r.modes, n);

@@ -79,7 +79,7 @@ void checkBendingAxis(const Scene& scene, const Kinematics3& kin) {
 }  // namespace
 
 void checkStable(const Scene& scene, const InitialState3& init, bool held_end) {
-  const std::shared_ptr<Model3> model = buildSpatialModel(stillWater(scene));
+  const std::shared_ptr<Model3> model = buildModel3(stillWater(scene));
   if (scene.bottom == BottomBoundary::kPinned)
     model->setBottom(BottomBoundary::kPinned, init.kin.back().end());
   else if (init.end_force.squaredNorm() > 0.0)
@@ -87,7 +87,7 @@ void checkStable(const Scene& scene, const InitialState3& init, bool held_end) {
   ModalOptions3 o;
   o.hang_off = init.hang_off;
   const LinearStability s =
-      spatialStability(*model, init.kin, held_end, o, init.material_axes.empty() ? nullptr : &init.material_axes);
+      stability3(*model, init.kin, held_end, o, init.material_axes.empty() ? nullptr : &init.material_axes);
   if (!s.stable)
     throw std::runtime_error("initial: the " + std::string(name(scene.initial.type)) + " equilibrium (" + init.about +
                              ") fails the check stability: " + s.describe());
@@ -110,7 +110,7 @@ double restAcceleration(const Scene& scene, const Kinematics3& kin, const Vec3& 
 double restAcceleration(const Scene& scene, const Kinematics3& kin, const Vec3& end_force, const Vec3& top,
                         const AlignedVector<Vec3>& material_axes, int& where, double& moment, int& moment_where,
                         const HangOff& hang_off) {
-  std::shared_ptr<Model3> model = buildSpatialModel(stillWater(scene));
+  std::shared_ptr<Model3> model = buildModel3(stillWater(scene));
   if (scene.bottom == BottomBoundary::kPinned) model->setBottom(BottomBoundary::kPinned, kin.back().end());
   if (end_force.squaredNorm() > 0.0 && scene.bottom != BottomBoundary::kPinned)
     model->addTerm(std::make_unique<EndLoad>(end_force));
@@ -281,10 +281,10 @@ void restIn3D(const Scene& scene, const StaticsPlane& plane, double current_acro
   const bool relax_slope = plane.sloped && !(init.max_acceleration <= init.acceleration_bound);
   const bool slope_end = relax_slope && kind == InitialKind::kDisplaced && !plane.free_hang;
   if (held_end || slope_end) {
-    const std::shared_ptr<Model3> model = buildSpatialModel(stillWater(scene));
+    const std::shared_ptr<Model3> model = buildModel3(stillWater(scene));
     const Vec2 xy = top.head<2>() + scene.initial.end_offset;
     try {
-      init.kin = spatialEquilibriumHeldEnd(*model, init.kin, xy, init.end_force);
+      init.kin = equilibriumHeldEnd3(*model, init.kin, xy, init.end_force);
     } catch (const std::runtime_error& e) {
       throw std::runtime_error(std::string("initial: the displaced end ") +
                                (slope_end ? "on the sloped seabed (seabed.slope"

@@ -25,7 +25,7 @@ double planarBendingStiffness(const Scene& scene, const Vec3& normal, bool& prin
 }
 
 void twistedEquilibrium(const Scene& scene, bool held_end, const Vec2& xy, InitialState3& init) {
-  const std::shared_ptr<Model3> model = buildSpatialModel(stillWater(scene));
+  const std::shared_ptr<Model3> model = buildModel3(stillWater(scene));
   if (!held_end && scene.bottom != BottomBoundary::kPinned && init.end_force.squaredNorm() > 0.0)
     model->addTerm(std::make_unique<EndLoad>(init.end_force));
   // A line bent between soft axes twists far from its untwisted guess, and Newton from there may land on an
@@ -41,8 +41,8 @@ void twistedEquilibrium(const Scene& scene, bool held_end, const Vec2& xy, Initi
   Vec3 force = init.end_force;
   Kinematics3 kin = init.kin;
   const auto newton = [&] {
-    kin = held_end ? spatialEquilibriumHeldEnd(*model, kin, xy, force, 100, settle, &axes)
-                   : spatialEquilibrium(*model, kin, 100, settle, &axes);
+    kin = held_end ? equilibriumHeldEnd3(*model, kin, xy, force, 100, settle, &axes)
+                   : equilibrium3(*model, kin, 100, settle, &axes);
   };
   try {
     newton();

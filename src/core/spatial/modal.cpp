@@ -13,8 +13,8 @@ namespace spatial {
 
 using detail::RestLine;
 
-ModalResult3 computeSpatialModes(const Model3& model, const Kinematics3& equilibrium, const ModalOptions3& options,
-                                 const AlignedVector<Vec3>* material_axes) {
+ModalResult3 computeModes3(const Model3& model, const Kinematics3& equilibrium, const ModalOptions3& options,
+                           const AlignedVector<Vec3>* material_axes) {
   if (!(options.fd_step > 0.0)) throw std::invalid_argument("spatial modal fd_step: must be > 0");
   if (model.bottomMoves()) throw std::invalid_argument("spatial modal: a fixed or free bottom only (not a moving one)");
   RestLine line(model, equilibrium, options.fd_step, material_axes, options.hang_off);

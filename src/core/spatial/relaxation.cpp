@@ -129,7 +129,7 @@ Relaxed3 relaxToRest(const Scene& scene, const Kinematics3& guess_in, const Vec3
   // The drag as the static load on the line held still (its damping would overdamp the slow modes).
   TermOptions terms;
   terms.drag_on_line_at_rest = true;
-  std::shared_ptr<Model3> model = buildSpatialModel(relaxed, terms);
+  std::shared_ptr<Model3> model = buildModel3(relaxed, terms);
   if (scene.bottom == BottomBoundary::kPinned) {
     closeOnto(guess, scene.bottom_point);
     model->setBottom(BottomBoundary::kPinned, scene.bottom_point);

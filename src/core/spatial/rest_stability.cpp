@@ -1,4 +1,4 @@
-// spatialStability(): the statics' stability criterion (linear_stability.h) on the 3D line at rest.
+// stability3(): the statics' stability criterion (linear_stability.h) on the 3D line at rest.
 #include <Eigen/QR>
 
 #include "rest_line.h"
@@ -7,8 +7,8 @@
 namespace riser_sim {
 namespace spatial {
 
-LinearStability spatialStability(const Model3& model, const Kinematics3& equilibrium, bool held_end,
-                                 const ModalOptions3& options, const AlignedVector<Vec3>* material_axes) {
+LinearStability stability3(const Model3& model, const Kinematics3& equilibrium, bool held_end,
+                           const ModalOptions3& options, const AlignedVector<Vec3>* material_axes) {
   detail::RestLine line(model, equilibrium, options.fd_step, material_axes, options.hang_off);
   const VecX theta0 = line.theta();
   const bool pinned = model.bottom() == BottomBoundary::kPinned;

@@ -121,7 +121,7 @@ std::unique_ptr<TopMotion3> buildTopMotion3(const TopMotionSpec& spec) {
   throw std::invalid_argument("top.motion.type: unknown motion (accepted: " + choiceNames<MotionKind>() + ")");
 }
 
-std::shared_ptr<Model3> buildSpatialModel(const Scene& scene, const TermOptions& options) {
+std::shared_ptr<Model3> buildModel3(const Scene& scene, const TermOptions& options) {
   auto model = std::make_shared<Model3>(lineSections(scene), scene.stiffeners, scene.options, scene.end_mass,
                                         Vec3(0.0, 0.0, -scene.gravity));
   model->setBottom(scene.bottom, scene.bottom_point);
@@ -145,7 +145,7 @@ Run3::Run3(const Scene& scene, RunInputs3 inputs)
       max_gap_(scene.solver.max_constraint_error * scene.length / scene.elements) {
   if (scene.space != SpaceKind::kSpatial) throw std::invalid_argument("space: Run3 needs space: spatial");
   if (const auto issue = unsupported(scene)) throw std::invalid_argument(issue->key + ": " + issue->message);
-  model_ = buildSpatialModel(scene);
+  model_ = buildModel3(scene);
   std::shared_ptr<const TopMotion3> motion = inputs.motion ? std::move(inputs.motion) : runTopMotion3(scene);
   const Vec3 top = inputs.top ? *inputs.top : motion->at(0.0).p;
   // The statics end at the bottom's position at t = 0 (bottom.motion's, which may differ from bottom.position).

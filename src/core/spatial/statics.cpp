@@ -53,8 +53,8 @@ void requireStable(const MatX& K, const MatX& M, const MatX& C) {
 
 }  // namespace
 
-Kinematics3 spatialEquilibrium(const Model3& model, const Kinematics3& guess, int iterations,
-                               const ModalOptions3& options, AlignedVector<Vec3>* material_axes) {
+Kinematics3 equilibrium3(const Model3& model, const Kinematics3& guess, int iterations, const ModalOptions3& options,
+                         AlignedVector<Vec3>* material_axes) {
   RestLine line(model, guess, options.fd_step, material_axes, options.hang_off);
   VecX theta = line.theta();
   const bool pinned = model.bottom() == BottomBoundary::kPinned;
@@ -113,14 +113,14 @@ Kinematics3 spatialEquilibrium(const Model3& model, const Kinematics3& guess, in
     line.materialAxes(theta, model, material_axes);
     return line.kinematics(theta, model);
   }
-  throw std::runtime_error("spatialEquilibrium: Newton did not converge");
+  throw std::runtime_error("the 3D statics (Newton in the independent coordinates) did not converge");
 }
 
-Kinematics3 spatialEquilibriumHeldEnd(const Model3& model, const Kinematics3& guess, const Vec2& xy, Vec3& force,
-                                      int iterations, const ModalOptions3& options,
-                                      AlignedVector<Vec3>* material_axes) {
+Kinematics3 equilibriumHeldEnd3(const Model3& model, const Kinematics3& guess, const Vec2& xy, Vec3& force,
+                                int iterations, const ModalOptions3& options, AlignedVector<Vec3>* material_axes) {
   if (model.bottom() == BottomBoundary::kPinned)
-    throw std::invalid_argument("spatialEquilibriumHeldEnd: a free end only (a pinned one is held in full)");
+    throw std::invalid_argument(
+        "the 3D statics with the end held horizontally: a free end only (a pinned one is held in full)");
   RestLine line(model, guess, options.fd_step, material_axes, options.hang_off);
   VecX theta = line.theta();
   const int p = line.size();

@@ -284,7 +284,7 @@ attachments:
   - {name: clump, arc_length: 37.0, mass: 900.0, volume: 0.1, drag_area: 0.4, cd: 0.9, seabed_contact: true}
   - {name: end, arc_length: 60.0, mass: 50.0, volume: 0.05, drag_area: 0.1, cd: 1.0, added_mass: 20.0, seabed_contact: true}
 )";
-  return spatial::buildSpatialModel(loadSceneText(yaml, "test"));
+  return spatial::buildModel3(loadSceneText(yaml, "test"));
 }
 
 spatial::Kinematics3 lawState3(const spatial::Model3& m, std::mt19937& rng, bool moving) {

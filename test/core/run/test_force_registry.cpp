@@ -48,7 +48,7 @@ std::vector<std::string> planarNames(const Scene& s) {
 }
 std::vector<std::string> spatialNames(const Scene& s) {
   std::vector<std::string> out;
-  const auto model = spatial::buildSpatialModel(s);
+  const auto model = spatial::buildModel3(s);
   for (const auto& t : model->terms()) out.push_back(t->name());
   return out;
 }

@@ -202,9 +202,8 @@ TEST(SpatialAddedMass, ModesUnderWater) {
   auto wet = spatial_test::spatialModel(s, Vec3(0.0, 0.0, -s.g));
   wet->addTerm(std::make_unique<AddedMass>(Water3(still, wet->gravity()), kCaNormal, kCaAxial));
   const std::vector<Vec3> down(dry->bodies(), Vec3(0.0, 0.0, -1.0));
-  const Kinematics3 eq =
-      spatialEquilibrium(*dry, rigidChain(dry->line(), Vec3::Zero(), down, Vec3::Zero(), Vec3::Zero()));
-  const ModalResult3 rd = computeSpatialModes(*dry, eq), rw = computeSpatialModes(*wet, eq);
+  const Kinematics3 eq = equilibrium3(*dry, rigidChain(dry->line(), Vec3::Zero(), down, Vec3::Zero(), Vec3::Zero()));
+  const ModalResult3 rd = computeModes3(*dry, eq), rw = computeModes3(*wet, eq);
   const double mu = s.props.mass_per_length, rhoA = still.density * M_PI * 0.25 * 0.3 * 0.3;
   std::vector<double> ad, aw, tw, td;
   for (const auto& m : rd.modes) (m.axial ? ad : td).push_back(m.omega);

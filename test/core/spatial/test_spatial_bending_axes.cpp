@@ -192,7 +192,7 @@ Vec3 cantileverTip(double beta, double EI1, double EI2, bool isotropic, int n = 
   }
   m->addTerm(std::make_unique<FlexJoint>(FlexJoint::End::kTop, -Vec3::UnitZ(), 1e9, 0.0));
   const std::vector<Vec3> down(m->bodies(), -Vec3::UnitZ());
-  const Kinematics3 eq = spatialEquilibrium(*m, rigidChain(m->line(), Vec3::Zero(), down, Vec3::Zero(), Vec3::Zero()));
+  const Kinematics3 eq = equilibrium3(*m, rigidChain(m->line(), Vec3::Zero(), down, Vec3::Zero(), Vec3::Zero()));
   return eq.back().end();
 }
 

@@ -188,9 +188,9 @@ std::vector<double> clampedModes(double EI1, double EI2, bool axes) {
   if (axes) m->setBendingAxes(EI1, EI2, Vec3::UnitX());
   m->addTerm(std::make_unique<FlexJoint>(FlexJoint::End::kTop, -Vec3::UnitZ(), kClamp, 0.0));
   const std::vector<Vec3> down(m->bodies(), -Vec3::UnitZ());
-  const Kinematics3 eq = spatialEquilibrium(*m, rigidChain(m->line(), Vec3::Zero(), down, Vec3::Zero(), Vec3::Zero()));
+  const Kinematics3 eq = equilibrium3(*m, rigidChain(m->line(), Vec3::Zero(), down, Vec3::Zero(), Vec3::Zero()));
   std::vector<double> w;
-  for (const Mode3& mode : computeSpatialModes(*m, eq).modes)
+  for (const Mode3& mode : computeModes3(*m, eq).modes)
     if (!mode.torsional && mode.omega2 > 0.0) w.push_back(std::sqrt(mode.omega2));
   return w;
 }

@@ -67,7 +67,7 @@ TEST(SpatialLineSections, TermsAgainstTheirEnergy) {
   s.seabed.stiffness_normal = 1e5;
   s.seabed.damping_normal = 2e3;
   ASSERT_FALSE(checkScene(s)) << checkScene(s)->what();
-  const auto m = buildSpatialModel(s);
+  const auto m = buildModel3(s);
   EXPECT_NE(m->bendingStiffness(1), m->bendingStiffness(5));  // the stiffener, then the section's EI / d
   int n = 0;
   for (const auto& term : m->terms()) {
@@ -81,7 +81,7 @@ TEST(SpatialLineSections, TermsAgainstTheirEnergy) {
   for (LineSection& sec : s.sections) sec.props.axial_damping = sec.props.bending_damping = 0.0;
   s.hydro.enabled = false;
   s.seabed.damping_normal = 0.0;
-  const auto mc = buildSpatialModel(s);
+  const auto mc = buildModel3(s);
   for (const auto& term : mc->terms()) spatial_test::checkGradient(*term, *mc);
 }
 
@@ -91,7 +91,7 @@ TEST(SpatialLineSections, TermsAgainstTheirEnergy) {
 TEST(SpatialLineSections, EnergyBalanceWithMovingTop) {
   Scene s = sectionedScene(SpaceKind::kSpatial);
   s.bottom = BottomBoundary::kFree;
-  const auto m = buildSpatialModel(s);
+  const auto m = buildModel3(s);
   std::vector<Vec3> dirs(m->bodies(), Vec3(0.3, 0.2, -1.0));
   Simulator3 sim(
       m, std::make_unique<PlanarMotion3>(spatial_test::topSway(Vec2(0.5, 0.3), 1.0), spatial_test::yawTilt(0.3, 0.5)),
@@ -140,10 +140,10 @@ Kinematics planarEquilibrium(const Scene& s) {
 TEST(SpatialLineSections, PlanarAndSpatialStaticsAgree) {
   const Scene p = sectionedScene(SpaceKind::kPlanar);
   const Kinematics k2 = planarEquilibrium(p);
-  const auto m3 = buildSpatialModel(sectionedScene(SpaceKind::kSpatial));
+  const auto m3 = buildModel3(sectionedScene(SpaceKind::kSpatial));
   const Kinematics3 guess = fromPlanar(k2);
   m3->setBottom(BottomBoundary::kPinned, guess.back().end());
-  const Kinematics3 k3 = spatialEquilibrium(*m3, guess, 30);
+  const Kinematics3 k3 = equilibrium3(*m3, guess, 30);
   double diff = 0.0, out = 0.0;
   for (size_t i = 0; i < k3.size(); ++i) {
     diff = std::max(diff, (k3[i].A - guess[i].A).norm());
@@ -168,10 +168,10 @@ TEST(SpatialLineSections, EqualSectionsAreTheUniformLine3D) {
   Scene up = u;
   up.space = SpaceKind::kPlanar;
   const Kinematics3 guess = fromPlanar(planarEquilibrium(up));
-  const auto mu = buildSpatialModel(u), me = buildSpatialModel(e);
+  const auto mu = buildModel3(u), me = buildModel3(e);
   mu->setBottom(BottomBoundary::kPinned, guess.back().end());
   me->setBottom(BottomBoundary::kPinned, guess.back().end());
-  const Kinematics3 ku = spatialEquilibrium(*mu, guess, 30), ke = spatialEquilibrium(*me, guess, 30);
+  const Kinematics3 ku = equilibrium3(*mu, guess, 30), ke = equilibrium3(*me, guess, 30);
   double diff = 0.0;
   for (size_t i = 0; i < ku.size(); ++i) diff = std::max(diff, (ku[i].A - ke[i].A).norm());
   EXPECT_LT(diff, 1e-12 * u.length);  // the same arithmetic but for the energy scale's sum
@@ -182,7 +182,7 @@ TEST(SpatialLineSections, StepsAllocateNothing) {
   Scene s = sectionedScene(SpaceKind::kSpatial);
   s.bottom = BottomBoundary::kFree;
   s.water.current.velocity = Eigen::Vector3d(0.5, 0.0, 0.0);
-  const auto m = buildSpatialModel(s);
+  const auto m = buildModel3(s);
   std::vector<Vec3> dirs(m->bodies(), Vec3(0.3, 0.2, -1.0));
   Simulator3 sim(m, std::make_unique<PlanarMotion3>(spatial_test::topSway(Vec2(0.5, 0.3), 1.0)), IntegratorKind::kRk4);
   sim.reset(rigidChain(m->line(), Vec3::Zero(), dirs, Vec3::Zero(), Vec3::Zero()), 0.0);

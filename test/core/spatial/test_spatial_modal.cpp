@@ -27,9 +27,8 @@ Spectra spectra(int n, const Vec3& gravity) {
   auto m3 = spatial_test::spatialModel(s, gravity);
   // Straight along gravity, Δ = 0: Newton finds the stretched equilibrium.
   const std::vector<Vec3> dirs(m3->bodies(), gravity.normalized());
-  const Kinematics3 eq =
-      spatialEquilibrium(*m3, rigidChain(m3->line(), Vec3::Zero(), dirs, Vec3::Zero(), Vec3::Zero()));
-  const ModalResult3 r3 = computeSpatialModes(*m3, eq);
+  const Kinematics3 eq = equilibrium3(*m3, rigidChain(m3->line(), Vec3::Zero(), dirs, Vec3::Zero(), Vec3::Zero()));
+  const ModalResult3 r3 = computeModes3(*m3, eq);
 
   // The planar line at the same equilibrium (its plane: the one through gravity and x after the map).
   auto m2 = spatial_test::planarModel(s);

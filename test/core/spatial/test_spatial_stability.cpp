@@ -61,7 +61,7 @@ double denseOmegaMax(Run3& run) {
   return std::sqrt(es.eigenvalues().cwiseAbs().maxCoeff());
 }
 
-// Hanging free: the estimate's ω_max against the highest mode of computeSpatialModes about the same
+// Hanging free: the estimate's ω_max against the highest mode of computeModes3 about the same
 // equilibrium (the modes hold A_0 in independent coordinates). The run's natural coordinates hold A_0 and
 // the joints by Baumgarte, c'' + 2ω_c c' + ω_c² c = 0 with ω_c = 50 rad/s: a real double eigenvalue -ω_c
 // that rk4 integrates too, so the expected ω_max is max(modal highest, ω_c) (the short inextensible line's
@@ -72,7 +72,7 @@ TEST(SpatialStability, HighestFrequencyMatchesTheModes) {
   for (const bool extensible : {true, false})
     for (const int n : {5, 20}) {
       Run3 run(scene(hangingPipe(n, extensible)));
-      const spatial::ModalResult3 modes = computeSpatialModes(run.model(), run.initial().kin);
+      const spatial::ModalResult3 modes = computeModes3(run.model(), run.initial().kin);
       const double w_modes = modes.modes.back().omega, expected = std::max(w_modes, kOmegaC);
       const double w = run.highestFrequency();
       std::printf("[stability3] %s n = %d: estimate %.6g rad/s, modal highest %.6g rad/s (%.1e); limit %.4g s\n",

@@ -73,7 +73,7 @@ std::shared_ptr<Model3> shaft(int n, bool torsion, bool free_top = false, double
 ModalResult3 modes(const Model3& m) {
   const Kinematics3 down =
       rigidChain(m.line(), Vec3::Zero(), std::vector<Vec3>(m.bodies(), -Vec3::UnitZ()), Vec3::Zero(), Vec3::Zero());
-  return computeSpatialModes(m, spatialEquilibrium(m, down));
+  return computeModes3(m, equilibrium3(m, down));
 }
 
 std::vector<double> torsional(const ModalResult3& r) {
@@ -218,7 +218,7 @@ TEST(SpatialTorsionModes, PinnedBottomIsFreeInTwist) {
     auto free_end = extensibleShaft(16, torsion), pinned = extensibleShaft(16, torsion);
     const ModalResult3 rf = modes(*free_end);
     pinned->setBottom(BottomBoundary::kPinned, rf.equilibrium.back().end());
-    const ModalResult3 rp = computeSpatialModes(*pinned, spatialEquilibrium(*pinned, rf.equilibrium));
+    const ModalResult3 rp = computeModes3(*pinned, equilibrium3(*pinned, rf.equilibrium));
     const std::vector<double> wf = torsional(rf), wp = torsional(rp);
     ASSERT_EQ(wp.size(), wf.size());
     ASSERT_EQ(int(wp.size()), torsion ? 16 : 0);
