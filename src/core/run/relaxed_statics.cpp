@@ -3,6 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "riser_sim/scene/in_plane.h"
 #include "riser_sim/spatial/relaxation.h"
 #include "riser_sim/spatial/run_builder.h"
 
@@ -38,9 +39,8 @@ StaticsResult relaxedPlanarStatics(const Scene& scene, const Model& model, const
     p.delta = b.delta;
     p.len = b.len;
   }
-  Vec2 end_force = Vec2::Zero();
-  staticsFirstGuess(model, problem, end_force);  // the anchor's guess; Newton solves for it
-  res = solveStaticsFrom(model, problem, kin, end_force);
+  // Newton's start for the end force: the relaxed state's (a pinned end's anchor reaction; a free end's none).
+  res = solveStaticsFrom(model, problem, kin, inPlane(r.end_force));
   res.message = "relaxed in 3D from the first guess (" + std::to_string(r.steps) + " steps), then " + res.message;
   return res;
 }
