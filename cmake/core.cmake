@@ -62,6 +62,7 @@ add_library(riser_sim_core
   src/core/spatial/initial_state.cpp
   src/core/spatial/initial_twist.cpp
   src/core/spatial/forces/end_load.cpp
+  src/core/spatial/forces/mass_damping.cpp
   src/core/spatial/model.cpp
   src/core/spatial/kinematics.cpp
   src/core/spatial/natural_formulation.cpp

@@ -15,12 +15,18 @@ class Model3;
 class Water3;
 }  // namespace spatial
 
-// How a model's terms differ from the run's, for the statics' models (the one table builds them all).
+// How a model's terms differ from the run's, for the statics' models (the one table builds them all; 3D only).
 struct TermOptions {
+  // The sea without its waves: every term sees the water's steady part (the current, as at t = 0), as the statics
+  // and the checks at rest do.
+  bool steady_sea = false;
   // The Morison drag on the line held still in the water (V' = -V_water whatever its velocity): the current's
   // static load without the drag's damping, for the 3D relaxation (spatial/relaxation.h), where the damping would
   // only slow the creep to rest. The line's and each section's coefficients alike.
   bool drag_on_line_at_rest = false;
+  // The seabed's tangential friction and damper (the line's and the attachments' contacts): they vanish at rest, so
+  // the relaxation leaves them out (they would only slow its creep to rest).
+  bool seabed_friction = true;
 };
 
 // A row adds its term(s) to a model (null: none in that engine). `water`: the model's one sea, built once by

@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "riser_sim/run/force_noise.h"
-#include "riser_sim/run/force_registry.h"
+#include "riser_sim/run/build_options.h"
 #include "riser_sim/scene/scene.h"
 #include "riser_sim/spatial/forces/flex_joint.h"
 #include "riser_sim/spatial/simulator.h"
@@ -68,11 +68,12 @@ class VelocityProfileMotion3 : public TopMotion3 {
 
 // top.motion (or bottom.motion, the same keys) in 3D; external is held at spec.position (the CLI has no feed).
 std::unique_ptr<TopMotion3> buildTopMotion3(const TopMotionSpec& spec);
-// The scene's line in 3D: gravity (0, 0, -g), axial and bending terms as the scene lists them, the end
-// mass, the bottom free or pinned at bottom.position (held fixed: Run3 adds the bottom's motion and
-// the flex joints, whose default axes come from the initial state). `options`: the statics' variants of the
-// terms (force_registry.h).
-std::shared_ptr<Model3> buildModel3(const Scene& scene, const TermOptions& options = TermOptions());
+// The scene's line in 3D: gravity (0, 0, -g), the terms the scene lists (force_registry.h), the end mass, the spins
+// and bending axes, the bottom free or pinned at bottom.position, and what `options` add (build_options.h: the
+// terms' variants, the end held elsewhere or driven, an end load, the relaxation's damping). Run3 then adds the flex
+// joints, whose default axes come from the initial state. Throws std::invalid_argument for an end load on a pinned
+// end.
+std::shared_ptr<Model3> buildModel3(const Scene& scene, const BuildOptions& options = BuildOptions());
 
 struct InitialState3 {
   Kinematics3 kin;                // at rest
@@ -91,23 +92,24 @@ struct InitialState3 {
   HangOff hang_off;  // then also the hang-off's twist frame the statics held (Simulator3::reset)
 };
 
-// The initial state (initial_state.cpp). The scene without its waves: what the statics and the equilibrium check see
-// (the current stays, steady at t = 0).
-Scene stillWater(const Scene& scene);
+// The initial state (initial_state.cpp). The model its checks at rest see: the scene's terms in its steady sea (the
+// statics never see the waves), the end held as the start holds it: a pinned end where kin ends, a free one
+// under end_force [N] (a dead load).
+std::shared_ptr<Model3> restModel3(const Scene& scene, const Kinematics3& kin, const Vec3& end_force);
 // Throws std::runtime_error("initial: ... fails the check stability: ...") unless the equilibrium init.kin (its end
 // force, spins and hang-off frame) has no growing mode in the scene's still water (stability3, statics.h);
 // held_end: a displaced free end held horizontally where it is.
 void checkStable(const Scene& scene, const InitialState3& init, bool held_end);
-// Largest |acceleration| [m/s^2] of A_0..A_n and of the end of the 3D model of the scene in the state kin
-// at rest (velocities ignored), with end_force on the end (free bottom) or the end pinned where kin puts it;
-// `where` gets the rfe. ~0 for an equilibrium: solveInitialState3's check.
-double restAcceleration(const Scene& scene, const Kinematics3& kin, const Vec3& end_force, const Vec3& top, int& where);
-// The same check with the spins (torsion on): the material axes 1 per rfe (empty: untwisted; a held rfe 0 has the
-// hang-off's frame made at kin); `moment` gets the largest |moment about e_i| on a free spin [N m], `moment_where`
-// its rfe.
-double restAcceleration(const Scene& scene, const Kinematics3& kin, const Vec3& end_force, const Vec3& top,
+// Largest |acceleration| [m/s^2] of A_0..A_n and of the end of the model `rest` (restModel3) in the state kin at
+// rest (velocities ignored), with A_0 at top; `where` gets the rfe. ~0 for an equilibrium: solveInitialState3's
+// check. With the spins (torsion on): the material axes 1 per rfe (empty: untwisted; a held rfe 0 has the hang-off's
+// frame made at kin); `moment` gets the largest |moment about e_i| on a free spin [N m], `moment_where` its rfe.
+// `stabilization`: solver.stabilization (the constraints' Baumgarte terms).
+double restAcceleration(const Model3& rest, double stabilization, const Kinematics3& kin, const Vec3& top,
                         const AlignedVector<Vec3>& material_axes, int& where, double& moment, int& moment_where,
                         const HangOff& hang_off = HangOff());
+// The same for the scene's restModel3 with end_force [N], untwisted.
+double restAcceleration(const Scene& scene, const Kinematics3& kin, const Vec3& end_force, const Vec3& top, int& where);
 
 // The scene's initial state with A_0 at top. Throws std::runtime_error("initial: ...") when the statics
 // fail, the problem is not planar, or the rotated state is not an equilibrium of the 3D model.

@@ -47,6 +47,17 @@ bool wantsDrag(const Scene& s) {
   const HydroSpec& h = s.hydro;
   return wantsHydro(s) && (h.drag_normal > 0.0 || h.drag_tangential > 0.0 || sectionsDrag(s));
 }
+// The sea and the seabed the 3D terms see: the scene's, or their variants (TermOptions).
+WaterSpec seaFor(const Scene& s, const TermOptions& o) {
+  WaterSpec w = s.water;
+  if (o.steady_sea) w.waves.height = w.waves.significant_height = 0.0;
+  return w;
+}
+SeabedSpec seabedFor(const Scene& s, const TermOptions& o) {
+  SeabedSpec b = s.seabed;
+  if (!o.seabed_friction) b.friction_axial = b.friction_lateral = b.damping_tangential = 0.0;
+  return b;
+}
 // Added mass other than the displaced water's (C_M != 1, C_a,t != 0, or per section).
 bool addsMass(const Scene& s) {
   return s.hydro.inertia_coefficient != 1.0 || s.hydro.axial_added_mass != 0.0 || sectionsAddMass(s);
@@ -106,8 +117,8 @@ const std::vector<ForceTermRow> kRows = {
      }},
     {"seabed", [](const Scene& s) { return s.seabed.enabled; },
      [](const Scene& s, const WaterKinematics*, Model& m) { m.addTerm(std::make_unique<Seabed>(s.seabed)); },
-     [](const Scene& s, const Water3*, const TermOptions&, Model3& m) {
-       m.addTerm(std::make_unique<spatial::Seabed>(s.seabed, m.gravity()));
+     [](const Scene& s, const Water3*, const TermOptions& o, Model3& m) {
+       m.addTerm(std::make_unique<spatial::Seabed>(seabedFor(s, o), m.gravity()));
      }},
     // Their masses are parts of their rfes; the rest is their term.
     {"attachments", [](const Scene& s) { return !s.attachments.empty(); },
@@ -115,9 +126,9 @@ const std::vector<ForceTermRow> kRows = {
        addAttachmentMasses(m, s.attachments);
        m.addTerm(std::make_unique<Attachments>(m, s.attachments, s.water, s.seabed, s.gravity));
      },
-     [](const Scene& s, const Water3*, const TermOptions&, Model3& m) {
+     [](const Scene& s, const Water3*, const TermOptions& o, Model3& m) {
        addAttachmentMasses(m.mutableLine(), s.attachments);
-       m.addTerm(std::make_unique<spatial::Attachments>(m, s.attachments, s.water, s.seabed));
+       m.addTerm(std::make_unique<spatial::Attachments>(m, s.attachments, seaFor(s, o), seabedFor(s, o)));
      }},
     // Planar only (the 3D run refuses a flow: spatial/run_builder.cpp).
     {"internal_flow",
@@ -148,7 +159,7 @@ void addPlanarTerms(const Scene& scene, Model& model) {
 
 void addSpatialTerms(const Scene& scene, spatial::Model3& model, const TermOptions& options) {
   std::optional<Water3> water;
-  if (scene.water.enabled) water.emplace(scene.water, model.gravity());
+  if (scene.water.enabled) water.emplace(seaFor(scene, options), model.gravity());
   for (const ForceTermRow& row : kRows)
     if (row.spatial && row.wanted(scene)) row.spatial(scene, water ? &*water : nullptr, options, model);
 }

@@ -7,7 +7,6 @@
 #include <stdexcept>
 
 #include "riser_sim/planar/modal.h"
-#include "riser_sim/spatial/forces/end_load.h"
 #include "riser_sim/spatial/modal.h"
 #include "riser_sim/spatial/modal_characters.h"
 #include "riser_sim/spatial/run_builder.h"
@@ -75,11 +74,12 @@ ModesReport spatialReport(const Scene& scene, int count) {
     throw std::invalid_argument(
         "bottom.motion: the modes with space: spatial need a fixed or free bottom (the modes "
         "are about a static state)");
-  std::shared_ptr<sp::Model3> model = sp::buildModel3(scene);
   const sp::InitialState3 init = sp::solveInitialState3(scene, sp::buildTopMotion3(scene.top)->at(0.0).p);
+  // The statics' end force on a free end stays as a dead load (as the planar modes; a pinned end's anchor holds it).
+  BuildOptions options3;
+  if (scene.bottom != BottomBoundary::kPinned) options3.end_force = init.end_force;
+  std::shared_ptr<sp::Model3> model = sp::buildModel3(scene, options3);
   sp::addFlexJoints(scene, init.kin, *model);
-  // The statics' end force stays as a dead load (as the planar modes).
-  if (init.end_force.squaredNorm() > 0.0) model->addTerm(std::make_unique<sp::EndLoad>(init.end_force));
   // The equilibrium from the statics' state with their hang-off frame; a line twisted by its bending axes:
   // the equilibrium and the modes about it with its spins.
   AlignedVector<Vec3> axes = init.material_axes;

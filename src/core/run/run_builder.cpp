@@ -4,7 +4,6 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "riser_sim/planar/forces/end_load.h"
 #include "riser_sim/run/initial_velocity.h"
 #include "riser_sim/run/relaxed_statics.h"
 
@@ -66,9 +65,13 @@ Run buildRun(const Scene& scene, RunInputs inputs) {
   if (!inputs.motion) inputs.motion = runTopMotion(scene);  // a fixed top carried by initial.velocity moves
   const Vec2 top = inputs.top ? *inputs.top : inputs.motion->at(0.0).p;
   run.initial = solveInitialState(scene, *run.model, top, false, inputs.statics_progress);
-  // The statics' end force stays on as a constant end load, so the start is an exact equilibrium.
-  if (scene.initial.type == InitialKind::kDisplaced && scene.initial.end_force == EndForceKind::kHold)
-    run.model->addTerm(std::make_unique<EndLoad>(run.initial.end_force));
+  // The statics' end force stays on as a constant end load, so the start is an exact equilibrium: the run's model is
+  // then the statics' with that load.
+  if (scene.initial.type == InitialKind::kDisplaced && scene.initial.end_force == EndForceKind::kHold) {
+    BuildOptions hold;
+    hold.end_force = inSpace(run.initial.end_force);
+    run.model = buildModel(scene, hold);
+  }
   run.sim = std::make_unique<Simulator>(run.model, std::move(inputs.motion), scene.solver);
   // A pinned bottom that the statics did not place is held where the initial state puts it.
   // initial.velocity: the rigid motion's velocities on the start (run.initial.kin stays at rest, for the modes).

@@ -78,12 +78,18 @@ void checkBendingAxis(const Scene& scene, const Kinematics3& kin) {
 
 }  // namespace
 
-void checkStable(const Scene& scene, const InitialState3& init, bool held_end) {
-  const std::shared_ptr<Model3> model = buildModel3(stillWater(scene));
+std::shared_ptr<Model3> restModel3(const Scene& scene, const Kinematics3& kin, const Vec3& end_force) {
+  BuildOptions o;
+  o.terms.steady_sea = true;
   if (scene.bottom == BottomBoundary::kPinned)
-    model->setBottom(BottomBoundary::kPinned, init.kin.back().end());
-  else if (init.end_force.squaredNorm() > 0.0)
-    model->addTerm(std::make_unique<EndLoad>(init.end_force));
+    o.pinned_at = kin.back().end();
+  else
+    o.end_force = end_force;
+  return buildModel3(scene, o);
+}
+
+void checkStable(const Scene& scene, const InitialState3& init, bool held_end) {
+  const std::shared_ptr<Model3> model = restModel3(scene, init.kin, init.end_force);
   ModalOptions3 o;
   o.hang_off = init.hang_off;
   const LinearStability s =
@@ -93,43 +99,33 @@ void checkStable(const Scene& scene, const InitialState3& init, bool held_end) {
                              ") fails the check stability: " + s.describe());
 }
 
-Scene stillWater(const Scene& scene) {
-  Scene s = scene;
-  s.water.waves.height = 0.0;
-  s.water.waves.significant_height = 0.0;
-  return s;
-}
-
 double restAcceleration(const Scene& scene, const Kinematics3& kin, const Vec3& end_force, const Vec3& top,
                         int& where) {
   double moment = 0.0;
   int moment_where = 0;
-  return restAcceleration(scene, kin, end_force, top, AlignedVector<Vec3>(), where, moment, moment_where);
+  return restAcceleration(*restModel3(scene, kin, end_force), scene.solver.stabilization, kin, top,
+                          AlignedVector<Vec3>(), where, moment, moment_where);
 }
 
-double restAcceleration(const Scene& scene, const Kinematics3& kin, const Vec3& end_force, const Vec3& top,
+double restAcceleration(const Model3& rest, double stabilization, const Kinematics3& kin, const Vec3& top,
                         const AlignedVector<Vec3>& material_axes, int& where, double& moment, int& moment_where,
                         const HangOff& hang_off) {
-  std::shared_ptr<Model3> model = buildModel3(stillWater(scene));
-  if (scene.bottom == BottomBoundary::kPinned) model->setBottom(BottomBoundary::kPinned, kin.back().end());
-  if (end_force.squaredNorm() > 0.0 && scene.bottom != BottomBoundary::kPinned)
-    model->addTerm(std::make_unique<EndLoad>(end_force));
-  const NaturalFormulation f(*model, scene.solver.stabilization);
+  const NaturalFormulation f(rest, stabilization);
   auto data = f.makeData();
   const int nq = f.positionSize();  // the velocities' offset (torsion adds θ to q)
   VecX y = VecX::Zero(2 * nq), dy = VecX::Zero(2 * nq);
   f.packState(kin, y);
   f.initTwist(y, *data, Mat3::Identity(), hang_off);  // untwisted unless the material axes say otherwise
-  const int first = model->hasTorsion() ? firstSpin(*model) : model->bodies();
-  if (!material_axes.empty() && model->hasTorsion()) {
-    VecX theta(model->bodies());
+  const int first = rest.hasTorsion() ? firstSpin(rest) : rest.bodies();
+  if (!material_axes.empty() && rest.hasTorsion()) {
+    VecX theta(rest.bodies());
     spinsFromAxes(kin, data->twist.frames, material_axes, theta.data());  // a held rfe 0 keeps the hang-off's
-    for (int i = first; i < model->bodies(); ++i) y[model->dofs() + i] = theta[i];
+    for (int i = first; i < rest.bodies(); ++i) y[rest.dofs() + i] = theta[i];
   }
   f.derivative(0.0, y, PointMotion3{top, Vec3::Zero(), Vec3::Zero()}, dy, *data);
   double amax = 0.0;
   where = 0;
-  for (int i = 0; i < model->bodies(); ++i) {
+  for (int i = 0; i < rest.bodies(); ++i) {
     const double* u = dy.data() + nq + kDofPerBody3 * i;
     const Vec3 aA(u[kA], u[kA + 1], u[kA + 2]), ee(u[kE], u[kE + 1], u[kE + 2]);
     const Vec3 aE = aA + u[kDelta3] * kin[i].e + kin[i].len * ee;
@@ -138,7 +134,7 @@ double restAcceleration(const Scene& scene, const Kinematics3& kin, const Vec3& 
   }
   moment = 0.0;
   moment_where = 0;
-  for (int i = first; i < model->bodies(); ++i)
+  for (int i = first; i < rest.bodies(); ++i)
     if (!(std::abs(data->twist.moment[i]) <= moment)) moment = std::abs(data->twist.moment[i]), moment_where = i;
   return amax;
 }
@@ -281,7 +277,9 @@ void restIn3D(const Scene& scene, const StaticsPlane& plane, double current_acro
   const bool relax_slope = plane.sloped && !(init.max_acceleration <= init.acceleration_bound);
   const bool slope_end = relax_slope && kind == InitialKind::kDisplaced && !plane.free_hang;
   if (held_end || slope_end) {
-    const std::shared_ptr<Model3> model = buildModel3(stillWater(scene));
+    BuildOptions steady;
+    steady.terms.steady_sea = true;
+    const std::shared_ptr<Model3> model = buildModel3(scene, steady);
     const Vec2 xy = top.head<2>() + scene.initial.end_offset;
     try {
       init.kin = equilibriumHeldEnd3(*model, init.kin, xy, init.end_force);
@@ -369,8 +367,9 @@ InitialState3 solveInitialState3(const Scene& scene, const Vec3& top, const Stat
   init.twist_moment_bound = (100.0 * scene.initial.tolerance + 1e-12) * W * scene.length;
   int moment_where = 0;
   const auto atRest = [&] {
-    init.max_acceleration = restAcceleration(scene, init.kin, init.end_force, top, init.material_axes, where,
-                                             init.max_twist_moment, moment_where, init.hang_off);
+    init.max_acceleration =
+        restAcceleration(*restModel3(scene, init.kin, init.end_force), scene.solver.stabilization, init.kin, top,
+                         init.material_axes, where, init.max_twist_moment, moment_where, init.hang_off);
     return init.max_acceleration <= init.acceleration_bound && init.max_twist_moment <= init.twist_moment_bound;
   };
   // Stage 6. Bending axes: a line bent between them twists (and leaves the plane): Newton in 3D with the spins.

@@ -5,7 +5,6 @@
 #include <stdexcept>
 #include <string>
 
-#include "riser_sim/spatial/forces/end_load.h"
 #include "riser_sim/spatial/relaxation.h"
 #include "riser_sim/spatial/statics.h"
 
@@ -25,9 +24,11 @@ double planarBendingStiffness(const Scene& scene, const Vec3& normal, bool& prin
 }
 
 void twistedEquilibrium(const Scene& scene, bool held_end, const Vec2& xy, InitialState3& init) {
-  const std::shared_ptr<Model3> model = buildModel3(stillWater(scene));
-  if (!held_end && scene.bottom != BottomBoundary::kPinned && init.end_force.squaredNorm() > 0.0)
-    model->addTerm(std::make_unique<EndLoad>(init.end_force));
+  // In the steady sea; a free end under the start's end force unless Newton holds it (a pinned one at its anchor).
+  BuildOptions o;
+  o.terms.steady_sea = true;
+  if (!held_end && scene.bottom != BottomBoundary::kPinned) o.end_force = init.end_force;
+  const std::shared_ptr<Model3> model = buildModel3(scene, o);
   // A line bent between soft axes twists far from its untwisted guess, and Newton from there may land on an
   // unstable equilibrium (the stiff axis bent): ask for a stable one (statics.h).
   ModalOptions3 settle;

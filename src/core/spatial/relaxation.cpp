@@ -6,7 +6,6 @@
 #include <stdexcept>
 
 #include "riser_sim/spatial/force_term.h"
-#include "riser_sim/spatial/forces/end_load.h"
 #include "riser_sim/spatial/run_builder.h"
 #include "riser_sim/spatial/simulator.h"
 
@@ -14,54 +13,6 @@ namespace riser_sim {
 namespace spatial {
 
 namespace {
-
-// Q = -α ∂T/∂q' = -α M q': per part, the force -α m_p v_p at its centre and the couple -α J_p e' on e.
-class MassDamping : public ForceTerm3 {
- public:
-  explicit MassDamping(double alpha) : alpha_(alpha) {}
-  std::string name() const override { return "relaxation_damping"; }
-  void addForces(const Model3& model, const Kinematics3& kin, double t, VecX& Q) const override {
-    sweep(model, kin, &Q);
-  }
-  double potentialEnergy(const Model3&, const Kinematics3&, double) const override { return 0.0; }
-  double power(const Model3& model, const Kinematics3& kin, double) const override {
-    return sweep(model, kin, nullptr);
-  }
-  void addStiffness(const Model3& model, const Kinematics3& kin, double, Stiffness3& S) const override {
-    for (int i = 0; i < model.bodies(); ++i) {
-      const Rfe& r = model.rfe(i);
-      for (int p = 0; p < r.num_parts; ++p) {
-        const RigidPart& part = r.part[p];
-        const Eigen::Matrix<double, 3, 7> J = pointJacobian(kin[i], part.s0, part.kappa);
-        S.C_diag[i] += (alpha_ * part.mass) * J.transpose() * J;
-        S.C_diag[i].block<3, 3>(kE, kE) += (alpha_ * part.inertia) * Mat3::Identity();
-      }
-    }
-  }
-
- private:
-  double sweep(const Model3& model, const Kinematics3& kin, VecX* Q) const {
-    double pw = 0.0;
-    for (int i = 0; i < model.bodies(); ++i) {
-      const Rfe& r = model.rfe(i);
-      const BodyKinematics3& b = kin[i];
-      for (int p = 0; p < r.num_parts; ++p) {
-        const RigidPart& part = r.part[p];
-        const Vec3 v = b.velocity(part.s0, part.kappa);
-        const Vec3 F = -alpha_ * part.mass * v;
-        const Vec3 C = -alpha_ * part.inertia * b.e_dot;
-        if (Q) {
-          double* q = Q->data() + kDofPerBody3 * i;
-          addPointForce(b, part.s0, part.kappa, F, q);
-          for (int k = 0; k < 3; ++k) q[kE + k] += C[k];
-        }
-        pw += F.dot(v) + C.dot(b.e_dot);
-      }
-    }
-    return pw;
-  }
-  double alpha_;
-};
 
 std::string fmt(double v) {
   std::ostringstream o;
@@ -97,54 +48,61 @@ void closeOnto(Kinematics3& kin, const Vec3& anchor) {
 
 }  // namespace
 
-Relaxed3 relaxToRest(const Scene& scene, const Kinematics3& guess_in, const Vec3& top, double bound,
-                     const Vec3& end_force, double moment_bound) {
+namespace {
+
+// The relaxation with the spins as `spins` says (BuildOptions).
+Relaxed3 relax(const Scene& scene, BuildOptions::Spins spins, const Kinematics3& guess_in, const Vec3& top,
+               double bound, const Vec3& end_force, double moment_bound) {
   // Torsion with isotropic bending: the shape first, with the spins off (a stiff GJ makes the twist's modes
   // fast and the relaxation's Newton stiff); the spins then start untwisted on that shape, where the twist
   // moments vanish unless something couples them to it (a torsional flex joint, a swivel, a held end force).
   Kinematics3 guess = guess_in;
   double pre_time = 0.0;
   int pre_steps = 0;
-  if (scene.torsion.enabled && !scene.bending_axes.enabled) {
-    Scene plain = scene;
-    plain.torsion = TorsionSpec();
-    plain.top_flex_joint.torsional_stiffness = plain.top_flex_joint.torsional_damping = 0.0;
-    const Relaxed3 shape = relaxToRest(plain, guess, top, bound, end_force, moment_bound);
+  if (scene.torsion.enabled && !scene.bending_axes.enabled && spins != BuildOptions::Spins::kOff) {
+    const Relaxed3 shape = relax(scene, BuildOptions::Spins::kOff, guess, top, bound, end_force, moment_bound);
     guess = shape.kin;
     pre_time = shape.time;
     pre_steps = shape.steps;
   }
-  const Scene still = stillWater(scene);
-  Scene relaxed = still;
-  // The rest does not depend on inertia, so the relaxation chooses the spins': none at the end body, and the line's
-  // at most a solid rod's m D²/8, so no slow, lightly damped torsional mode (an end body's polar inertia on a soft
-  // twist) outlasts the budget (its steps kill the fast ones); the translations keep their masses under the damping
-  // α M, which decays every mode at α/2 whatever the masses.
-  relaxed.torsion.end_polar_inertia = 0.0;
-  const double D = relaxed.line.outer_diameter;
-  if (D > 0.0)
-    relaxed.torsion.polar_inertia = std::min(relaxed.torsion.polar_inertia, relaxed.line.mass_per_length * D * D / 8.0);
-  // The seabed's friction and tangential damper vanish at rest; they would only slow the creep to it.
-  relaxed.seabed.friction_axial = relaxed.seabed.friction_lateral = relaxed.seabed.damping_tangential = 0.0;
-  // The drag as the static load on the line held still (its damping would overdamp the slow modes).
-  TermOptions terms;
-  terms.drag_on_line_at_rest = true;
-  std::shared_ptr<Model3> model = buildModel3(relaxed, terms);
-  if (scene.bottom == BottomBoundary::kPinned) {
+  // The scene's line in its steady sea, the end as the start holds it (a pinned one at bottom.position, a free one
+  // under end_force). The rest does not depend on inertia, so the relaxation chooses the spins' (BuildOptions::
+  // Spins::kRelaxation): no slow, lightly damped torsional mode (an end body's polar inertia on a soft twist)
+  // outlasts the budget (its steps kill the fast ones); the translations keep their masses under the damping α M,
+  // which decays every mode at α/2 whatever the masses. The seabed's friction and tangential damper vanish at rest
+  // (they would only slow the creep to it), and the drag is the static load on the line held still (its damping
+  // would overdamp the slow modes).
+  BuildOptions o;
+  o.terms.steady_sea = true;
+  o.terms.drag_on_line_at_rest = true;
+  o.terms.seabed_friction = false;
+  o.spins = spins == BuildOptions::Spins::kOff ? spins : BuildOptions::Spins::kRelaxation;
+  const bool pinned = scene.bottom == BottomBoundary::kPinned;
+  if (pinned)
     closeOnto(guess, scene.bottom_point);
-    model->setBottom(BottomBoundary::kPinned, scene.bottom_point);
-  } else if (end_force.squaredNorm() > 0.0)
-    model->addTerm(std::make_unique<EndLoad>(end_force));
+  else
+    o.end_force = end_force;
   // The slowest mode of a hanging line is about its pendulum, ω1 ~ sqrt(g_wet / L) (g_wet: gravity less the
   // buoyancy of the whole line; the current and the pins stiffen it). α = 2 ω1 damps it critically and every
   // faster mode at α/2; a mode slower than the estimate would creep (at ω²/α), so ω1 errs low.
-  const Model& line = model->line();
+  const std::shared_ptr<const Model3> undamped = buildModel3(scene, o);
+  const Model& line = undamped->line();
   double volume = 0.0;  // the line's displaced volume [m^3]
   for (int k = 0; k < line.sectionCount(); ++k) volume += line.section(k).props.externalArea() * line.section(k).length;
-  const double lift = still.water.enabled ? still.water.density * volume : 0.0;
+  const double lift = scene.water.enabled ? scene.water.density * volume : 0.0;
   const double g_wet = scene.gravity * std::max(1.0 - lift / line.totalMass(), 0.05);
   const double w1 = std::sqrt(std::max(g_wet, 1e-3) / scene.length);
-  model->addTerm(std::make_unique<MassDamping>(2.0 * w1));
+  o.mass_damping = 2.0 * w1;
+  const std::shared_ptr<Model3> model = buildModel3(scene, o);
+  // The checks at rest see the start's model (restModel3) with the end held where this one holds it.
+  BuildOptions at_rest;
+  at_rest.terms.steady_sea = true;
+  at_rest.spins = o.spins == BuildOptions::Spins::kOff ? o.spins : BuildOptions::Spins::kScene;
+  if (pinned)
+    at_rest.pinned_at = scene.bottom_point;
+  else
+    at_rest.end_force = end_force;
+  const std::shared_ptr<Model3> rest = buildModel3(scene, at_rest);
   IntegratorOptions io;
   io.jacobian = JacobianKind::kStructured;
   io.rho_inf = 0.0;
@@ -163,8 +121,8 @@ Relaxed3 relaxToRest(const Scene& scene, const Kinematics3& guess_in, const Vec3
   out.time = pre_time;
   out.steps = pre_steps;
   const auto atRest = [&] {
-    out.acceleration =
-        restAcceleration(still, out.kin, end_force, top, out.material_axes, where, moment, moment_where, out.hang_off);
+    out.acceleration = restAcceleration(*rest, scene.solver.stabilization, out.kin, top, out.material_axes, where,
+                                        moment, moment_where, out.hang_off);
     return out.acceleration <= 0.01 * bound && moment <= 0.01 * moment_bound;
   };
   // The untwisted spins on the relaxed shape: done when they are at rest within the bounds (a stiff GJ
@@ -172,7 +130,7 @@ Relaxed3 relaxToRest(const Scene& scene, const Kinematics3& guess_in, const Vec3
   // The end's force in the state at rest: a pinned end's is its anchor's reaction.
   const auto finish = [&] {
     out.end_force = end_force;
-    if (scene.bottom == BottomBoundary::kPinned) {
+    if (pinned) {
       sim.reset(out.kin, sim.time(), out.hang_off);
       if (!out.material_axes.empty()) sim.setMaterialAxes(out.material_axes);
       out.end_force = -sim.evaluate().reactions.bottom;
@@ -214,6 +172,13 @@ Relaxed3 relaxToRest(const Scene& scene, const Kinematics3& guess_in, const Vec3
     }
   }
   return finish();
+}
+
+}  // namespace
+
+Relaxed3 relaxToRest(const Scene& scene, const Kinematics3& guess, const Vec3& top, double bound, const Vec3& end_force,
+                     double moment_bound) {
+  return relax(scene, BuildOptions::Spins::kScene, guess, top, bound, end_force, moment_bound);
 }
 
 Relaxed3 relaxFromFirstGuess(const Scene& scene, const Model& planar, const StaticsProblem& problem, const Mat3& R,

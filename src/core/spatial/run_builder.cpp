@@ -16,6 +16,7 @@
 #include "riser_sim/spatial/forces/end_load.h"
 #include "riser_sim/spatial/forces/froude_krylov.h"
 #include "riser_sim/spatial/forces/gravity.h"
+#include "riser_sim/spatial/forces/mass_damping.h"
 #include "riser_sim/spatial/forces/morison_drag.h"
 #include "riser_sim/spatial/forces/seabed.h"
 #include "riser_sim/run/stability_estimate.h"
@@ -121,20 +122,38 @@ std::unique_ptr<TopMotion3> buildTopMotion3(const TopMotionSpec& spec) {
   throw std::invalid_argument("top.motion.type: unknown motion (accepted: " + choiceNames<MotionKind>() + ")");
 }
 
-std::shared_ptr<Model3> buildModel3(const Scene& scene, const TermOptions& options) {
+std::shared_ptr<Model3> buildModel3(const Scene& scene, const BuildOptions& options) {
+  const bool pinned = scene.bottom == BottomBoundary::kPinned;
+  if (options.end_force.squaredNorm() > 0.0 && pinned)
+    throw std::invalid_argument("buildModel3: an end load on a pinned end (its anchor holds it)");
+  if ((options.pinned_at || options.bottom_motion) && !pinned)
+    throw std::invalid_argument("buildModel3: a pinned or driven anchor for a free end (bottom.type: free)");
   auto model = std::make_shared<Model3>(lineSections(scene), scene.stiffeners, scene.options, scene.end_mass,
                                         Vec3(0.0, 0.0, -scene.gravity));
-  model->setBottom(scene.bottom, scene.bottom_point);
+  model->setBottom(scene.bottom, options.pinned_at ? *options.pinned_at : scene.bottom_point);
+  if (options.bottom_motion) model->setBottomMotion(options.bottom_motion);
   // Only the terms the scene needs: the registry's rows (as the planar buildModel).
-  addSpatialTerms(scene, *model, options);
-  if (scene.torsion.enabled) {
+  addSpatialTerms(scene, *model, options.terms);
+  if (scene.torsion.enabled && options.spins != BuildOptions::Spins::kOff) {
     const TorsionSpec& t = scene.torsion;
-    model->setTorsion(TorsionProperties{t.stiffness, t.polar_inertia, t.damping, t.end_polar_inertia, t.free_top,
-                                        scene.top_flex_joint.torsional_stiffness,
-                                        scene.top_flex_joint.torsional_damping});
+    TorsionProperties p{t.stiffness,
+                        t.polar_inertia,
+                        t.damping,
+                        t.end_polar_inertia,
+                        t.free_top,
+                        scene.top_flex_joint.torsional_stiffness,
+                        scene.top_flex_joint.torsional_damping};
+    if (options.spins == BuildOptions::Spins::kRelaxation) {
+      const double D = scene.line.outer_diameter;
+      p.end_polar_inertia = 0.0;
+      if (D > 0.0) p.polar_inertia = std::min(p.polar_inertia, scene.line.mass_per_length * D * D / 8.0);
+    }
+    model->setTorsion(p);
   }
   if (scene.bending_axes.enabled)
     model->setBendingAxes(scene.bending_axes.EI1, scene.bending_axes.EI2, scene.bending_axes.axis);
+  if (options.end_force.squaredNorm() > 0.0) model->addTerm(std::make_unique<EndLoad>(options.end_force));
+  if (options.mass_damping > 0.0) model->addTerm(std::make_unique<MassDamping>(options.mass_damping));
   return model;
 }
 
@@ -145,7 +164,6 @@ Run3::Run3(const Scene& scene, RunInputs3 inputs)
       max_gap_(scene.solver.max_constraint_error * scene.length / scene.elements) {
   if (scene.space != SpaceKind::kSpatial) throw std::invalid_argument("space: Run3 needs space: spatial");
   if (const auto issue = unsupported(scene)) throw std::invalid_argument(issue->key + ": " + issue->message);
-  model_ = buildModel3(scene);
   std::shared_ptr<const TopMotion3> motion = inputs.motion ? std::move(inputs.motion) : runTopMotion3(scene);
   const Vec3 top = inputs.top ? *inputs.top : motion->at(0.0).p;
   // The statics end at the bottom's position at t = 0 (bottom.motion's, which may differ from bottom.position).
@@ -157,22 +175,27 @@ Run3::Run3(const Scene& scene, RunInputs3 inputs)
     at0.bottom_point =
         inputs.bottom_motion ? inputs.bottom_motion->at(0.0).p : buildTopMotion3(scene.bottom_motion)->at(0.0).p;
   initial_ = solveInitialState3(at0, top, inputs.statics_progress);
-  // A pinned end is held where the statics put it: within initial.tolerance x line.length of
-  // bottom.position (their end condition), so the run starts without a Baumgarte kick from that gap. A
-  // moving bottom's path is shifted by that gap for the same reason.
+  // The run's model, built once the start is known. A pinned end is held where the statics put it: within
+  // initial.tolerance x line.length of bottom.position (their end condition), so the run starts without a
+  // Baumgarte kick from that gap; a moving bottom's path is shifted by that gap for the same reason. The statics'
+  // end force stays on as a constant end load (hold), so the start is an exact equilibrium.
+  BuildOptions run_options;
   if (pinned) {
     const Vec3 gap = initial_.kin.back().end() - at0.bottom_point;
     const MotionKind type = scene.bottom_motion.type;
     if (inputs.bottom_motion) {
-      model_->setBottomMotion(inputs.bottom_motion);
+      run_options.bottom_motion = inputs.bottom_motion;
     } else if (type == MotionKind::kSinusoid || type == MotionKind::kVelocityProfile) {
       TopMotionSpec spec = scene.bottom_motion;
       spec.position += gap;
-      model_->setBottomMotion(buildTopMotion3(spec));
+      run_options.bottom_motion = buildTopMotion3(spec);
     } else {
-      model_->setBottom(BottomBoundary::kPinned, initial_.kin.back().end());
+      run_options.pinned_at = initial_.kin.back().end();
     }
   }
+  if (scene.initial.type == InitialKind::kDisplaced && scene.initial.end_force == EndForceKind::kHold)
+    run_options.end_force = initial_.end_force;
+  model_ = buildModel3(scene, run_options);
   // A loaded joint at t = 0 makes the start no equilibrium (the statics pin the ends): said in initial().about.
   const FlexJoints3 joints = addFlexJoints(scene, initial_.kin, *model_, motion, model_->bottomMotion());
   top_joint_ = joints.top;
@@ -196,9 +219,6 @@ Run3::Run3(const Scene& scene, RunInputs3 inputs)
     initial_.about += "; not an equilibrium: a holder turns at t = 0 (top " + fmt(w_top) + ", bottom " + fmt(w_bottom) +
                       " rad/s) and its dampers load the line at rest";
   }
-  // The statics' end force stays on as a constant end load (hold), so the start is an exact equilibrium.
-  if (scene.initial.type == InitialKind::kDisplaced && scene.initial.end_force == EndForceKind::kHold)
-    model_->addTerm(std::make_unique<EndLoad>(initial_.end_force));
   IntegratorOptions io;
   io.tolerance = scene.solver.tolerance;
   io.jacobian_interval = scene.solver.jacobian_interval;

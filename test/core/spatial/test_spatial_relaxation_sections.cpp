@@ -37,10 +37,11 @@ VecX generalisedForces(const spatial::Model3& model, const spatial::Kinematics3&
 TEST(SpatialRelaxationSections, DragHeldStillIsTheRunsDragAtRest) {
   const Scene s = lazyWave(90.0);
   const spatial::InitialState3 init = spatial::solveInitialState3(s, s.top.position);
-  const auto run = spatial::buildModel3(spatial::stillWater(s));
-  TermOptions held;
-  held.drag_on_line_at_rest = true;
-  const auto relaxed = spatial::buildModel3(spatial::stillWater(s), held);
+  BuildOptions steady, held;
+  steady.terms.steady_sea = held.terms.steady_sea = true;
+  held.terms.drag_on_line_at_rest = true;
+  const auto run = spatial::buildModel3(s, steady);
+  const auto relaxed = spatial::buildModel3(s, held);
   ASSERT_EQ(run->terms().size(), relaxed->terms().size());
   const VecX a = generalisedForces(*run, init.kin), b = generalisedForces(*relaxed, init.kin);
   EXPECT_LE((a - b).cwiseAbs().maxCoeff(), 1e-12 * a.cwiseAbs().maxCoeff());
