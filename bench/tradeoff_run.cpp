@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "riser_sim/run/run_builder.h"
+#include "riser_sim/planar/run_builder.h"
 
 namespace tradeoff {
 

@@ -44,7 +44,7 @@ add_library(riser_sim_core
   src/core/run/linear_stability.cpp
   src/core/scene/scene.cpp
   src/core/run/initial_velocity.cpp
-  src/core/run/run_builder.cpp
+  src/core/planar/run_builder.cpp
   src/core/run/line_run.cpp
   src/core/run/range_graph.cpp
   src/core/run/section_extremes.cpp

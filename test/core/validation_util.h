@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "riser_sim/run/run_builder.h"
+#include "riser_sim/planar/run_builder.h"
 #include "riser_sim/scene/scene.h"
 
 namespace riser_sim {

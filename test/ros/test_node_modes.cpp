@@ -10,7 +10,7 @@
 #include <Eigen/Core>
 
 #include "node_test_util.h"
-#include "riser_sim/run/run_builder.h"
+#include "riser_sim/planar/run_builder.h"
 #include "riser_sim/Modes.h"
 #include "riser_sim/planar/modal.h"
 #include "riser_sim/scene/scene_yaml.h"

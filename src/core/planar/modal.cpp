@@ -9,7 +9,7 @@
 #include "riser_sim/planar/chain_kinematics.h"
 #include "riser_sim/planar/force_term.h"
 #include "riser_sim/planar/independent_formulation.h"
-#include "riser_sim/run/run_builder.h"
+#include "riser_sim/planar/run_builder.h"
 #include "riser_sim/scene/scene.h"
 #include "modal_linearisation.h"
 #include "statics_residual.h"

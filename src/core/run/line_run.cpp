@@ -5,7 +5,7 @@
 #include <stdexcept>
 
 #include "riser_sim/planar/forces/attachments.h"
-#include "riser_sim/run/run_builder.h"
+#include "riser_sim/planar/run_builder.h"
 #include "riser_sim/scene/in_plane.h"
 #include "riser_sim/spatial/external_motion.h"
 #include "riser_sim/spatial/forces/attachments.h"

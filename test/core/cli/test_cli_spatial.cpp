@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "cli_test_util.h"
-#include "riser_sim/run/run_builder.h"
+#include "riser_sim/planar/run_builder.h"
 #include "riser_sim/scene/scene_yaml.h"
 #include "riser_sim/spatial/run_builder.h"
 

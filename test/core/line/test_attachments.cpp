@@ -11,7 +11,7 @@
 #include "riser_sim/planar/force_term.h"
 #include "riser_sim/planar/forces/attachments.h"
 #include "riser_sim/run/line_run.h"
-#include "riser_sim/run/run_builder.h"
+#include "riser_sim/planar/run_builder.h"
 #include "riser_sim/scene/scene_yaml.h"
 #include "riser_sim/spatial/force_term.h"
 #include "riser_sim/spatial/forces/attachments.h"

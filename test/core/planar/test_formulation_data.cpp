@@ -11,7 +11,7 @@
 #include "riser_sim/planar/absolute_formulation.h"
 #include "riser_sim/planar/independent_formulation.h"
 #include "riser_sim/planar/recursive_formulation.h"
-#include "riser_sim/run/run_builder.h"
+#include "riser_sim/planar/run_builder.h"
 #include "riser_sim/scene/scene.h"
 #include "riser_sim/scene/scene_yaml.h"
 

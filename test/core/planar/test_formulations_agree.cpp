@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <random>
 
-#include "riser_sim/run/run_builder.h"
+#include "riser_sim/planar/run_builder.h"
 #include "riser_sim/planar/absolute_formulation.h"
 #include "riser_sim/planar/force_term.h"
 #include "riser_sim/planar/independent_formulation.h"

@@ -8,7 +8,7 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include "riser_sim/run/run_builder.h"
+#include "riser_sim/planar/run_builder.h"
 #include "riser_sim/scene/scene_yaml.h"
 #include "validation_util.h"
 

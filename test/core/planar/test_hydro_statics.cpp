@@ -10,7 +10,7 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include "riser_sim/run/run_builder.h"
+#include "riser_sim/planar/run_builder.h"
 #include "riser_sim/planar/force_term.h"
 #include "riser_sim/scene/scene_yaml.h"
 

@@ -16,7 +16,7 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include "riser_sim/run/run_builder.h"
+#include "riser_sim/planar/run_builder.h"
 #include "riser_sim/scene/scene_yaml.h"
 
 namespace riser_sim {

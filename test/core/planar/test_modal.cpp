@@ -4,7 +4,7 @@
 
 #include <cstdio>
 
-#include "riser_sim/run/run_builder.h"
+#include "riser_sim/planar/run_builder.h"
 #include "riser_sim/planar/modal.h"
 #include "riser_sim/scene/scene_yaml.h"
 #include "validation_util.h"

@@ -6,7 +6,7 @@
 
 #include <algorithm>
 
-#include "riser_sim/run/run_builder.h"
+#include "riser_sim/planar/run_builder.h"
 #include "riser_sim/scene/scene.h"
 #include "riser_sim/scene/scene_yaml.h"
 #include "validation_util.h"

@@ -3,7 +3,7 @@
 // ρ_l u² × (turning angle); the energy balance closes with the flow's power counted as work.
 #include <gtest/gtest.h>
 
-#include "riser_sim/run/run_builder.h"
+#include "riser_sim/planar/run_builder.h"
 #include "riser_sim/planar/forces/internal_flow.h"
 #include "riser_sim/scene/scene_yaml.h"
 

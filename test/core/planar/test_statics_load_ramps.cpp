@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "riser_sim/planar/statics.h"
-#include "riser_sim/run/run_builder.h"
+#include "riser_sim/planar/run_builder.h"
 #include "riser_sim/scene/scene.h"
 #include "riser_sim/scene/scene_yaml.h"
 #include "riser_sim/spatial/run_builder.h"

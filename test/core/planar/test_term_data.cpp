@@ -10,7 +10,7 @@
 #include "riser_sim/planar/force_term.h"
 #include "riser_sim/planar/forces/seabed.h"
 #include "riser_sim/planar/modal.h"
-#include "riser_sim/run/run_builder.h"
+#include "riser_sim/planar/run_builder.h"
 #include "riser_sim/scene/scene.h"
 #include "riser_sim/scene/scene_yaml.h"
 

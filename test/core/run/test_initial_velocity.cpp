@@ -9,7 +9,7 @@
 #include <string>
 
 #include "riser_sim/run/line_run.h"
-#include "riser_sim/run/run_builder.h"
+#include "riser_sim/planar/run_builder.h"
 #include "riser_sim/scene/scene_yaml.h"
 #include "riser_sim/spatial/run_builder.h"
 

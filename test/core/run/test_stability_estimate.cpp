@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "riser_sim/integrators/integrator.h"
-#include "riser_sim/run/run_builder.h"
+#include "riser_sim/planar/run_builder.h"
 #include "riser_sim/scene/scene_yaml.h"
 #include "riser_sim/run/stability_estimate.h"
 

@@ -15,7 +15,7 @@
 
 #include "riser_sim/planar/forces/hydro_inertia.h"
 #include "riser_sim/planar/modal.h"
-#include "riser_sim/run/run_builder.h"
+#include "riser_sim/planar/run_builder.h"
 #include "riser_sim/scene/scene_yaml.h"
 #include "riser_sim/planar/simulator.h"
 #include "riser_sim/spatial/forces/added_mass.h"

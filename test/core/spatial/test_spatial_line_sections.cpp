@@ -11,7 +11,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "riser_sim/run/run_builder.h"
+#include "riser_sim/planar/run_builder.h"
 #include "riser_sim/scene/scene_check.h"
 #include "riser_sim/spatial/run_builder.h"
 #include "riser_sim/spatial/statics.h"

@@ -11,7 +11,7 @@
 #include <cmath>
 #include <string>
 
-#include "riser_sim/run/run_builder.h"
+#include "riser_sim/planar/run_builder.h"
 #include "riser_sim/scene/scene_yaml.h"
 #include "riser_sim/spatial/forces/buoyancy.h"
 #include "riser_sim/spatial/forces/froude_krylov.h"

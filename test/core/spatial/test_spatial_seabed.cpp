@@ -12,7 +12,7 @@
 #include <cmath>
 #include <string>
 
-#include "riser_sim/run/run_builder.h"
+#include "riser_sim/planar/run_builder.h"
 #include "riser_sim/scene/scene_yaml.h"
 #include "riser_sim/planar/simulator.h"
 #include "riser_sim/spatial/forces/seabed.h"

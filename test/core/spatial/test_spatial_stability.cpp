@@ -11,7 +11,7 @@
 #include <cstdio>
 #include <string>
 
-#include "riser_sim/run/run_builder.h"
+#include "riser_sim/planar/run_builder.h"
 #include "riser_sim/scene/scene_yaml.h"
 #include "riser_sim/spatial/modal.h"
 #include "riser_sim/spatial/run_builder.h"

@@ -1,4 +1,4 @@
-#include "riser_sim/run/run_builder.h"
+#include "riser_sim/planar/run_builder.h"
 
 #include <algorithm>
 #include <cmath>
