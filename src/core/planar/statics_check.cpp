@@ -120,7 +120,19 @@ EquilibriumCheck checkEquilibrium(const Model& model, const StaticsProblem& prob
   }
   for (const Vec2& j : joints) c.max_joint_force = std::max(c.max_joint_force, j.norm());
   const double W = F.weight();
-  if (!(c.residual <= problem.tolerance)) {
+  // The bending springs see φ_i - φ_{i-1} as it is, not modulo 2π: Newton can turn an rfe a full turn past its
+  // neighbour, where the spring holds a moment k (Δφ ∓ 2π) no geometry has (the rfes would fold through each
+  // other to get there).
+  int folded = 0;
+  double turn = 0.0;
+  for (int i = 1; i < nb; ++i)
+    if (model.bendingStiffness(i) > 0.0 && std::abs(at[i].phi - at[i - 1].phi) > std::abs(turn))
+      turn = at[i].phi - at[i - 1].phi, folded = i;
+  if (std::abs(turn) > M_PI) {
+    o << "fold: rfe " << folded << " is turned " << turn << " rad from rfe " << folded - 1
+      << " (past pi: the bending spring between them is wound a full turn, as if the rfes had folded through each "
+         "other), not a state of the line";
+  } else if (!(c.residual <= problem.tolerance)) {
     o << "residual: the equilibrium residual " << c.residual << " (forces / line weight " << W
       << " N, with every term of the statics and the end force) exceeds initial.tolerance " << problem.tolerance;
   } else if (!(seabed_total <= kSeabedLoadFactor * c.load + problem.tolerance * W)) {

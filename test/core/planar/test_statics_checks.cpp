@@ -7,6 +7,8 @@
 #include <cstdio>
 
 #include "riser_sim/planar/modal.h"
+#include "riser_sim/scene/scene_yaml.h"
+#include "riser_sim/spatial/run_builder.h"
 #include "validation_util.h"
 
 namespace riser_sim {
@@ -165,6 +167,36 @@ TEST(StaticsChecks, CheckNamesWhatIsWrong) {
   expectCheck(off, "residual");
   expectCheck(straightLine(*m, p.top, -M_PI / 2), "seabed");    // 5 m into the seabed, held up by it
   expectCheck(straightLine(*m, p.top, M_PI / 2), "stability");  // balanced upside down
+}
+
+// demo_riser_3d.yaml in a 3 m/s current towards its anchor, n = 12: Newton can turn an rfe a full turn past its
+// neighbour, where the planar bending spring (on φ_i - φ_{i-1} as it is) holds a moment no geometry has; such a
+// "solution" balanced 75 kN m at one joint and was accepted. The check refuses it (fold), the statics go on to a
+// state of the line, and the 3D engine (directors: no angle to wind) agrees on it: the anchor's force to 1e-6 of it
+// (both stop their statics at initial.tolerance 1e-9 of the weight; the 3D one relaxes to 1e-2 of its rest bound).
+TEST(StaticsChecks, AJointWoundAFullTurnIsNoState) {
+  const std::string file = std::string(RISER_SIM_SOURCE_DIR) + "/config/scenes/demo_riser_3d.yaml";
+  const Scene planar = loadSceneFile(file, {"space=planar", "line.elements=12", "environment.waves=null",
+                                            "environment.current.profile=[[0, 3], [100, 0.985634]]",
+                                            "seabed.friction_axial=null", "seabed.friction_lateral=null"});
+  const riser_sim::Run run = buildRun(planar);
+  const Kinematics& kin = run.initial.kin;
+  for (size_t i = 1; i < kin.size(); ++i) EXPECT_LE(std::abs(kin[i].phi - kin[i - 1].phi), M_PI) << "joint " << i;
+  const Scene in3d =
+      loadSceneFile(file, {"line.elements=12", "environment.current.profile=[[0, 3, 0], [100, 0.985634, 0]]"});
+  const spatial::InitialState3 init = spatial::solveInitialState3(in3d, in3d.top.position);
+  const Vec2 f3(init.end_force.x(), init.end_force.z());
+  EXPECT_LT((run.initial.end_force - f3).norm(), 1e-6 * f3.norm())
+      << "planar " << run.initial.end_force.transpose() << ", 3D " << f3.transpose();
+  EXPECT_LT(std::abs(init.end_force.y()), 1e-9 * f3.norm());
+  // The same state with rfes 10.. turned a full turn: the same geometry, refused naming the joint.
+  Kinematics wound = kin;
+  for (size_t i = 10; i < wound.size(); ++i) wound[i].phi += 2.0 * M_PI;
+  const StaticsProblem p = staticsProblem(planar);
+  const EquilibriumCheck c = checkEquilibrium(*run.model, p, wound, run.initial.end_force);
+  EXPECT_FALSE(c.ok);
+  EXPECT_EQ(c.message.rfind("fold: rfe 10 is turned", 0), 0u) << c.message;
+  EXPECT_TRUE(checkEquilibrium(*run.model, p, kin, run.initial.end_force).ok);
 }
 
 }  // namespace
