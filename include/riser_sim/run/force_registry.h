@@ -15,7 +15,8 @@ class Model3;
 class Water3;
 }  // namespace spatial
 
-// How a model's terms differ from the run's, for the statics' models (the one table builds them all; 3D only).
+// How a model's terms differ from the run's, for the statics' and the modes' models (the one table builds them
+// all; the planar engine takes steady_sea only).
 struct TermOptions {
   // The sea without its waves: every term sees the water's steady part (the current, as at t = 0), as the statics
   // and the checks at rest do.
@@ -35,7 +36,7 @@ struct TermOptions {
 struct ForceTermRow {
   const char* name;                    // the term's name() (planar and spatial alike)
   bool (*wanted)(const Scene& scene);  // whether the scene switches the term on
-  void (*planar)(const Scene& scene, const WaterKinematics* water, Model& model);
+  void (*planar)(const Scene& scene, const WaterKinematics* water, const TermOptions& options, Model& model);
   void (*spatial)(const Scene& scene, const spatial::Water3* water, const TermOptions& options, spatial::Model3& model);
 };
 
@@ -43,7 +44,7 @@ struct ForceTermRow {
 const std::vector<ForceTermRow>& forceTermRegistry();
 
 // Adds every wanted row's terms to the model.
-void addPlanarTerms(const Scene& scene, Model& model);
+void addPlanarTerms(const Scene& scene, Model& model, const TermOptions& options = TermOptions());
 void addSpatialTerms(const Scene& scene, spatial::Model3& model, const TermOptions& options = TermOptions());
 
 }  // namespace riser_sim

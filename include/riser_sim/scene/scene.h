@@ -141,8 +141,8 @@ std::vector<LineSection> lineSections(const Scene& scene);
 // Some section has a C_M or C_a,t of its own (the added-mass terms are built for it).
 bool sectionsAddMass(const Scene& scene);
 // The planar engine's model and holder motion: they read inPlane of the scene's vectors (a sinusoid's phase.x()).
-// `options` (build_options.h): the planar engine takes a pinned end's point and an end load (their x and z); the
-// other options are 3D only and throw std::invalid_argument, as an end load on a pinned end does.
+// `options` (build_options.h): the planar engine takes the steady sea, a pinned end's point and an end load (their x
+// and z); the other options are 3D only and throw std::invalid_argument, as an end load on a pinned end does.
 std::shared_ptr<Model> buildModel(const Scene& scene, const BuildOptions& options = BuildOptions());
 std::unique_ptr<TopMotion> buildTopMotion(const TopMotionSpec& spec);
 // Static problem for the scene's initial state (top at the motion's position at t = 0).

@@ -280,7 +280,10 @@ ModalResult computeModes(const Model& model, const Kinematics& equilibrium, cons
 ModalResult sceneModes(const Scene& scene, const ModalOptions& options, StaticsResult* statics) {
   if (scene.space != SpaceKind::kPlanar)
     throw std::invalid_argument("space: the modal analysis is planar; 'spatial' scenes have no modes yet");
-  std::shared_ptr<Model> model = buildModel(scene);
+  // About the static state: in the steady sea, as the statics (the waves at t = 0 would move the state and its drag).
+  BuildOptions steady;
+  steady.terms.steady_sea = true;
+  std::shared_ptr<Model> model = buildModel(scene, steady);
   const InitialState init = solveInitialState(scene, *model, buildTopMotion(scene.top)->at(0.0).p, true);
   if (statics) *statics = init.statics;
   return computeModes(*model, init.kin, init.end_force, options);

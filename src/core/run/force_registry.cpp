@@ -65,18 +65,20 @@ bool addsMass(const Scene& s) {
 
 const std::vector<ForceTermRow> kRows = {
     {"gravity", [](const Scene& s) { return s.gravity != 0.0; },
-     [](const Scene&, const WaterKinematics*, Model& m) { m.addTerm(std::make_unique<Gravity>()); },
+     [](const Scene&, const WaterKinematics*, const TermOptions&, Model& m) { m.addTerm(std::make_unique<Gravity>()); },
      [](const Scene&, const Water3*, const TermOptions&, Model3& m) {
        m.addTerm(std::make_unique<spatial::Gravity>());
      }},
     {"axial_spring", [](const Scene& s) { return s.options.axial_flexibility; },
-     [](const Scene&, const WaterKinematics*, Model& m) { m.addTerm(std::make_unique<AxialSpring>()); },
+     [](const Scene&, const WaterKinematics*, const TermOptions&, Model& m) {
+       m.addTerm(std::make_unique<AxialSpring>());
+     },
      [](const Scene&, const Water3*, const TermOptions&, Model3& m) {
        m.addTerm(std::make_unique<spatial::AxialSpring>());
      }},
     // Each engine asks its own line whether any section bends.
     {"bending_spring", [](const Scene& s) { return s.options.bending; },
-     [](const Scene& s, const WaterKinematics*, Model& m) {
+     [](const Scene& s, const WaterKinematics*, const TermOptions&, Model& m) {
        if (s.line.EI > 0.0 || s.line.bending_damping > 0.0 || sectionsBend(s))
          m.addTerm(std::make_unique<BendingSpring>());
      },
@@ -84,12 +86,14 @@ const std::vector<ForceTermRow> kRows = {
        if (m.line().hasBending()) m.addTerm(std::make_unique<spatial::BendingSpring>());
      }},
     {"buoyancy", [](const Scene& s) { return wantsSea(s) && s.gravity != 0.0; },
-     [](const Scene& s, const WaterKinematics*, Model& m) { m.addTerm(std::make_unique<Buoyancy>(s.water)); },
+     [](const Scene& s, const WaterKinematics*, const TermOptions& o, Model& m) {
+       m.addTerm(std::make_unique<Buoyancy>(seaFor(s, o)));
+     },
      [](const Scene&, const Water3* w, const TermOptions&, Model3& m) {
        m.addTerm(std::make_unique<spatial::Buoyancy>(*w));
      }},
     {"morison_drag", wantsDrag,
-     [](const Scene& s, const WaterKinematics* w, Model& m) {
+     [](const Scene& s, const WaterKinematics* w, const TermOptions&, Model& m) {
        m.addTerm(std::make_unique<MorisonDrag>(*w, s.hydro.drag_tangential, s.hydro.drag_normal));
      },
      [](const Scene& s, const Water3* w, const TermOptions& o, Model3& m) {
@@ -99,7 +103,7 @@ const std::vector<ForceTermRow> kRows = {
     // Planar: one term (added mass and Froude-Krylov); 3D: the Froude-Krylov force where the water moves, then
     // the added mass.
     {"hydro_inertia", wantsHydro,
-     [](const Scene& s, const WaterKinematics* w, Model& m) {
+     [](const Scene& s, const WaterKinematics* w, const TermOptions&, Model& m) {
        const WaterKinematics& water = *w;
        const HydroSpec& h = s.hydro;
        if (addsMass(s) || water.moving())
@@ -116,15 +120,17 @@ const std::vector<ForceTermRow> kRows = {
                                                         sectionsAddMass(s)));
      }},
     {"seabed", [](const Scene& s) { return s.seabed.enabled; },
-     [](const Scene& s, const WaterKinematics*, Model& m) { m.addTerm(std::make_unique<Seabed>(s.seabed)); },
+     [](const Scene& s, const WaterKinematics*, const TermOptions&, Model& m) {
+       m.addTerm(std::make_unique<Seabed>(s.seabed));
+     },
      [](const Scene& s, const Water3*, const TermOptions& o, Model3& m) {
        m.addTerm(std::make_unique<spatial::Seabed>(seabedFor(s, o), m.gravity()));
      }},
     // Their masses are parts of their rfes; the rest is their term.
     {"attachments", [](const Scene& s) { return !s.attachments.empty(); },
-     [](const Scene& s, const WaterKinematics*, Model& m) {
+     [](const Scene& s, const WaterKinematics*, const TermOptions& o, Model& m) {
        addAttachmentMasses(m, s.attachments);
-       m.addTerm(std::make_unique<Attachments>(m, s.attachments, s.water, s.seabed, s.gravity));
+       m.addTerm(std::make_unique<Attachments>(m, s.attachments, seaFor(s, o), seabedFor(s, o), s.gravity));
      },
      [](const Scene& s, const Water3*, const TermOptions& o, Model3& m) {
        addAttachmentMasses(m.mutableLine(), s.attachments);
@@ -136,7 +142,7 @@ const std::vector<ForceTermRow> kRows = {
        const InternalFlowSpec& f = s.internal_fluid;
        return f.density > 0.0 && (f.velocity != 0.0 || f.acceleration != 0.0);
      },
-     [](const Scene& s, const WaterKinematics*, Model& m) {
+     [](const Scene& s, const WaterKinematics*, const TermOptions&, Model& m) {
        const InternalFlowSpec& f = s.internal_fluid;
        if (f.model == FlowModelKind::kPaper)
          m.addTerm(std::make_unique<InternalFlow>(f, s.line.internalArea()));
@@ -150,11 +156,11 @@ const std::vector<ForceTermRow> kRows = {
 
 const std::vector<ForceTermRow>& forceTermRegistry() { return kRows; }
 
-void addPlanarTerms(const Scene& scene, Model& model) {
+void addPlanarTerms(const Scene& scene, Model& model, const TermOptions& options) {
   std::optional<WaterKinematics> water;
-  if (scene.water.enabled) water.emplace(scene.water, scene.gravity);
+  if (scene.water.enabled) water.emplace(seaFor(scene, options), scene.gravity);
   for (const ForceTermRow& row : kRows)
-    if (row.planar && row.wanted(scene)) row.planar(scene, water ? &*water : nullptr, model);
+    if (row.planar && row.wanted(scene)) row.planar(scene, water ? &*water : nullptr, options, model);
 }
 
 void addSpatialTerms(const Scene& scene, spatial::Model3& model, const TermOptions& options) {

@@ -75,8 +75,10 @@ ModesReport spatialReport(const Scene& scene, int count) {
         "bottom.motion: the modes with space: spatial need a fixed or free bottom (the modes "
         "are about a static state)");
   const sp::InitialState3 init = sp::solveInitialState3(scene, sp::buildTopMotion3(scene.top)->at(0.0).p);
-  // The statics' end force on a free end stays as a dead load (as the planar modes; a pinned end's anchor holds it).
+  // In the steady sea, as the statics (the modes are about the static state); the statics' end force on a free end
+  // stays as a dead load (as the planar modes; a pinned end's anchor holds it).
   BuildOptions options3;
+  options3.terms.steady_sea = true;
   if (scene.bottom != BottomBoundary::kPinned) options3.end_force = init.end_force;
   std::shared_ptr<sp::Model3> model = sp::buildModel3(scene, options3);
   sp::addFlexJoints(scene, init.kin, *model);

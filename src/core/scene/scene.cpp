@@ -25,11 +25,10 @@ bool sectionsAddMass(const Scene& scene) {
 }
 
 std::shared_ptr<Model> buildModel(const Scene& scene, const BuildOptions& options) {
-  const TermOptions plain;
-  if (options.terms.steady_sea != plain.steady_sea || options.terms.drag_on_line_at_rest ||
-      options.terms.seabed_friction != plain.seabed_friction || options.spins != BuildOptions::Spins::kScene ||
-      options.bottom_motion || options.mass_damping != 0.0)
-    throw std::invalid_argument("buildModel: the planar engine takes BuildOptions' pinned_at and end_force only");
+  if (options.terms.drag_on_line_at_rest || !options.terms.seabed_friction ||
+      options.spins != BuildOptions::Spins::kScene || options.bottom_motion || options.mass_damping != 0.0)
+    throw std::invalid_argument(
+        "buildModel: the planar engine takes BuildOptions' terms.steady_sea, pinned_at and end_force only");
   const bool pinned = scene.bottom == BottomBoundary::kPinned;
   if (options.end_force.squaredNorm() > 0.0 && pinned)
     throw std::invalid_argument("buildModel: an end load on a pinned end (its anchor holds it)");
@@ -39,7 +38,7 @@ std::shared_ptr<Model> buildModel(const Scene& scene, const BuildOptions& option
       std::make_shared<Model>(lineSections(scene), scene.stiffeners, scene.options, scene.end_mass, scene.gravity);
   model->setBottom(scene.bottom, inPlane(options.pinned_at ? *options.pinned_at : scene.bottom_point));
   // Only the terms the scene needs are built (a term that is off costs nothing): the registry's rows.
-  addPlanarTerms(scene, *model);
+  addPlanarTerms(scene, *model, options.terms);
   if (options.end_force.squaredNorm() > 0.0) model->addTerm(std::make_unique<EndLoad>(inPlane(options.end_force)));
   return model;
 }

@@ -100,6 +100,27 @@ TEST(BuildOptions, SteadySeaIsTheSceneWithoutItsWaves) {
   }
 }
 
+// The planar engine's steady sea: the same equality in its coordinates (the scene in its x-z plane).
+TEST(BuildOptions, PlanarSteadySeaIsTheSceneWithoutItsWaves) {
+  Scene waves = scene({"seabed.friction_axial=null", "seabed.friction_lateral=null", "seabed.damping_tangential=null"}),
+        calm = waves;
+  waves.space = calm.space = SpaceKind::kPlanar;
+  calm.water.waves = WaveSpec();
+  BuildOptions steady;
+  steady.terms.steady_sea = true;
+  const auto with_option = buildModel(waves, steady), without_waves = buildModel(calm), with_waves = buildModel(waves);
+  const Kinematics kin = straightLine(*with_waves, Vec2(0.0, -10.0), -0.3);
+  const auto planarForces = [&](const Model& m, double t) {
+    VecX Q = VecX::Zero(m.dofs());
+    for (const auto& term : m.terms()) term->addForces(m, nullptr, kin, t, Q);
+    return Q;
+  };
+  for (double t : {0.0, 2.5}) {
+    expectSame(planarForces(*with_option, t), planarForces(*without_waves, t));
+    EXPECT_GT((planarForces(*with_waves, t) - planarForces(*without_waves, t)).cwiseAbs().maxCoeff(), 1.0) << t;
+  }
+}
+
 TEST(BuildOptions, SeabedWithoutFrictionIsTheSceneWithItsFrictionKeysAtZero) {
   const Scene rough = scene(),
               smooth = scene({"seabed.friction_axial=0", "seabed.friction_lateral=0", "seabed.damping_tangential=0"});
@@ -157,16 +178,17 @@ TEST(BuildOptions, AnEndThatCannotCarryAnOptionRefusesIt) {
   EXPECT_THROW(buildModel(p, load), std::invalid_argument);
   EXPECT_EQ(buildModel(p, anchor)->bottomPoint(), Vec2(41.0, -50.0));
   // The 3D-only options, by name.
-  BuildOptions damped, still, spins;
+  BuildOptions damped, held, spins;
   damped.mass_damping = 0.1;
-  still.terms.steady_sea = true;
+  held.terms.drag_on_line_at_rest = true;
   spins.spins = BuildOptions::Spins::kOff;
-  for (const BuildOptions* o : {&damped, &still, &spins}) {
+  for (const BuildOptions* o : {&damped, &held, &spins}) {
     try {
       buildModel(p, *o);
       ADD_FAILURE() << "the planar builder took a 3D-only option";
     } catch (const std::invalid_argument& e) {
-      EXPECT_NE(std::string(e.what()).find("pinned_at and end_force only"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("terms.steady_sea, pinned_at and end_force only"), std::string::npos)
+          << e.what();
     }
   }
 }

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "riser_sim/planar/modal.h"
 #include "riser_sim/run/modes_report.h"
@@ -98,6 +99,32 @@ TEST(ModesReport, SpatialStraightStartNamesTheEquilibrium) {
   for (const ModeEntry& m : r.modes)
     for (const ModeEntry& q : p.modes) matched += std::abs(m.period / q.period - 1.0) < 1e-6;
   EXPECT_GE(matched, 3);
+}
+
+// The modes are about the static state, in the steady sea as the statics: waves that are not ramped in (full
+// height at t = 0) leave them as they are without the waves, in both engines (the same model: 1e-12 of the period).
+// spatial_sea_riser.yaml (3D, JONSWAP Hs 3 m) and the same scene planar.
+TEST(ModesReport, WavesAtTheStartDoNotMoveTheModes) {
+  for (const char* space : {"space=spatial", "space=planar"}) {
+    SCOPED_TRACE(space);
+    const bool planar = std::string(space) == "space=planar";
+    // Planar: the same sea along +x (a planar scene's waves have no heading).
+    std::vector<std::string> keys = {space, planar ? "environment.waves={type: jonswap, significant_height: 3.0, "
+                                                     "peak_period: 9.0, gamma: 3.3, components: 40, seed: 7, "
+                                                     "depth: 100.0}"
+                                                   : "environment.waves.ramp=0"};
+    if (planar)
+      for (const char* k : {"seabed.friction_axial=null", "seabed.friction_lateral=null", "top.motion=null",
+                            "environment.current.profile=[[0.0, 0.6], [100.0, 0.2]]"})
+        keys.push_back(k);
+    const Scene waves = loadSceneFile(kScenes + "spatial_sea_riser.yaml", keys);
+    keys[1] = "environment.waves=null";
+    const Scene calm = loadSceneFile(kScenes + "spatial_sea_riser.yaml", keys);
+    const ModesReport a = sceneModesReport(waves, 3), b = sceneModesReport(calm, 3);
+    ASSERT_EQ(a.modes.size(), 3u);
+    ASSERT_EQ(b.modes.size(), 3u);
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(a.modes[k].period, b.modes[k].period, 1e-12 * b.modes[k].period) << k;
+  }
 }
 
 TEST(ModesReport, CountsAndBadInput) {
