@@ -47,7 +47,7 @@ bool wantsDrag(const Scene& s) {
   const HydroSpec& h = s.hydro;
   return wantsHydro(s) && (h.drag_normal > 0.0 || h.drag_tangential > 0.0 || sectionsDrag(s));
 }
-// The sea and the seabed the 3D terms see: the scene's, or their variants (TermOptions).
+// The sea and the seabed the terms see: the scene's, or their variants (TermOptions).
 WaterSpec seaFor(const Scene& s, const TermOptions& o) {
   WaterSpec w = s.water;
   if (o.steady_sea) w.waves.height = w.waves.significant_height = 0.0;
